@@ -1,0 +1,94 @@
+// riemann info: what a metric is at a point, as text: g, g^-1, its
+// eigenvalues, the volume form and the Christoffel symbols.
+#include "CliUtilities.h"
+#include "Commands.h"
+
+#include "Metric.h"
+#include "vtkRiemannMetric.h"
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Eigenvalues>
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+struct InfoArguments
+{
+  std::string Metric;
+  std::string Point = "0,0,0";
+  int Precision = 10;
+};
+
+void PrintMatrix(std::ostream& out, const std::string& title, const Mat3& m)
+{
+  out << title << "\n";
+  for (int r = 0; r < 3; ++r)
+  {
+    out << "  [";
+    for (int c = 0; c < 3; ++c)
+    {
+      out << std::setw(out.precision() + 8) << m(r, c) << (c < 2 ? "," : "");
+    }
+    out << " ]\n";
+  }
+}
+
+void RunInfo(const InfoArguments& args)
+{
+  vtkSmartPointer<vtkRiemannMetric> handle = LoadMetric(args.Metric);
+  const std::shared_ptr<const Metric> metric = handle->GetMetric();
+  double p[3];
+  ParseVector3(args.Point, "--point", p);
+  const Vec3 point(p[0], p[1], p[2]);
+
+  std::ostringstream out;
+  out << std::setprecision(args.Precision);
+  out << "metric:  " << metric->Describe() << "\n";
+  out << "family:  " << metric->FamilyName() << "\n";
+  out << "point:   (" << p[0] << ", " << p[1] << ", " << p[2] << ")\n";
+  Mat3 g, inverse;
+  Mat3Stack gamma;
+  if (!metric->Tensor(point, g) || !metric->InverseTensor(point, inverse) ||
+    !metric->Christoffel(point, gamma))
+  {
+    std::cout << out.str();
+    throw Failure("the metric is degenerate at this point (not positive definite or not finite)");
+  }
+  PrintMatrix(out, "g_ij:", g);
+  PrintMatrix(out, "g^ij:", inverse);
+  const Eigen::SelfAdjointEigenSolver<Mat3> eigen(g, Eigen::EigenvaluesOnly);
+  out << "eigenvalues of g: " << eigen.eigenvalues().transpose() << "\n";
+  out << "det g:   " << g.determinant() << "\n";
+  out << "volume form sqrt(det g): " << metric->VolumeForm(point) << "\n";
+  const char* axes = "xyz";
+  for (int m = 0; m < 3; ++m)
+  {
+    PrintMatrix(out, std::string("Gamma^") + axes[m] + "_ij:", gamma[m]);
+  }
+  std::cout << out.str();
+}
+} // namespace
+
+void RegisterInfoCommand(CLI::App& app)
+{
+  auto args = std::make_shared<InfoArguments>();
+  CLI::App* command = app.add_subcommand(
+    "info", "Print g, g^-1, the volume form and the Christoffel symbols at a point.");
+  command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  command->add_option("--point,-p", args->Point, "Point X,Y,Z (default 0,0,0)");
+  command->add_option("--precision", args->Precision, "Significant digits (default 10)")
+    ->check(CLI::Range(1, 17));
+  command->callback([args]() { RunInfo(*args); });
+}
+} // namespace cli
+} // namespace riemann

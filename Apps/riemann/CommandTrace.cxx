@@ -1,0 +1,290 @@
+// riemann trace: geodesics of a metric from one seed or a CSV of seeds, written
+// as .vtp (VTK XML polylines) or .csv (seed_id,step,t,x,y,z,vx,vy,vz).
+#include "CliUtilities.h"
+#include "Commands.h"
+#include "GeodesicTrace.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannGeodesicTracer.h"
+#include "vtkRiemannMetric.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+struct TraceArguments
+{
+  std::string Metric;
+  std::string Seed = "0,0,0";
+  std::string Direction = "1,0,0";
+  std::string SeedsFile;
+  double Length = 10.0;
+  std::string Integrator = "rk4";
+  std::string Propagation = "forward";
+  double Step = 0.01;
+  double Tolerance = 1e-8;
+  long long MaximumSteps = 100000;
+  std::string Output;
+};
+
+/// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
+vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    throw Failure(path + ": cannot open the seeds file");
+  }
+  std::string line;
+  if (!std::getline(file, line))
+  {
+    throw Failure(path + ": empty seeds file (expected a header x,y,z,dx,dy,dz)");
+  }
+  std::map<std::string, int> columns;
+  {
+    std::stringstream header(line);
+    std::string name;
+    for (int c = 0; std::getline(header, name, ','); ++c)
+    {
+      name.erase(0, name.find_first_not_of(" \t\r"));
+      name.erase(name.find_last_not_of(" \t\r") + 1);
+      columns[name] = c;
+    }
+  }
+  const char* required[6] = { "x", "y", "z", "dx", "dy", "dz" };
+  int index[6];
+  for (int k = 0; k < 6; ++k)
+  {
+    auto it = columns.find(required[k]);
+    if (it == columns.end())
+    {
+      throw Failure(path + ": line 1: the header lacks column \"" + required[k] +
+        "\" (expected x,y,z,dx,dy,dz)");
+    }
+    index[k] = it->second;
+  }
+  auto seeds = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> directions;
+  directions->SetName("Direction");
+  directions->SetNumberOfComponents(3);
+  constexpr long long maximumSeeds = 10000000;
+  for (long long lineNumber = 2; std::getline(file, line); ++lineNumber)
+  {
+    if (line.find_first_not_of(" \t\r") == std::string::npos)
+    {
+      continue;
+    }
+    std::vector<double> values;
+    std::stringstream row(line);
+    std::string cell;
+    while (std::getline(row, cell, ','))
+    {
+      char* end = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      while (end && (*end == ' ' || *end == '\t' || *end == '\r'))
+      {
+        ++end;
+      }
+      if (end == cell.c_str() || *end != '\0' || !std::isfinite(value))
+      {
+        throw Failure(path + ": line " + std::to_string(lineNumber) + ": \"" + cell +
+          "\" is not a finite number");
+      }
+      values.push_back(value);
+    }
+    double d[6];
+    for (int k = 0; k < 6; ++k)
+    {
+      if (index[k] >= static_cast<int>(values.size()))
+      {
+        throw Failure(path + ": line " + std::to_string(lineNumber) + ": missing column \"" +
+          required[k] + "\"");
+      }
+      d[k] = values[index[k]];
+    }
+    if (points->GetNumberOfPoints() >= maximumSeeds)
+    {
+      throw Failure(path + ": more than " + std::to_string(maximumSeeds) + " seeds");
+    }
+    points->InsertNextPoint(d);
+    directions->InsertNextTuple(d + 3);
+  }
+  if (points->GetNumberOfPoints() == 0)
+  {
+    throw Failure(path + ": no seeds after the header");
+  }
+  seeds->SetPoints(points);
+  seeds->GetPointData()->AddArray(directions);
+  return seeds;
+}
+
+bool WriteCsv(vtkPolyData* lines, const std::string& path)
+{
+  std::ofstream out(path);
+  if (!out)
+  {
+    return false;
+  }
+  out << "seed_id,step,t,x,y,z,vx,vy,vz\n";
+  out << std::setprecision(17);
+  vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
+  vtkDataArray* velocity = lines->GetPointData()->GetArray("Velocity");
+  vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  auto iterator = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  vtkIdType cell = 0;
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell(), ++cell)
+  {
+    iterator->GetCurrentCell(count, ids);
+    const long long seed = static_cast<long long>(seedIds->GetTuple1(cell));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double p[3], v[3];
+      lines->GetPoint(ids[k], p);
+      velocity->GetTuple(ids[k], v);
+      out << seed << ',' << k << ',' << arcLength->GetTuple1(ids[k]) << ',' << p[0] << ',' << p[1]
+          << ',' << p[2] << ',' << v[0] << ',' << v[1] << ',' << v[2] << '\n';
+    }
+  }
+  out.flush();
+  return static_cast<bool>(out);
+}
+
+void RunTrace(const TraceArguments& args)
+{
+  const std::string extension = Extension(args.Output);
+  if (extension != "vtp" && extension != "csv")
+  {
+    throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
+  }
+  static const std::map<std::string, int> integrators = { { "euler",
+                                                            vtkRiemannGeodesicTracer::EULER },
+    { "rk4", vtkRiemannGeodesicTracer::RUNGE_KUTTA4 },
+    { "dp45", vtkRiemannGeodesicTracer::DORMAND_PRINCE45 } };
+  static const std::map<std::string, int> propagations = { { "forward",
+                                                             vtkRiemannGeodesicTracer::FORWARD },
+    { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH } };
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<vtkRiemannGeodesicTracer> tracer;
+  vtkNew<ErrorCollector> errors;
+  errors->Observe(tracer);
+  tracer->SetMetric(metric);
+  tracer->SetIntegratorType(integrators.at(args.Integrator));
+  tracer->SetIntegrationDirection(propagations.at(args.Propagation));
+  tracer->SetInitialIntegrationStep(args.Step);
+  tracer->SetMaximumError(args.Tolerance);
+  tracer->SetMaximumPropagation(args.Length);
+  tracer->SetMaximumNumberOfSteps(args.MaximumSteps);
+  if (!args.SeedsFile.empty())
+  {
+    tracer->SetInputData(ReadSeeds(args.SeedsFile));
+  }
+  else
+  {
+    double seed[3], direction[3];
+    ParseVector3(args.Seed, "--seed", seed);
+    ParseVector3(args.Direction, "--direction", direction);
+    if (direction[0] == 0 && direction[1] == 0 && direction[2] == 0)
+    {
+      throw Failure("--direction: the direction must not be zero", 2);
+    }
+    tracer->SetStartPosition(seed);
+    tracer->SetStartDirection(direction);
+  }
+  tracer->Update();
+  errors->ThrowIfAny("tracing failed:");
+  vtkPolyData* lines = tracer->GetOutput();
+  if (lines->GetNumberOfLines() == 0)
+  {
+    throw Failure("no geodesic could be traced from the given seeds");
+  }
+
+  WriteAtomically(args.Output, [&](const std::string& temporary) {
+    if (extension == "csv")
+    {
+      return WriteCsv(lines, temporary);
+    }
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(lines);
+    writer->SetDataModeToAppended();
+    return writer->Write() == 1 && writer->GetErrorCode() == 0;
+  });
+
+  // A one-line summary on stderr: how many lines, and why they stopped.
+  std::map<int, int> reasons;
+  vtkDataArray* reasonArray = lines->GetCellData()->GetArray("ReasonForTermination");
+  for (vtkIdType i = 0; i < reasonArray->GetNumberOfTuples(); ++i)
+  {
+    reasons[static_cast<int>(reasonArray->GetTuple1(i))]++;
+  }
+  std::cerr << "riemann trace: " << lines->GetNumberOfLines() << " geodesic(s), "
+            << lines->GetNumberOfPoints() << " points -> " << args.Output << " (";
+  bool first = true;
+  for (const auto& [reason, count] : reasons)
+  {
+    std::cerr << (first ? "" : ", ") << count << " " << TerminationReasonName(reason);
+    first = false;
+  }
+  std::cerr << ")\n";
+}
+} // namespace
+
+void RegisterTraceCommand(CLI::App& app)
+{
+  auto args = std::make_shared<TraceArguments>();
+  CLI::App* command = app.add_subcommand("trace", "Trace geodesics of a metric from seeds.");
+  command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  command->add_option("--seed", args->Seed, "Start point X,Y,Z (default 0,0,0)");
+  command->add_option("--direction", args->Direction,
+    "Initial direction DX,DY,DZ, normalised to unit speed in g (default 1,0,0)");
+  command->add_option("--seeds", args->SeedsFile,
+           "CSV of seeds with header x,y,z,dx,dy,dz (replaces --seed/--direction)")
+    ->check(CLI::ExistingFile)
+    ->excludes(command->get_option("--seed"))
+    ->excludes(command->get_option("--direction"));
+  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 10)")
+    ->check(CLI::Range(0.0, 1e9));
+  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
+    ->check(CLI::IsMember({ "euler", "rk4", "dp45" }));
+  command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
+    ->check(CLI::IsMember({ "forward", "backward", "both" }));
+  command->add_option("--step", args->Step, "Step in arc length (initial step for dp45; default 0.01)")
+    ->check(CLI::Range(1e-9, 1e6));
+  command->add_option("--tolerance", args->Tolerance, "Per-step error tolerance of dp45 (default 1e-8)")
+    ->check(CLI::Range(1e-15, 1.0));
+  command->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
+    ->check(CLI::Range(1LL, 1000000000LL));
+  command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
+  command->callback([args]() { RunTrace(*args); });
+}
+} // namespace cli
+} // namespace riemann

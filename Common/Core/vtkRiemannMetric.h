@@ -1,0 +1,102 @@
+/**
+ * @class   vtkRiemannMetric
+ * @brief   A Riemannian metric on R^3, defined by its JSON text.
+ *
+ * vtkRiemannMetric is the VTK handle on a metric of the RiemannVTK core: the
+ * graph of a function, a diffeomorphism (with compositions), a conformal
+ * refractive index, a constant tensor, or Euclidean space (the JSON format is
+ * documented in MetricDefinition.h and ARCHITECTURE.md). Filters such as
+ * vtkRiemannGeodesicTracer take it with SetMetric().
+ *
+ * SetDefinition() parses and validates the text; on bad input it returns
+ * false, GetLastError() says where and why, and the previous definition is
+ * kept (nothing is lost). The point queries (EvaluateMetricTensor, ...) are
+ * thread-safe and cheap.
+ *
+ * @code{.py}
+ * m = riemann.vtkRiemannMetric()
+ * if not m.SetDefinition('{"type": "diffeo", "preset": "twist"}'):
+ *     raise ValueError(m.GetLastError())
+ * @endcode
+ */
+#ifndef vtkRiemannMetric_h
+#define vtkRiemannMetric_h
+
+#include "RiemannCommonCoreModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
+
+#include <memory> // For std::shared_ptr
+#include <string> // For std::string
+
+namespace riemann
+{
+class Metric;
+}
+
+class RIEMANNCOMMONCORE_EXPORT vtkRiemannMetric : public vtkObject
+{
+public:
+  static vtkRiemannMetric* New();
+  vtkTypeMacro(vtkRiemannMetric, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Set the metric from its JSON definition (or a file holding it). Returns
+   * true on success. On failure the current metric is unchanged and
+   * GetLastError() explains the problem.
+   */
+  bool SetDefinition(const char* json);
+  bool SetDefinitionFile(const char* path);
+  ///@}
+
+  /// The JSON text of the current definition ("" when none has been set).
+  const char* GetDefinition() const { return this->Definition.c_str(); }
+
+  /// Why the last SetDefinition/SetDefinitionFile failed ("" after a success).
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+  /// True once a valid definition is set.
+  bool HasDefinition() const { return this->Metric != nullptr; }
+
+  /// "graph", "diffeo", "conformal", "tensor", "euclidean", or "" when none.
+  std::string GetFamilyName() const;
+
+  /// One line describing the metric and its providers.
+  std::string GetDescription() const;
+
+  ///@{
+  /**
+   * Point queries. Each returns false where no metric is set or the metric
+   * is degenerate at p. g and its inverse are row-major 3x3; gamma is
+   * Gamma^m_ij at gamma[9 m + 3 i + j].
+   */
+  bool EvaluateMetricTensor(const double p[3], double g[9]);
+  bool EvaluateInverseMetricTensor(const double p[3], double inverse[9]);
+  bool EvaluateChristoffelSymbols(const double p[3], double gamma[27]);
+  ///@}
+
+  /// sqrt(det g) at p; NaN where undefined.
+  double EvaluateVolumeForm(const double p[3]);
+
+  /**
+   * The core metric, shared and immutable: filters hold it for the duration
+   * of a computation so a concurrent SetDefinition cannot pull it away.
+   */
+  VTK_WRAPEXCLUDE std::shared_ptr<const riemann::Metric> GetMetric() const { return this->Metric; }
+
+protected:
+  vtkRiemannMetric();
+  ~vtkRiemannMetric() override;
+
+private:
+  vtkRiemannMetric(const vtkRiemannMetric&) = delete;
+  void operator=(const vtkRiemannMetric&) = delete;
+
+  std::shared_ptr<const riemann::Metric> Metric;
+  std::string Definition;
+  std::string LastError;
+};
+
+#endif

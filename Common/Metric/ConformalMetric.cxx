@@ -1,0 +1,110 @@
+#include "ConformalMetric.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace riemann
+{
+ConformalMetric::ConformalMetric(std::shared_ptr<const ScalarField> index)
+  : Index(std::move(index))
+{
+}
+
+std::string ConformalMetric::Describe() const
+{
+  return "conformal with index n = " + this->Index->Describe();
+}
+
+bool ConformalMetric::Tensor(const Vec3& p, Mat3& g) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, ValueOnly, n);
+  g = (n.Value * n.Value) * Mat3::Identity();
+  return n.Value > 0 && std::isfinite(n.Value);
+}
+
+bool ConformalMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, FirstDerivatives, n);
+  g = (n.Value * n.Value) * Mat3::Identity();
+  for (int k = 0; k < 3; ++k)
+  {
+    dg[k] = (2.0 * n.Value * n.Gradient[k]) * Mat3::Identity();
+  }
+  return n.Value > 0 && std::isfinite(n.Value) && n.Gradient.allFinite();
+}
+
+bool ConformalMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, FirstDerivatives, n);
+  if (!(n.Value > 0))
+  {
+    return false;
+  }
+  const Vec3 l = n.Gradient / n.Value;
+  for (int m = 0; m < 3; ++m)
+  {
+    gamma[m] = -l[m] * Mat3::Identity();
+    gamma[m].row(m) += l.transpose();
+    gamma[m].col(m) += l;
+  }
+  return l.allFinite();
+}
+
+bool ConformalMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, FirstDerivatives, n);
+  if (!(n.Value > 0))
+  {
+    return false;
+  }
+  const Vec3 l = n.Gradient / n.Value;
+  a = v.squaredNorm() * l - 2.0 * l.dot(v) * v;
+  return a.allFinite();
+}
+
+bool ConformalMetric::InverseTensor(const Vec3& p, Mat3& inverse) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, ValueOnly, n);
+  inverse = Mat3::Identity() / (n.Value * n.Value);
+  return n.Value > 0 && std::isfinite(n.Value);
+}
+
+double ConformalMetric::VolumeForm(const Vec3& p) const
+{
+  ScalarJet n;
+  this->Index->Evaluate(p, ValueOnly, n);
+  return n.Value > 0 ? n.Value * n.Value * n.Value : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::string ConformalMetric::Validate() const
+{
+  std::vector<Vec3> points;
+  this->AppendSamplePoints(points);
+  points.emplace_back(Vec3::Zero());
+  points.emplace_back(Vec3::Constant(1e6)); // the far field
+  ScalarJet n;
+  for (const Vec3& p : points)
+  {
+    this->Index->Evaluate(p, ValueOnly, n);
+    if (!(n.Value > 0) || !std::isfinite(n.Value))
+    {
+      std::ostringstream s;
+      s << "conformal metric: the refractive index n = " << n.Value << " at (" << p.transpose()
+        << ") must be positive everywhere (g = n^2 I)";
+      return s.str();
+    }
+  }
+  return this->Metric::Validate();
+}
+
+void ConformalMetric::AppendSamplePoints(std::vector<Vec3>& points) const
+{
+  this->Index->AppendSamplePoints(points);
+}
+} // namespace riemann

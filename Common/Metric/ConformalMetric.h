@@ -1,0 +1,45 @@
+/**
+ * @class riemann::ConformalMetric
+ * @brief Family 3: g = n(x)^2 I, light in a medium of refractive index n
+ * (Fermat's principle; the paper's mirages). Volume form n^3.
+ *
+ * With L = grad ln n: Gamma^m_ij = delta_mi L_j + delta_mj L_i - delta_ij L_m,
+ * so the acceleration is a = |v|^2 L - 2 (L . v) v. Degenerate where n <= 0.
+ */
+#ifndef RiemannConformalMetric_h
+#define RiemannConformalMetric_h
+
+#include "Metric.h"
+#include "ScalarField.h"
+
+#include <memory>
+
+namespace riemann
+{
+class RIEMANNCOMMONMETRIC_EXPORT ConformalMetric : public Metric
+{
+public:
+  explicit ConformalMetric(std::shared_ptr<const ScalarField> index);
+
+  std::string FamilyName() const override { return "conformal"; }
+  std::string Describe() const override;
+  bool Tensor(const Vec3& p, Mat3& g) const override;
+  bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
+  bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+  bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const override;
+  bool InverseTensor(const Vec3& p, Mat3& inverse) const override;
+  double VolumeForm(const Vec3& p) const override;
+  /// Checks n > 0 (and finite) at the sample points, naming the value found.
+  std::string Validate() const override;
+
+  const ScalarField& GetIndex() const { return *this->Index; }
+
+protected:
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::shared_ptr<const ScalarField> Index;
+};
+} // namespace riemann
+
+#endif

@@ -1,0 +1,110 @@
+#include "DiffeoMetric.h"
+
+#include <Eigen/LU>
+
+#include <cmath>
+
+namespace riemann
+{
+namespace
+{
+/// Below this |det J| the pull-back is treated as degenerate (the map folds).
+constexpr double DegenerateDeterminant = 1e-12;
+}
+
+DiffeoMetric::DiffeoMetric(std::shared_ptr<const SpaceMap> map)
+  : Map(std::move(map))
+{
+}
+
+std::string DiffeoMetric::Describe() const
+{
+  return "pull-back of Euclidean space through " + this->Map->Describe();
+}
+
+bool DiffeoMetric::Tensor(const Vec3& p, Mat3& g) const
+{
+  VectorJet jet;
+  this->Map->Evaluate(p, FirstDerivatives, jet);
+  g = jet.Jacobian.transpose() * jet.Jacobian;
+  return g.allFinite() && std::abs(jet.Jacobian.determinant()) > DegenerateDeterminant;
+}
+
+bool DiffeoMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const
+{
+  // d_k g_ij = sum_s H_s(i, k) J(s, j) + J(s, i) H_s(j, k).
+  VectorJet jet;
+  this->Map->Evaluate(p, SecondDerivatives, jet);
+  const Mat3& J = jet.Jacobian;
+  g = J.transpose() * J;
+  for (int k = 0; k < 3; ++k)
+  {
+    // B(s, i) = H_s(i, k) = d_k J(s, i).
+    Mat3 b;
+    for (int s = 0; s < 3; ++s)
+    {
+      b.row(s) = jet.Hessian[s].col(k).transpose();
+    }
+    dg[k] = b.transpose() * J + J.transpose() * b;
+  }
+  return g.allFinite() && std::abs(J.determinant()) > DegenerateDeterminant;
+}
+
+bool DiffeoMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
+{
+  VectorJet jet;
+  this->Map->Evaluate(p, SecondDerivatives, jet);
+  if (!(std::abs(jet.Jacobian.determinant()) > DegenerateDeterminant))
+  {
+    return false;
+  }
+  const Mat3 inverse = jet.Jacobian.inverse();
+  for (int m = 0; m < 3; ++m)
+  {
+    gamma[m] =
+      inverse(m, 0) * jet.Hessian[0] + inverse(m, 1) * jet.Hessian[1] + inverse(m, 2) * jet.Hessian[2];
+  }
+  return gamma[0].allFinite() && gamma[1].allFinite() && gamma[2].allFinite();
+}
+
+bool DiffeoMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
+{
+  VectorJet jet;
+  this->Map->Evaluate(p, SecondDerivatives, jet);
+  const double det = jet.Jacobian.determinant();
+  if (!(std::abs(det) > DegenerateDeterminant))
+  {
+    return false;
+  }
+  const Vec3 w(v.dot(jet.Hessian[0] * v), v.dot(jet.Hessian[1] * v), v.dot(jet.Hessian[2] * v));
+  // A 3x3 inverse by cofactors (Eigen's fixed-size inverse) is cheaper than a
+  // pivoted solve and exact enough away from det J = 0, which is refused above.
+  a = -(jet.Jacobian.inverse() * w);
+  return a.allFinite();
+}
+
+double DiffeoMetric::VolumeForm(const Vec3& p) const
+{
+  VectorJet jet;
+  this->Map->Evaluate(p, FirstDerivatives, jet);
+  return std::abs(jet.Jacobian.determinant());
+}
+
+std::string DiffeoMetric::Validate() const
+{
+  std::string why = this->Map->CheckDiffeomorphism();
+  return why.empty() ? this->Metric::Validate() : why;
+}
+
+bool DiffeoMetric::ExactGeodesic(const Vec3& p, const Vec3& v, double t, Vec3& point) const
+{
+  VectorJet jet;
+  this->Map->Evaluate(p, FirstDerivatives, jet);
+  return this->Map->Inverse(jet.Value + t * (jet.Jacobian * v), point);
+}
+
+void DiffeoMetric::AppendSamplePoints(std::vector<Vec3>& points) const
+{
+  this->Map->AppendSamplePoints(points);
+}
+} // namespace riemann

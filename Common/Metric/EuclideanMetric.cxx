@@ -1,0 +1,46 @@
+#include "EuclideanMetric.h"
+
+namespace riemann
+{
+bool EuclideanMetric::Tensor(const Vec3& p, Mat3& g) const
+{
+  g.setIdentity();
+  return p.allFinite();
+}
+
+bool EuclideanMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const
+{
+  g.setIdentity();
+  for (Mat3& m : dg)
+  {
+    m.setZero();
+  }
+  return p.allFinite();
+}
+
+bool EuclideanMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
+{
+  for (Mat3& m : gamma)
+  {
+    m.setZero();
+  }
+  return p.allFinite();
+}
+
+bool EuclideanMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
+{
+  a.setZero();
+  return p.allFinite() && v.allFinite();
+}
+
+bool EuclideanMetric::InverseTensor(const Vec3& p, Mat3& inverse) const
+{
+  inverse.setIdentity();
+  return p.allFinite();
+}
+
+double EuclideanMetric::VolumeForm(const Vec3& /*p*/) const
+{
+  return 1.0;
+}
+} // namespace riemann

@@ -1,0 +1,88 @@
+#include "GaussianField.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace riemann
+{
+GaussianField::GaussianField(double amplitude, const Vec3& center, const Vec3& sigma)
+  : Amplitude(amplitude)
+  , Center(center)
+  , Sigma(sigma)
+  , InverseVariance(sigma.cwiseProduct(sigma).cwiseInverse())
+{
+}
+
+void GaussianField::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
+{
+  // With w_i = 1/s_i^2 and u_i = w_i (p_i - c_i):
+  //   d_i f = -u_i f
+  //   d_i d_j f = (u_i u_j - delta_ij w_i) f
+  //   d_i d_j d_k f = (-u_i u_j u_k + delta_ij w_i u_k + delta_ik w_i u_j + delta_jk w_j u_i) f
+  const Vec3 d = p - this->Center;
+  const Vec3 u = this->InverseVariance.cwiseProduct(d);
+  const double f = this->Amplitude * std::exp(-0.5 * d.dot(u));
+  jet.Value = f;
+  if (order >= FirstDerivatives)
+  {
+    jet.Gradient = -f * u;
+  }
+  if (order >= SecondDerivatives)
+  {
+    jet.Hessian = f * (u * u.transpose());
+    jet.Hessian.diagonal() -= f * this->InverseVariance;
+  }
+  if (order >= ThirdDerivatives)
+  {
+    const Vec3& w = this->InverseVariance;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          double t = -u[i] * u[j] * u[k];
+          if (i == j)
+          {
+            t += w[i] * u[k];
+          }
+          if (i == k)
+          {
+            t += w[i] * u[j];
+          }
+          if (j == k)
+          {
+            t += w[j] * u[i];
+          }
+          jet.Third[i](j, k) = f * t;
+        }
+      }
+    }
+  }
+}
+
+std::string GaussianField::Describe() const
+{
+  std::ostringstream s;
+  s << "gaussian(amplitude " << this->Amplitude << ", center (" << this->Center.transpose()
+    << "), sigma (" << this->Sigma.transpose() << "))";
+  return s.str();
+}
+
+void GaussianField::AppendSamplePoints(std::vector<Vec3>& points) const
+{
+  constexpr int n = 17;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        const Vec3 unit(i, j, k);
+        const Vec3 offset = (unit / (n - 1) * 8.0 - Vec3::Constant(4.0)).cwiseProduct(this->Sigma);
+        points.push_back(this->Center + offset);
+      }
+    }
+  }
+}
+} // namespace riemann

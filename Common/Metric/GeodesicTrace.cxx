@@ -1,0 +1,170 @@
+#include "GeodesicTrace.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace riemann
+{
+const char* TerminationReasonName(int reason)
+{
+  switch (reason)
+  {
+    case OutOfDomain:
+      return "left the domain";
+    case NotInitialized:
+      return "not initialized";
+    case UnexpectedValue:
+      return "unexpected (non-finite) value";
+    case OutOfLength:
+      return "reached the maximum length";
+    case OutOfSteps:
+      return "reached the maximum number of steps";
+    case Stagnation:
+      return "step size underflow (tolerance not reachable)";
+    case DegenerateMetric:
+      return "degenerate metric";
+    case HitSurface:
+      return "hit a surface";
+    default:
+      return "unknown";
+  }
+}
+
+void GeodesicPath::Clear()
+{
+  this->Points.clear();
+  this->Velocities.clear();
+  this->ArcLength.clear();
+  this->SpeedDrift.clear();
+  this->Reason = NotInitialized;
+}
+
+bool UnitSpeedVelocity(const Metric& metric, const Vec3& p, const Vec3& direction, Vec3& velocity)
+{
+  const double squaredSpeed = metric.InnerProduct(p, direction, direction);
+  if (!direction.allFinite() || !(squaredSpeed > 0) || !std::isfinite(squaredSpeed))
+  {
+    return false;
+  }
+  velocity = direction / std::sqrt(squaredSpeed);
+  return true;
+}
+
+namespace
+{
+bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
+{
+  return !options.UseBounds ||
+    (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
+      x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
+}
+}
+
+void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
+  const GeodesicOptions& options, GeodesicPath& path, bool backward)
+{
+  path.Clear();
+  const double initialSquaredSpeed = metric.InnerProduct(p, v, v);
+  if (!p.allFinite() || !v.allFinite() || !std::isfinite(initialSquaredSpeed) ||
+    !(initialSquaredSpeed > 0))
+  {
+    path.Reason = std::isfinite(initialSquaredSpeed) || !p.allFinite() || !v.allFinite()
+      ? NotInitialized
+      : DegenerateMetric;
+    return;
+  }
+  const double sign = backward ? -1.0 : 1.0;
+  const double speed = std::sqrt(initialSquaredSpeed);
+  // Work in the curve parameter tau (arc length = speed * tau).
+  const double parameterEnd = options.MaximumLength / speed;
+  double step = options.Step / speed;
+
+  Vec6 y;
+  y << p, sign * v;
+  double tau = 0.0;
+  auto record = [&](double drift) {
+    path.Points.push_back(y.head<3>());
+    path.Velocities.push_back(y.tail<3>() * (sign / speed));
+    path.ArcLength.push_back(sign * speed * tau);
+    path.SpeedDrift.push_back(drift);
+  };
+  record(0.0);
+  if (!InsideBounds(options, p))
+  {
+    path.Reason = OutOfDomain;
+    return;
+  }
+
+  DormandPrince45 adaptive(
+    options.Tolerance, options.MinimumStep / speed, options.MaximumStep / speed);
+  // Steps shorter than this (relative to the length) count as arriving.
+  const double arrival = 1e-12 * std::max(1.0, parameterEnd);
+  for (long long n = 0;; ++n)
+  {
+    const double remaining = parameterEnd - tau;
+    if (remaining <= arrival)
+    {
+      path.Reason = OutOfLength;
+      return;
+    }
+    if (n >= options.MaximumSteps)
+    {
+      path.Reason = OutOfSteps;
+      return;
+    }
+    double taken = std::min(step, remaining);
+    bool ok = true;
+    switch (options.Integrator)
+    {
+      case IntegratorType::Euler:
+        ok = EulerStep(metric, y, taken);
+        break;
+      case IntegratorType::RungeKutta4:
+        ok = RungeKutta4Step(metric, y, taken);
+        break;
+      case IntegratorType::DormandPrince45:
+      {
+        const auto status = adaptive.Step(metric, y, step, remaining, taken);
+        if (status == DormandPrince45::StepTooSmall)
+        {
+          path.Reason = Stagnation;
+          return;
+        }
+        ok = status == DormandPrince45::Accepted;
+        break;
+      }
+    }
+    if (!ok)
+    {
+      path.Reason = DegenerateMetric;
+      return;
+    }
+    if (!y.allFinite())
+    {
+      path.Reason = UnexpectedValue;
+      return;
+    }
+    tau += taken;
+    double drift = 0.0;
+    if (options.RecordSpeedDrift)
+    {
+      const Vec3 velocity = y.tail<3>();
+      const double squaredSpeed = metric.InnerProduct(y.head<3>(), velocity, velocity);
+      if (!std::isfinite(squaredSpeed))
+      {
+        // The step landed where g is degenerate (e.g. jumped past n = 0):
+        // the point is not on the manifold, so it is not recorded.
+        path.Reason = DegenerateMetric;
+        return;
+      }
+      drift = squaredSpeed / initialSquaredSpeed - 1.0;
+    }
+    record(drift);
+    if (!InsideBounds(options, y.head<3>()))
+    {
+      path.Reason = OutOfDomain;
+      return;
+    }
+  }
+}
+} // namespace riemann

@@ -1,0 +1,88 @@
+/**
+ * @file GeodesicTrace.h
+ * @brief Trace one geodesic of a Metric from a point and a direction: the
+ * VTK-free core of vtkRiemannGeodesicTracer and `riemann trace`.
+ */
+#ifndef RiemannGeodesicTrace_h
+#define RiemannGeodesicTrace_h
+
+#include "Integrators.h"
+
+#include <vector>
+
+namespace riemann
+{
+/**
+ * Why a geodesic stopped. 1-6 are vtkStreamTracer's ReasonForTermination
+ * codes (7 is its count of fixed reasons); 8 and up are ours.
+ */
+enum TerminationReason : int
+{
+  OutOfDomain = 1,
+  NotInitialized = 2,
+  UnexpectedValue = 3,
+  OutOfLength = 4,
+  OutOfSteps = 5,
+  Stagnation = 6,
+  DegenerateMetric = 8,
+  HitSurface = 9
+};
+
+/// A short English name for a TerminationReason ("out of length", ...).
+RIEMANNCOMMONMETRIC_EXPORT const char* TerminationReasonName(int reason);
+
+struct GeodesicOptions
+{
+  IntegratorType Integrator = IntegratorType::RungeKutta4;
+  /// Step in Riemannian arc length (the initial step for dp45).
+  double Step = 0.01;
+  /// Bounds of the adaptive step (dp45 only).
+  double MinimumStep = 1e-7;
+  double MaximumStep = 0.5;
+  /// Mixed absolute/relative error tolerance per step (dp45 only).
+  double Tolerance = 1e-8;
+  /// Riemannian arc length at which the geodesic stops.
+  double MaximumLength = 10.0;
+  long long MaximumSteps = 100000;
+  /// Stop when leaving [x0,x1]x[y0,y1]x[z0,z1] (only if UseBounds).
+  bool UseBounds = false;
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+  /// Record g(v,v)/g(v0,v0) - 1 at every point (one metric evaluation per step).
+  bool RecordSpeedDrift = true;
+};
+
+/**
+ * The sampled geodesic. ArcLength is the signed Riemannian arc length from
+ * the seed (negative for a backward geodesic, as vtkStreamTracer's
+ * IntegrationTime); Velocities are the coordinate velocities dx/ds.
+ */
+struct RIEMANNCOMMONMETRIC_EXPORT GeodesicPath
+{
+  std::vector<Vec3> Points;
+  std::vector<Vec3> Velocities;
+  std::vector<double> ArcLength;
+  std::vector<double> SpeedDrift;
+  int Reason = NotInitialized;
+
+  /// Empty the path but keep its capacity, so reuse does not allocate.
+  void Clear();
+};
+
+/**
+ * Scale `direction` to unit speed in g at p: v = d / sqrt(g_p(d, d)).
+ * False when the direction is zero or not finite, or g is degenerate at p.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool UnitSpeedVelocity(
+  const Metric& metric, const Vec3& p, const Vec3& direction, Vec3& velocity);
+
+/**
+ * Integrate the geodesic from p with initial velocity v (any nonzero speed;
+ * lengths and steps are in arc length, ArcLength is parameter times the
+ * initial speed) until a termination reason occurs. With `backward` the
+ * geodesic follows -v and ArcLength is negative.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
+  const GeodesicOptions& options, GeodesicPath& path, bool backward = false);
+} // namespace riemann
+
+#endif

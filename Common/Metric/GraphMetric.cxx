@@ -1,0 +1,79 @@
+#include "GraphMetric.h"
+
+#include <cmath>
+
+namespace riemann
+{
+GraphMetric::GraphMetric(std::shared_ptr<const ScalarField> f)
+  : Field(std::move(f))
+{
+}
+
+std::string GraphMetric::Describe() const
+{
+  return "graph of f = " + this->Field->Describe();
+}
+
+bool GraphMetric::Tensor(const Vec3& p, Mat3& g) const
+{
+  ScalarJet f;
+  this->Field->Evaluate(p, FirstDerivatives, f);
+  g = Mat3::Identity() + f.Gradient * f.Gradient.transpose();
+  return g.allFinite();
+}
+
+bool GraphMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const
+{
+  // d_k g_ij = f_ik f_j + f_i f_jk.
+  ScalarJet f;
+  this->Field->Evaluate(p, SecondDerivatives, f);
+  g = Mat3::Identity() + f.Gradient * f.Gradient.transpose();
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 hk = f.Hessian.col(k);
+    dg[k] = hk * f.Gradient.transpose() + f.Gradient * hk.transpose();
+  }
+  return g.allFinite() && dg[0].allFinite() && dg[1].allFinite() && dg[2].allFinite();
+}
+
+bool GraphMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
+{
+  ScalarJet f;
+  this->Field->Evaluate(p, SecondDerivatives, f);
+  const double scale = 1.0 / (1.0 + f.Gradient.squaredNorm());
+  for (int m = 0; m < 3; ++m)
+  {
+    gamma[m] = (f.Gradient[m] * scale) * f.Hessian;
+  }
+  return std::isfinite(scale) && f.Hessian.allFinite() && f.Gradient.allFinite();
+}
+
+bool GraphMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
+{
+  ScalarJet f;
+  this->Field->Evaluate(p, SecondDerivatives, f);
+  a = (-v.dot(f.Hessian * v) / (1.0 + f.Gradient.squaredNorm())) * f.Gradient;
+  return a.allFinite();
+}
+
+bool GraphMetric::InverseTensor(const Vec3& p, Mat3& inverse) const
+{
+  ScalarJet f;
+  this->Field->Evaluate(p, FirstDerivatives, f);
+  inverse = Mat3::Identity() -
+    (f.Gradient * f.Gradient.transpose()) / (1.0 + f.Gradient.squaredNorm());
+  return inverse.allFinite();
+}
+
+double GraphMetric::VolumeForm(const Vec3& p) const
+{
+  ScalarJet f;
+  this->Field->Evaluate(p, FirstDerivatives, f);
+  return std::sqrt(1.0 + f.Gradient.squaredNorm());
+}
+
+void GraphMetric::AppendSamplePoints(std::vector<Vec3>& points) const
+{
+  this->Field->AppendSamplePoints(points);
+}
+} // namespace riemann

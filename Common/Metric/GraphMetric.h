@@ -1,0 +1,45 @@
+/**
+ * @class riemann::GraphMetric
+ * @brief Family 1: the metric of the graph of f : R^3 -> R as a hypersurface
+ * of R^4, g_ij = delta_ij + f_i f_j (MATH.md).
+ *
+ * Always positive definite; Gamma^m_ij = f_m f_ij / (1 + |grad f|^2), so the
+ * geodesic acceleration is -grad f (v^T H v) / (1 + |grad f|^2).
+ */
+#ifndef RiemannGraphMetric_h
+#define RiemannGraphMetric_h
+
+#include "Metric.h"
+#include "ScalarField.h"
+
+#include <memory>
+
+namespace riemann
+{
+class RIEMANNCOMMONMETRIC_EXPORT GraphMetric : public Metric
+{
+public:
+  explicit GraphMetric(std::shared_ptr<const ScalarField> f);
+
+  std::string FamilyName() const override { return "graph"; }
+  std::string Describe() const override;
+  bool Tensor(const Vec3& p, Mat3& g) const override;
+  bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
+  bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+  bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const override;
+  /// Sherman-Morrison: g^ij = delta_ij - f_i f_j / (1 + |grad f|^2).
+  bool InverseTensor(const Vec3& p, Mat3& inverse) const override;
+  /// sqrt(1 + |grad f|^2).
+  double VolumeForm(const Vec3& p) const override;
+
+  const ScalarField& GetField() const { return *this->Field; }
+
+protected:
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::shared_ptr<const ScalarField> Field;
+};
+} // namespace riemann
+
+#endif

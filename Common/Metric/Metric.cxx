@@ -1,0 +1,98 @@
+#include "Metric.h"
+
+#include "Christoffel.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace riemann
+{
+bool Metric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
+{
+  Mat3Stack gamma;
+  if (!this->Christoffel(p, gamma))
+  {
+    return false;
+  }
+  a = ContractChristoffel(gamma, v);
+  return a.allFinite();
+}
+
+bool Metric::InverseTensor(const Vec3& p, Mat3& inverse) const
+{
+  Mat3 g;
+  if (!this->Tensor(p, g))
+  {
+    return false;
+  }
+  const Eigen::LLT<Mat3> llt(g);
+  if (llt.info() != Eigen::Success)
+  {
+    return false;
+  }
+  inverse = llt.solve(Mat3::Identity());
+  return inverse.allFinite();
+}
+
+double Metric::VolumeForm(const Vec3& p) const
+{
+  Mat3 g;
+  if (!this->Tensor(p, g))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double det = g.determinant();
+  return det > 0 ? std::sqrt(det) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Metric::InnerProduct(const Vec3& p, const Vec3& u, const Vec3& w) const
+{
+  Mat3 g;
+  if (!this->Tensor(p, g))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return u.dot(g * w);
+}
+
+std::string Metric::Validate() const
+{
+  std::vector<Vec3> points;
+  constexpr int n = 11;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        points.push_back(Vec3(i, j, k) - Vec3::Constant(5.0));
+      }
+    }
+  }
+  this->AppendSamplePoints(points);
+  Mat3 g;
+  for (const Vec3& p : points)
+  {
+    const bool defined = this->Tensor(p, g);
+    const Eigen::LLT<Mat3> llt(g);
+    if (!defined || !g.allFinite() || llt.info() != Eigen::Success)
+    {
+      std::ostringstream s;
+      s << this->FamilyName() << " metric is not positive definite at (" << p.transpose() << ")";
+      if (g.allFinite())
+      {
+        s << ": eigenvalues of g are ("
+          << Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues().transpose()
+          << ")";
+      }
+      return s.str();
+    }
+  }
+  return {};
+}
+} // namespace riemann

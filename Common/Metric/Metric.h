@@ -1,0 +1,69 @@
+/**
+ * @class riemann::Metric
+ * @brief A Riemannian metric g on (a region of) R^3: one of the families of
+ * MATH.md (graph, diffeomorphism, conformal, tensor, Euclidean).
+ *
+ * Every family gives g, g^-1, d g, the Christoffel symbols by its own
+ * specialised formula, the geodesic acceleration and the volume form.
+ * Evaluation methods return false where the metric is degenerate or not
+ * finite (not positive definite, det J = 0, n <= 0, NaN): a geodesic reaching
+ * such a point stops there with its own termination reason.
+ *
+ * Metrics are immutable after construction: one instance may be evaluated
+ * from any number of threads at once, and evaluation never allocates.
+ */
+#ifndef RiemannMetric_h
+#define RiemannMetric_h
+
+#include "Jets.h"
+#include "RiemannCommonMetricExport.h"
+
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+class RIEMANNCOMMONMETRIC_EXPORT Metric
+{
+public:
+  virtual ~Metric() = default;
+
+  /// "graph", "diffeo", "conformal", "tensor" or "euclidean".
+  virtual std::string FamilyName() const = 0;
+  /// One line: the family and its providers.
+  virtual std::string Describe() const = 0;
+
+  /// g_ij at p.
+  virtual bool Tensor(const Vec3& p, Mat3& g) const = 0;
+  /// g_ij and dg[k](i, j) = d_k g_ij at p.
+  virtual bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const = 0;
+  /// gamma[m](i, j) = Gamma^m_ij at p, by the family's specialised formula.
+  virtual bool Christoffel(const Vec3& p, Mat3Stack& gamma) const = 0;
+  /**
+   * Geodesic acceleration a^m = -Gamma^m_ij v^i v^j: the hot path of every
+   * integrator. The default contracts Christoffel(); families override it with
+   * a cheaper closed form.
+   */
+  virtual bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const;
+  /// g^ij at p. The default inverts Tensor() by Cholesky.
+  virtual bool InverseTensor(const Vec3& p, Mat3& inverse) const;
+  /// sqrt(det g) at p; NaN where the metric is degenerate.
+  virtual double VolumeForm(const Vec3& p) const;
+
+  /// g_p(u, w); NaN where the metric is degenerate.
+  double InnerProduct(const Vec3& p, const Vec3& u, const Vec3& w) const;
+
+  /**
+   * Check the definition where its providers vary (and on a coarse grid over
+   * [-5, 5]^3): g finite and positive definite, maps diffeomorphisms. Returns
+   * an empty string when valid, else a message that says where and why not.
+   */
+  virtual std::string Validate() const;
+
+protected:
+  /// Points where Validate() samples g: the providers' features.
+  virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+};
+} // namespace riemann
+
+#endif

@@ -1,0 +1,409 @@
+#include "MetricDefinition.h"
+
+#include "BumpTranslationMap.h"
+#include "ConformalMetric.h"
+#include "DiffeoMetric.h"
+#include "EuclideanMetric.h"
+#include "GaussianField.h"
+#include "GraphMetric.h"
+#include "MapComposition.h"
+#include "QuadraticField.h"
+#include "ScalarFieldSum.h"
+#include "TensorMetric.h"
+#include "TwistMap.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace riemann
+{
+namespace
+{
+using Json = nlohmann::json;
+
+/// Guards against absurd inputs (a definition is typed by a person).
+constexpr size_t MaximumTerms = 4096;
+constexpr size_t MaximumCompositionDepth = 64;
+constexpr std::streamoff MaximumFileSize = 64 << 20;
+
+[[noreturn]] void Fail(const std::string& path, const std::string& message)
+{
+  throw MetricDefinitionError(path + ": " + message);
+}
+
+std::string Describe(const Json& value)
+{
+  switch (value.type())
+  {
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return "a boolean";
+    case Json::value_t::string:
+      return "the string \"" + value.get<std::string>() + "\"";
+    case Json::value_t::array:
+      return "an array of " + std::to_string(value.size());
+    case Json::value_t::object:
+      return "an object";
+    default:
+      return value.dump();
+  }
+}
+
+bool IsExpressionKey(const std::string& key)
+{
+  return key == "f" || key == "phi" || key == "n" || key == "g" || key == "parameters";
+}
+
+/// Refuse keys outside `allowed` (plus "name" and "description").
+void CheckKeys(const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+{
+  if (!object.is_object())
+  {
+    Fail(path, "expected an object, got " + Describe(object));
+  }
+  for (const auto& item : object.items())
+  {
+    const std::string& key = item.key();
+    bool known = key == "name" || key == "description";
+    for (const char* a : allowed)
+    {
+      known = known || key == a;
+    }
+    if (known)
+    {
+      continue;
+    }
+    if (IsExpressionKey(key))
+    {
+      Fail(path + "." + key,
+        "expressions (\"f\", \"phi\", \"n\", \"g\", \"parameters\") are not yet supported in this "
+        "version; use the built-in providers (gaussians, quadratic, presets)");
+    }
+    std::string expected;
+    for (const char* a : allowed)
+    {
+      expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
+    }
+    Fail(path, "unknown key \"" + key + "\"; expected one of " + expected +
+        ", \"name\", \"description\"");
+  }
+}
+
+double Number(const Json& value, const std::string& path)
+{
+  if (!value.is_number())
+  {
+    Fail(path, "expected a number, got " + Describe(value));
+  }
+  const double number = value.get<double>();
+  if (!std::isfinite(number))
+  {
+    Fail(path, "expected a finite number");
+  }
+  return number;
+}
+
+double NumberOr(const Json& object, const char* key, const std::string& path, double fallback)
+{
+  return object.contains(key) ? Number(object.at(key), path + "." + key) : fallback;
+}
+
+Vec3 Vector(const Json& value, const std::string& path)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(path, "expected an array of 3 numbers, got " + Describe(value));
+  }
+  return Vec3(Number(value[0], path + "[0]"), Number(value[1], path + "[1]"),
+    Number(value[2], path + "[2]"));
+}
+
+Mat3 Matrix(const Json& value, const std::string& path)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(path, "expected a 3x3 matrix (an array of 3 rows of 3 numbers), got " + Describe(value));
+  }
+  Mat3 m;
+  for (int r = 0; r < 3; ++r)
+  {
+    m.row(r) = Vector(value[r], path + "[" + std::to_string(r) + "]").transpose();
+  }
+  return m;
+}
+
+const Json& Required(const Json& object, const char* key, const std::string& path)
+{
+  if (!object.contains(key))
+  {
+    Fail(path, std::string("missing required key \"") + key + "\"");
+  }
+  return object.at(key);
+}
+
+std::shared_ptr<const ScalarField> Gaussian(const Json& object, const std::string& path)
+{
+  CheckKeys(object, path, { "amplitude", "center", "sigma" });
+  const double amplitude = Number(Required(object, "amplitude", path), path + ".amplitude");
+  const Vec3 center = Vector(Required(object, "center", path), path + ".center");
+  const Json& sigmaValue = Required(object, "sigma", path);
+  const Vec3 sigma = sigmaValue.is_number()
+    ? Vec3::Constant(Number(sigmaValue, path + ".sigma"))
+    : Vector(sigmaValue, path + ".sigma");
+  if (!(sigma.minCoeff() > 0))
+  {
+    Fail(path + ".sigma", "every spread must be positive");
+  }
+  return std::make_shared<GaussianField>(amplitude, center, sigma);
+}
+
+std::shared_ptr<const ScalarField> Quadratic(const Json& object, const std::string& path)
+{
+  CheckKeys(object, path, { "matrix", "diagonal", "linear", "constant" });
+  Mat3 matrix = Mat3::Zero();
+  if (object.contains("matrix") && object.contains("diagonal"))
+  {
+    Fail(path, "give either \"matrix\" or \"diagonal\", not both");
+  }
+  if (object.contains("matrix"))
+  {
+    matrix = Matrix(object.at("matrix"), path + ".matrix");
+  }
+  else if (object.contains("diagonal"))
+  {
+    matrix = Vector(object.at("diagonal"), path + ".diagonal").asDiagonal();
+  }
+  const Vec3 linear = object.contains("linear") ? Vector(object.at("linear"), path + ".linear")
+                                                : Vec3::Zero();
+  return std::make_shared<QuadraticField>(matrix, linear, NumberOr(object, "constant", path, 0.0));
+}
+
+/// The sum of a family's scalar terms ("gaussians", "quadratic", "constant").
+std::shared_ptr<const ScalarField> ScalarTerms(
+  const Json& object, const std::string& path, double defaultConstant, const char* what)
+{
+  std::vector<std::shared_ptr<const ScalarField>> terms;
+  if (object.contains("gaussians"))
+  {
+    const Json& list = object.at("gaussians");
+    if (!list.is_array())
+    {
+      Fail(path + ".gaussians", "expected an array of Gaussian objects, got " + Describe(list));
+    }
+    if (list.size() > MaximumTerms)
+    {
+      Fail(path + ".gaussians", "too many terms (" + std::to_string(list.size()) + " > " +
+          std::to_string(MaximumTerms) + ")");
+    }
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      terms.push_back(Gaussian(list[i], path + ".gaussians[" + std::to_string(i) + "]"));
+    }
+  }
+  if (object.contains("quadratic"))
+  {
+    const Json& q = object.at("quadratic");
+    if (q.is_array())
+    {
+      for (size_t i = 0; i < q.size() && i < MaximumTerms; ++i)
+      {
+        terms.push_back(Quadratic(q[i], path + ".quadratic[" + std::to_string(i) + "]"));
+      }
+    }
+    else
+    {
+      terms.push_back(Quadratic(q, path + ".quadratic"));
+    }
+  }
+  if (terms.empty() && !object.contains("constant"))
+  {
+    Fail(path, std::string("the ") + what +
+        " needs at least one of \"gaussians\", \"quadratic\" or \"constant\"");
+  }
+  return std::make_shared<ScalarFieldSum>(
+    NumberOr(object, "constant", path, defaultConstant), std::move(terms));
+}
+
+std::shared_ptr<const SpaceMap> Diffeomorphism(
+  const Json& object, const std::string& path, size_t depth)
+{
+  if (depth > MaximumCompositionDepth)
+  {
+    Fail(path, "compositions nested deeper than " + std::to_string(MaximumCompositionDepth));
+  }
+  if (!object.is_object())
+  {
+    Fail(path, "expected a diffeomorphism object, got " + Describe(object));
+  }
+  if (object.contains("type") && object.at("type") != "diffeo")
+  {
+    Fail(path + ".type", "a composition may only hold diffeomorphisms (\"type\": \"diffeo\")");
+  }
+  if (object.contains("compose"))
+  {
+    CheckKeys(object, path, { "type", "compose" });
+    const Json& list = object.at("compose");
+    if (!list.is_array() || list.empty())
+    {
+      Fail(path + ".compose", "expected a non-empty array of diffeomorphisms, got " + Describe(list));
+    }
+    if (list.size() > MaximumTerms)
+    {
+      Fail(path + ".compose", "too many maps (" + std::to_string(list.size()) + ")");
+    }
+    std::vector<std::shared_ptr<const SpaceMap>> maps;
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      maps.push_back(Diffeomorphism(list[i], path + ".compose[" + std::to_string(i) + "]", depth + 1));
+    }
+    return std::make_shared<MapComposition>(std::move(maps));
+  }
+  if (!object.contains("preset"))
+  {
+    if (object.contains("phi"))
+    {
+      CheckKeys(object, path, { "type" }); // reports "not yet supported"
+    }
+    Fail(path, "a diffeomorphism needs \"preset\" (twist, bump, identity) or \"compose\"");
+  }
+  const Json& preset = object.at("preset");
+  if (preset == "twist")
+  {
+    CheckKeys(object, path, { "type", "preset", "rate" });
+    return std::make_shared<TwistMap>(NumberOr(object, "rate", path, 1.0));
+  }
+  if (preset == "identity")
+  {
+    CheckKeys(object, path, { "type", "preset" });
+    return std::make_shared<MapComposition>(std::vector<std::shared_ptr<const SpaceMap>>{});
+  }
+  if (preset == "bump")
+  {
+    CheckKeys(object, path, { "type", "preset", "gaussian", "direction", "field" });
+    auto f = Gaussian(Required(object, "gaussian", path), path + ".gaussian");
+    if (object.contains("direction") == object.contains("field"))
+    {
+      Fail(path, "a bump needs exactly one of \"direction\" (p + f(p) v) or \"field\" "
+                 "(p + f(p) (A (p - c) + b))");
+    }
+    if (object.contains("direction"))
+    {
+      return std::make_shared<BumpTranslationMap>(
+        f, Vector(object.at("direction"), path + ".direction"));
+    }
+    const Json& field = object.at("field");
+    const std::string fieldPath = path + ".field";
+    CheckKeys(field, fieldPath, { "matrix", "center", "offset" });
+    const Mat3 matrix = Matrix(Required(field, "matrix", fieldPath), fieldPath + ".matrix");
+    const Vec3 center =
+      field.contains("center") ? Vector(field.at("center"), fieldPath + ".center") : Vec3::Zero();
+    const Vec3 offset =
+      field.contains("offset") ? Vector(field.at("offset"), fieldPath + ".offset") : Vec3::Zero();
+    return std::make_shared<BumpTranslationMap>(f, matrix, center, offset);
+  }
+  Fail(path + ".preset", "unknown preset " + (preset.is_string() ? preset.dump() : Describe(preset)) + "; expected \"twist\", \"bump\" or \"identity\"");
+}
+
+std::shared_ptr<const Metric> Build(const Json& root)
+{
+  const std::string path = "metric";
+  if (!root.is_object())
+  {
+    Fail(path, "expected a JSON object with a \"type\", got " + Describe(root));
+  }
+  const Json& typeValue = Required(root, "type", path);
+  if (!typeValue.is_string())
+  {
+    Fail(path + ".type", "expected a string, got " + Describe(typeValue));
+  }
+  const std::string type = typeValue.get<std::string>();
+  if (type == "euclidean")
+  {
+    CheckKeys(root, path, { "type" });
+    return std::make_shared<EuclideanMetric>();
+  }
+  if (type == "graph")
+  {
+    CheckKeys(root, path, { "type", "gaussians", "quadratic", "constant" });
+    return std::make_shared<GraphMetric>(ScalarTerms(root, path, 0.0, "graph's function f"));
+  }
+  if (type == "conformal")
+  {
+    CheckKeys(root, path, { "type", "gaussians", "quadratic", "constant" });
+    return std::make_shared<ConformalMetric>(ScalarTerms(root, path, 1.0, "refractive index n"));
+  }
+  if (type == "diffeo")
+  {
+    return std::make_shared<DiffeoMetric>(Diffeomorphism(root, path, 0));
+  }
+  if (type == "tensor")
+  {
+    CheckKeys(root, path, { "type", "matrix" });
+    const Mat3 matrix = Matrix(Required(root, "matrix", path), path + ".matrix");
+    if (!matrix.isApprox(matrix.transpose(), 1e-12))
+    {
+      Fail(path + ".matrix", "g must be symmetric");
+    }
+    return std::make_shared<TensorMetric>(std::make_shared<ConstantTensorField>(matrix));
+  }
+  Fail(path + ".type", "unknown metric type \"" + type +
+      "\"; expected \"graph\", \"diffeo\", \"conformal\", \"tensor\" or \"euclidean\"");
+}
+} // namespace
+
+std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json)
+{
+  Json root;
+  try
+  {
+    root = Json::parse(json);
+  }
+  catch (const Json::exception& e)
+  {
+    // Syntax errors and number overflows. Drop nlohmann's
+    // "[json.exception.parse_error.101] " prefix; keep line and column.
+    std::string message = e.what();
+    const size_t bracket = message.find("] ");
+    if (bracket != std::string::npos)
+    {
+      message = message.substr(bracket + 2);
+    }
+    throw MetricDefinitionError("invalid JSON: " + message);
+  }
+  std::shared_ptr<const Metric> metric = Build(root);
+  const std::string why = metric->Validate();
+  if (!why.empty())
+  {
+    throw MetricDefinitionError("metric: " + why);
+  }
+  return metric;
+}
+
+std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file)
+  {
+    throw MetricDefinitionError(path + ": cannot open the metric file");
+  }
+  if (file.tellg() > MaximumFileSize)
+  {
+    throw MetricDefinitionError(path + ": file too large for a metric definition");
+  }
+  file.seekg(0);
+  std::ostringstream text;
+  text << file.rdbuf();
+  try
+  {
+    return ParseMetricDefinition(text.str());
+  }
+  catch (const MetricDefinitionError& e)
+  {
+    throw MetricDefinitionError(path + ": " + e.what());
+  }
+}
+} // namespace riemann

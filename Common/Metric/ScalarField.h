@@ -1,0 +1,40 @@
+/**
+ * @class riemann::ScalarField
+ * @brief A smooth scalar field f : R^3 -> R with exact derivatives to third order.
+ *
+ * Providers are immutable after construction and therefore safe to evaluate
+ * from many threads at once. Evaluate() must not allocate: it sits in the
+ * innermost loop of every geodesic step.
+ */
+#ifndef RiemannScalarField_h
+#define RiemannScalarField_h
+
+#include "Jets.h"
+#include "RiemannCommonMetricExport.h"
+
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+class RIEMANNCOMMONMETRIC_EXPORT ScalarField
+{
+public:
+  virtual ~ScalarField() = default;
+
+  /// Fill `jet` with the value and derivatives up to `order` (a DerivativeOrder).
+  virtual void Evaluate(const Vec3& p, int order, ScalarJet& jet) const = 0;
+
+  /// One line saying what the field is, for `riemann info` and error messages.
+  virtual std::string Describe() const = 0;
+
+  /**
+   * Append points where the field varies, dense enough to resolve its
+   * features: definitions are validated (positive definiteness,
+   * diffeomorphism conditions) at these points.
+   */
+  virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+};
+} // namespace riemann
+
+#endif

@@ -1,0 +1,62 @@
+/**
+ * @class riemann::TensorMetric
+ * @brief Family 4: any symmetric positive-definite tensor field g_ij(x),
+ * with Christoffel symbols from the general formula (Christoffel.h).
+ *
+ * The field comes from a TensorField provider: a constant matrix here;
+ * component expressions and sampled data come in later issues. Every
+ * specialised family must agree with this general path.
+ */
+#ifndef RiemannTensorMetric_h
+#define RiemannTensorMetric_h
+
+#include "Metric.h"
+
+#include <memory>
+
+namespace riemann
+{
+/// A symmetric tensor field and its first derivatives dg[k](i, j) = d_k g_ij.
+class RIEMANNCOMMONMETRIC_EXPORT TensorField
+{
+public:
+  virtual ~TensorField() = default;
+  /// Fill g, and dg when `withDerivatives`.
+  virtual void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const = 0;
+  virtual std::string Describe() const = 0;
+  virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+};
+
+/// g_ij = constant (symmetrised on construction).
+class RIEMANNCOMMONMETRIC_EXPORT ConstantTensorField : public TensorField
+{
+public:
+  explicit ConstantTensorField(const Mat3& value);
+  void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
+  std::string Describe() const override;
+
+private:
+  Mat3 Value;
+};
+
+class RIEMANNCOMMONMETRIC_EXPORT TensorMetric : public Metric
+{
+public:
+  explicit TensorMetric(std::shared_ptr<const TensorField> field);
+
+  std::string FamilyName() const override { return "tensor"; }
+  std::string Describe() const override;
+  /// False where g is not finite or not positive definite (Cholesky fails).
+  bool Tensor(const Vec3& p, Mat3& g) const override;
+  bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
+  bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+
+protected:
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::shared_ptr<const TensorField> Field;
+};
+} // namespace riemann
+
+#endif

@@ -1,0 +1,279 @@
+#include "vtkRiemannGeodesicTracer.h"
+
+#include "GeodesicTrace.h"
+#include "Metric.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannMetric.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannGeodesicTracer);
+vtkCxxSetObjectMacro(vtkRiemannGeodesicTracer, Metric, vtkRiemannMetric);
+
+// The public enums mirror the core's numbering, which is part of the file formats.
+static_assert(vtkRiemannGeodesicTracer::DEGENERATE_METRIC == riemann::DegenerateMetric &&
+    vtkRiemannGeodesicTracer::HIT_SURFACE == riemann::HitSurface &&
+    vtkRiemannGeodesicTracer::OUT_OF_LENGTH == riemann::OutOfLength,
+  "termination codes must match the core");
+static_assert(vtkRiemannGeodesicTracer::DORMAND_PRINCE45 ==
+    static_cast<int>(riemann::IntegratorType::DormandPrince45),
+  "integrator codes must match the core");
+
+vtkRiemannGeodesicTracer::vtkRiemannGeodesicTracer()
+{
+  this->SetDirectionArrayName("Direction");
+}
+
+vtkRiemannGeodesicTracer::~vtkRiemannGeodesicTracer()
+{
+  this->SetMetric(nullptr);
+  this->SetDirectionArrayName(nullptr);
+}
+
+int vtkRiemannGeodesicTracer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+vtkMTimeType vtkRiemannGeodesicTracer::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Metric)
+  {
+    time = std::max(time, this->Metric->GetMTime());
+  }
+  return time;
+}
+
+namespace
+{
+struct Seed
+{
+  riemann::Vec3 Position;
+  riemann::Vec3 Direction;
+  vtkIdType Id;
+  bool Backward;
+};
+}
+
+int vtkRiemannGeodesicTracer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  if (!this->Metric || !this->Metric->HasDefinition())
+  {
+    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
+                     "definition.");
+    return 1;
+  }
+  // Hold the metric for the whole computation (SetDefinition may replace it).
+  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
+
+  // Gather seeds: the input's points with their directions, or the start ivars.
+  std::vector<Seed> seeds;
+  const riemann::Vec3 startDirection(
+    this->StartDirection[0], this->StartDirection[1], this->StartDirection[2]);
+  vtkDataSet* input = this->GetNumberOfInputConnections(0) > 0
+    ? vtkDataSet::GetData(inputVector[0], 0)
+    : nullptr;
+  std::vector<std::pair<riemann::Vec3, riemann::Vec3>> starts;
+  if (input)
+  {
+    vtkDataArray* directions = this->DirectionArrayName
+      ? input->GetPointData()->GetArray(this->DirectionArrayName)
+      : nullptr;
+    if (directions && directions->GetNumberOfComponents() != 3)
+    {
+      vtkErrorMacro(<< "The seeds' array \"" << this->DirectionArrayName << "\" has "
+                    << directions->GetNumberOfComponents() << " components; it needs 3.");
+      return 1;
+    }
+    if (!directions && input->GetNumberOfPoints() > 0)
+    {
+      vtkWarningMacro(<< "The seeds have no point-data array \""
+                      << (this->DirectionArrayName ? this->DirectionArrayName : "")
+                      << "\"; every seed uses StartDirection.");
+    }
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      double p[3], d[3];
+      input->GetPoint(i, p);
+      riemann::Vec3 direction = startDirection;
+      if (directions)
+      {
+        directions->GetTuple(i, d);
+        direction = riemann::Vec3(d[0], d[1], d[2]);
+      }
+      starts.emplace_back(riemann::Vec3(p[0], p[1], p[2]), direction);
+    }
+  }
+  else
+  {
+    starts.emplace_back(
+      riemann::Vec3(this->StartPosition[0], this->StartPosition[1], this->StartPosition[2]),
+      startDirection);
+  }
+  for (size_t i = 0; i < starts.size(); ++i)
+  {
+    if (this->IntegrationDirection != BACKWARD)
+    {
+      seeds.push_back({ starts[i].first, starts[i].second, static_cast<vtkIdType>(i), false });
+    }
+    if (this->IntegrationDirection != FORWARD)
+    {
+      seeds.push_back({ starts[i].first, starts[i].second, static_cast<vtkIdType>(i), true });
+    }
+  }
+
+  riemann::GeodesicOptions options;
+  options.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
+  options.Step = this->InitialIntegrationStep;
+  options.MinimumStep = std::min(this->MinimumIntegrationStep, this->MaximumIntegrationStep);
+  options.MaximumStep = this->MaximumIntegrationStep;
+  options.Tolerance = this->MaximumError;
+  options.MaximumLength = this->MaximumPropagation;
+  options.MaximumSteps = this->MaximumNumberOfSteps;
+  options.UseBounds = this->UseDomainBounds;
+  std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
+
+  // Trace in parallel, in batches so that progress and abort are handled on
+  // this thread (VTK events must not fire from worker threads).
+  std::vector<riemann::GeodesicPath> paths(seeds.size());
+  const vtkIdType count = static_cast<vtkIdType>(seeds.size());
+  const vtkIdType batch = std::max<vtkIdType>(256, count / 50);
+  vtkIdType traced = 0;
+  this->UpdateProgress(0.0);
+  while (traced < count && !this->GetAbortExecute())
+  {
+    const vtkIdType end = std::min(count, traced + batch);
+    vtkSMPTools::For(traced, end, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        const Seed& seed = seeds[i];
+        riemann::Vec3 velocity;
+        if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
+        {
+          paths[i].Clear();
+          continue;
+        }
+        riemann::TraceGeodesic(*metric, seed.Position, velocity, options, paths[i], seed.Backward);
+      }
+    });
+    traced = end;
+    this->UpdateProgress(static_cast<double>(traced) / count);
+  }
+
+  // Assemble the polylines in seed order.
+  vtkIdType pointCount = 0;
+  vtkIdType lineCount = 0;
+  vtkIdType unstarted = 0;
+  for (vtkIdType i = 0; i < traced; ++i)
+  {
+    const size_t n = paths[i].Points.size();
+    unstarted += n == 0 ? 1 : 0;
+    if (n >= 2)
+    {
+      pointCount += static_cast<vtkIdType>(n);
+      ++lineCount;
+    }
+  }
+  if (unstarted > 0)
+  {
+    vtkWarningMacro(<< unstarted << " of " << count
+                    << " geodesics could not start: zero or non-finite direction, or a "
+                       "degenerate metric at the seed.");
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(pointCount);
+  vtkNew<vtkCellArray> lines;
+  lines->AllocateExact(lineCount, pointCount);
+  auto makeArray = [](vtkDoubleArray* array, const char* name, int components, vtkIdType tuples) {
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(tuples);
+  };
+  vtkNew<vtkDoubleArray> arcLength, velocity, speedDrift;
+  makeArray(arcLength, "ArcLength", 1, pointCount);
+  makeArray(velocity, "Velocity", 3, pointCount);
+  makeArray(speedDrift, "SpeedDrift", 1, pointCount);
+  vtkNew<vtkIntArray> seedIds, reasons;
+  seedIds->SetName("SeedIds");
+  seedIds->SetNumberOfTuples(lineCount);
+  reasons->SetName("ReasonForTermination");
+  reasons->SetNumberOfTuples(lineCount);
+
+  vtkIdType next = 0;
+  vtkIdType line = 0;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < traced; ++i)
+  {
+    const riemann::GeodesicPath& path = paths[i];
+    if (path.Points.size() < 2)
+    {
+      continue;
+    }
+    ids.resize(path.Points.size());
+    for (size_t k = 0; k < path.Points.size(); ++k, ++next)
+    {
+      ids[k] = next;
+      points->SetPoint(next, path.Points[k].data());
+      arcLength->SetValue(next, path.ArcLength[k]);
+      velocity->SetTypedTuple(next, path.Velocities[k].data());
+      speedDrift->SetValue(next, path.SpeedDrift[k]);
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    seedIds->SetValue(line, static_cast<int>(seeds[i].Id));
+    reasons->SetValue(line, path.Reason);
+    ++line;
+  }
+
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(arcLength);
+  output->GetPointData()->AddArray(velocity);
+  output->GetPointData()->SetVectors(velocity);
+  output->GetPointData()->AddArray(speedDrift);
+  output->GetCellData()->AddArray(seedIds);
+  output->GetCellData()->AddArray(reasons);
+  return 1;
+}
+
+void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "StartPosition: " << this->StartPosition[0] << " " << this->StartPosition[1]
+     << " " << this->StartPosition[2] << "\n";
+  os << indent << "StartDirection: " << this->StartDirection[0] << " " << this->StartDirection[1]
+     << " " << this->StartDirection[2] << "\n";
+  os << indent << "DirectionArrayName: "
+     << (this->DirectionArrayName ? this->DirectionArrayName : "(none)") << "\n";
+  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
+  os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
+  os << indent << "InitialIntegrationStep: " << this->InitialIntegrationStep << "\n";
+  os << indent << "MinimumIntegrationStep: " << this->MinimumIntegrationStep << "\n";
+  os << indent << "MaximumIntegrationStep: " << this->MaximumIntegrationStep << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
+  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
+  os << indent << "UseDomainBounds: " << this->UseDomainBounds << "\n";
+}

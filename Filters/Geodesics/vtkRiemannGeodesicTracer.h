@@ -1,0 +1,188 @@
+/**
+ * @class   vtkRiemannGeodesicTracer
+ * @brief   Geodesics of a Riemannian metric as polylines, from seed points.
+ *
+ * vtkRiemannGeodesicTracer integrates the geodesic equation of a
+ * vtkRiemannMetric from each seed, following vtkStreamTracer's conventions:
+ *
+ * - Seeds are the points of the input dataset (port 0, optional); the initial
+ *   direction of each is the point-data vector named DirectionArrayName
+ *   ("Direction" by default). Without an input, or without that array, the
+ *   StartPosition and/or StartDirection ivars are used.
+ * - Directions are coordinate vectors; each is normalised to unit speed in g
+ *   at its seed, so every length here is Riemannian arc length.
+ * - IntegratorType: EULER (the paper's), RUNGE_KUTTA4 (default) or
+ *   DORMAND_PRINCE45 (adaptive, with MaximumError as the per-step tolerance
+ *   and the step bounded by Minimum/MaximumIntegrationStep).
+ * - IntegrationDirection FORWARD, BACKWARD or BOTH (two lines per seed; the
+ *   backward one has negative ArcLength, as vtkStreamTracer's IntegrationTime).
+ * - Each line stops at MaximumPropagation (arc length), after
+ *   MaximumNumberOfSteps, on leaving DomainBounds (when UseDomainBounds), or
+ *   where the metric degenerates.
+ *
+ * Output: one polyline per seed and direction with point data `ArcLength`,
+ * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1: the integration error monitor)
+ * and cell data `SeedIds` and `ReasonForTermination` (vtkStreamTracer's codes
+ * plus DEGENERATE_METRIC and HIT_SURFACE).
+ *
+ * Seeds are traced in parallel with vtkSMPTools; progress is reported and
+ * AbortExecute honoured between batches of seeds. Without a valid metric the
+ * filter reports an error and produces empty output.
+ */
+#ifndef vtkRiemannGeodesicTracer_h
+#define vtkRiemannGeodesicTracer_h
+
+#include "RiemannFiltersGeodesicsModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkRiemannMetric;
+
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicTracer : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRiemannGeodesicTracer* New();
+  vtkTypeMacro(vtkRiemannGeodesicTracer, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Integrators
+  {
+    EULER = 0,
+    RUNGE_KUTTA4 = 1,
+    DORMAND_PRINCE45 = 2
+  };
+
+  enum Directions
+  {
+    FORWARD = 0,
+    BACKWARD = 1,
+    BOTH = 2
+  };
+
+  /// vtkStreamTracer's ReasonForTermination codes (1-6) and ours (8, 9).
+  enum ReasonForTermination
+  {
+    OUT_OF_DOMAIN = 1,
+    NOT_INITIALIZED = 2,
+    UNEXPECTED_VALUE = 3,
+    OUT_OF_LENGTH = 4,
+    OUT_OF_STEPS = 5,
+    STAGNATION = 6,
+    DEGENERATE_METRIC = 8,
+    HIT_SURFACE = 9
+  };
+
+  ///@{
+  /// The metric whose geodesics are traced (required).
+  virtual void SetMetric(vtkRiemannMetric* metric);
+  vtkGetObjectMacro(Metric, vtkRiemannMetric);
+  ///@}
+
+  ///@{
+  /// Seed used when there is no input dataset.
+  vtkSetVector3Macro(StartPosition, double);
+  vtkGetVector3Macro(StartPosition, double);
+  ///@}
+
+  ///@{
+  /// Direction used when there is no input, or it lacks DirectionArrayName.
+  vtkSetVector3Macro(StartDirection, double);
+  vtkGetVector3Macro(StartDirection, double);
+  ///@}
+
+  ///@{
+  /// Name of the seeds' point-data direction vectors (default "Direction").
+  vtkSetStringMacro(DirectionArrayName);
+  vtkGetStringMacro(DirectionArrayName);
+  ///@}
+
+  ///@{
+  /// Integrator (default RUNGE_KUTTA4).
+  vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
+  vtkGetMacro(IntegratorType, int);
+  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
+  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
+  void SetIntegratorTypeToDormandPrince45() { this->SetIntegratorType(DORMAND_PRINCE45); }
+  ///@}
+
+  ///@{
+  /// FORWARD (default), BACKWARD or BOTH.
+  vtkSetClampMacro(IntegrationDirection, int, FORWARD, BOTH);
+  vtkGetMacro(IntegrationDirection, int);
+  void SetIntegrationDirectionToForward() { this->SetIntegrationDirection(FORWARD); }
+  void SetIntegrationDirectionToBackward() { this->SetIntegrationDirection(BACKWARD); }
+  void SetIntegrationDirectionToBoth() { this->SetIntegrationDirection(BOTH); }
+  ///@}
+
+  ///@{
+  /// Step in arc length (fixed for Euler/RK4, initial for DP45). Default 0.01.
+  vtkSetClampMacro(InitialIntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(InitialIntegrationStep, double);
+  ///@}
+
+  ///@{
+  /// Bounds of the adaptive step (DP45). Defaults 1e-7 and 0.5.
+  vtkSetClampMacro(MinimumIntegrationStep, double, 1e-15, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumIntegrationStep, double);
+  vtkSetClampMacro(MaximumIntegrationStep, double, 1e-15, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumIntegrationStep, double);
+  ///@}
+
+  ///@{
+  /// Per-step error tolerance of DP45 (mixed absolute/relative). Default 1e-8.
+  vtkSetClampMacro(MaximumError, double, 1e-15, 1.0);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
+  /// Arc length at which each geodesic stops. Default 10.
+  vtkSetClampMacro(MaximumPropagation, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumPropagation, double);
+  ///@}
+
+  ///@{
+  /// Steps after which each geodesic stops. Default 10000.
+  vtkSetClampMacro(MaximumNumberOfSteps, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Stop geodesics leaving DomainBounds (xmin,xmax,ymin,ymax,zmin,zmax). Off by default.
+  vtkSetMacro(UseDomainBounds, bool);
+  vtkGetMacro(UseDomainBounds, bool);
+  vtkBooleanMacro(UseDomainBounds, bool);
+  vtkSetVector6Macro(DomainBounds, double);
+  vtkGetVector6Macro(DomainBounds, double);
+  ///@}
+
+  /// Include the metric's modification time.
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkRiemannGeodesicTracer();
+  ~vtkRiemannGeodesicTracer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  vtkRiemannMetric* Metric = nullptr;
+  double StartPosition[3] = { 0.0, 0.0, 0.0 };
+  double StartDirection[3] = { 1.0, 0.0, 0.0 };
+  char* DirectionArrayName = nullptr;
+  int IntegratorType = RUNGE_KUTTA4;
+  int IntegrationDirection = FORWARD;
+  double InitialIntegrationStep = 0.01;
+  double MinimumIntegrationStep = 1e-7;
+  double MaximumIntegrationStep = 0.5;
+  double MaximumError = 1e-8;
+  double MaximumPropagation = 10.0;
+  vtkIdType MaximumNumberOfSteps = 10000;
+  bool UseDomainBounds = false;
+  double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
+
+private:
+  vtkRiemannGeodesicTracer(const vtkRiemannGeodesicTracer&) = delete;
+  void operator=(const vtkRiemannGeodesicTracer&) = delete;
+};
+
+#endif

@@ -1,0 +1,30 @@
+# cmake -DDIR=<Common/Metric> -P CheckNoVTKInMetric.cmake
+#
+# Fails when any file under DIR includes a VTK header. Common/Metric is the
+# VTK-free base layer (plain C++17 + Eigen): the VTK classes are thin adapters
+# over it, and this check keeps it usable without VTK.
+if (NOT DEFINED DIR OR NOT IS_DIRECTORY "${DIR}")
+  message(FATAL_ERROR "CheckNoVTKInMetric: pass -DDIR=<folder> (got '${DIR}')")
+endif ()
+
+file(GLOB_RECURSE files LIST_DIRECTORIES false "${DIR}/*")
+list(SORT files)
+set(offenders)
+foreach (file IN LISTS files)
+  # Matches `#include <vtk...>` and `#include "vtk..."`, also `# include`.
+  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]vtk")
+  foreach (line IN LISTS lines)
+    file(RELATIVE_PATH rel "${DIR}" "${file}")
+    string(STRIP "${line}" line)
+    list(APPEND offenders "  ${rel}: ${line}")
+  endforeach ()
+endforeach ()
+
+list(LENGTH files count)
+if (offenders)
+  string(REPLACE ";" "\n" offenders "${offenders}")
+  message(FATAL_ERROR
+    "VTK includes found in ${DIR} (it must stay VTK-free; put VTK code in "
+    "Common/Core or a Filters module):\n${offenders}")
+endif ()
+message(STATUS "CheckNoVTKInMetric: ${count} files under ${DIR}, no VTK includes")

@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# RiemannVTK: one entry point on Debian 12.
+#
+#   ./run.sh [ARGS...]        build, then run the demo (Examples/demo.py ARGS)
+#   ./run.sh demo [ARGS...]   same
+#   ./run.sh test [ARGS...]   build, then run all tests (extra ARGS go to ctest,
+#                             e.g. ./run.sh test -R '^Python\.' -V)
+#   ./run.sh bench [ARGS...]  build, then run build/bin/RiemannBenchmarks
+#                             (ARGS go to google-benchmark, e.g. --benchmark_filter=Gauss)
+#   ./run.sh build            install missing packages, configure, build; nothing else
+#
+# Each run installs missing Debian packages (only when something is missing),
+# configures build/ once (Ninja) and builds incrementally, so a re-run with
+# nothing changed takes a second or two.
+# Environment: RIEMANN_CMAKE_ARGS  extra arguments for the first configure.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+BUILD_DIR="$ROOT/build"
+# Debian's VTK Python bindings exist for this interpreter only (a pyenv or
+# conda `python3` earlier on PATH has no vtkmodules).
+PYTHON=/usr/bin/python3
+# Where vtk_module_wrap_python puts the `riemann` package in the build tree
+# (RIEMANN_PYTHON_DESTINATION in CMakeLists.txt).
+PYTHONPATH_BUILD="$BUILD_DIR/lib/python3/dist-packages"
+XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24")
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config git
+  libvtk9-dev python3-vtk9 vtk9
+  libeigen3-dev libembree-dev libopenimageio-dev openimageio-tools libginac-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  python3-numpy xvfb xauth libgl1-mesa-dri
+  clang libclang-rt-14-dev
+)
+
+log() { printf '[run.sh] %s\n' "$*" >&2; }
+die() { printf '[run.sh] error: %s\n' "$*" >&2; exit 1; }
+
+usage() {
+  sed -n '2,17s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
+}
+
+# --- 1. Debian packages: install only what is missing ------------------------
+install_packages() {
+  local installed missing=() pkg
+  # One dpkg-query for all packages (fast); unknown names just are not listed.
+  installed="$(dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${PACKAGES[@]}" 2>/dev/null \
+    | awk '$2 == "installed" { print $1 }' || true)"
+  for pkg in "${PACKAGES[@]}"; do
+    grep -qxF "$pkg" <<<"$installed" || missing+=("$pkg")
+  done
+  if ((${#missing[@]} == 0)); then
+    log "packages: all ${#PACKAGES[@]} present"
+    return
+  fi
+
+  log "packages: installing ${#missing[@]} missing: ${missing[*]}"
+  local sudo=()
+  if ((EUID != 0)); then
+    command -v sudo >/dev/null || die "not root and no sudo: install ${missing[*]} first"
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# --- 2. Configure once, build incrementally ----------------------------------
+build() {
+  if [[ ! -f "$BUILD_DIR/build.ninja" ]]; then
+    log "configure: $BUILD_DIR (Ninja, Release)"
+    # Word splitting of RIEMANN_CMAKE_ARGS is intended (several -D options).
+    # shellcheck disable=SC2086
+    cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja \
+      -DCMAKE_BUILD_TYPE=Release \
+      -DPython3_EXECUTABLE="$PYTHON" \
+      ${RIEMANN_CMAKE_ARGS:-}
+  fi
+  # Ninja re-runs CMake by itself when a CMakeLists.txt or a globbed test
+  # folder changed, and does nothing when nothing changed.
+  log "build: cmake --build build"
+  cmake --build "$BUILD_DIR"
+}
+
+# --- 3. Modes ----------------------------------------------------------------
+run_demo() {
+  local demo="$ROOT/Examples/demo.py"
+  [[ -f "$demo" ]] || die "no $demo yet"
+  log "demo: $demo --output-dir demo-output $*"
+  cd "$ROOT"
+  "${XVFB[@]}" env \
+    PYTHONPATH="$PYTHONPATH_BUILD${PYTHONPATH:+:$PYTHONPATH}" \
+    RIEMANN_DATA_DIR="$ROOT/Data" \
+    PATH="$BUILD_DIR/bin:$PATH" \
+    "$PYTHON" "$demo" --output-dir demo-output "$@"
+  log "demo: done, see $ROOT/demo-output"
+}
+
+run_tests() {
+  log "test: ctest --test-dir build --output-on-failure -j2 $*"
+  "${XVFB[@]}" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2 "$@"
+}
+
+run_bench() {
+  local bench="$BUILD_DIR/bin/RiemannBenchmarks"
+  [[ -x "$bench" ]] || die "no $bench (no Testing/Benchmarks/Bench*.cxx yet, or libbenchmark-dev missing)"
+  log "bench: $bench $*"
+  "$bench" "$@"
+}
+
+mode="demo"
+if (($# > 0)); then
+  case "$1" in
+    demo | test | bench | build) mode="$1"; shift ;;
+    -h | --help | help) usage; exit 0 ;;
+    # Anything else (e.g. --width 640) is passed on to the demo.
+  esac
+fi
+
+install_packages
+build
+case "$mode" in
+  demo) run_demo "$@" ;;
+  test) run_tests "$@" ;;
+  bench) run_bench "$@" ;;
+  build) log "build: done" ;;
+esac
