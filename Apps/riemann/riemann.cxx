@@ -25,7 +25,9 @@ int main(int argc, char** argv)
   }
   catch (const CLI::ParseError& e)
   {
-    return app.exit(e);
+    // --help and --version exit 0; every usage error exits 2, as in the
+    // subcommands (CLI11's own codes, 100 and up, mean nothing to a shell user).
+    return app.exit(e) == 0 ? 0 : 2;
   }
   catch (const riemann::cli::Failure& e)
   {

@@ -1,0 +1,201 @@
+"""Tests of the `riemann` command-line tool.
+
+Each test runs the real binary. Answers are checked against exact geometry
+(the twist's geodesics are Phi^-1 of straight lines); bad inputs must exit
+non-zero with a message naming the problem and leave no output file.
+Run with --table to print the bad-input table used in the issue notes.
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+EXE = os.environ.get("RIEMANN_EXECUTABLE", "riemann")
+DATA = os.environ.get("RIEMANN_DATA_DIR", os.path.join(os.path.dirname(__file__), "../../../Data"))
+METRICS = os.path.join(DATA, "metrics")
+
+
+def run(*args):
+    """Run riemann; return (exit status, stdout, stderr)."""
+    result = subprocess.run([EXE, *args], capture_output=True, text=True, timeout=60)
+    return result.returncode, result.stdout, result.stderr
+
+
+def twist_exact(p, d, s):
+    """Exact geodesic of the twist metric: Phi^-1(Phi(p) + s J(p) v), v unit speed."""
+    x, y, z = p
+    c, sn = math.cos(z), math.sin(z)
+    phi = (c * x - sn * y, sn * x + c * y, z)
+    # J columns: d/dx, d/dy, d/dz of Phi.
+    jac = [[c, -sn, -sn * x - c * y], [sn, c, c * x - sn * y], [0.0, 0.0, 1.0]]
+    jd = [sum(jac[r][k] * d[k] for k in range(3)) for r in range(3)]
+    speed = math.sqrt(sum(t * t for t in jd))  # |J d| = sqrt(g(d, d))
+    q = [phi[r] + s * jd[r] / speed for r in range(3)]
+    cz, sz = math.cos(-q[2]), math.sin(-q[2])
+    return (cz * q[0] - sz * q[1], sz * q[0] + cz * q[1], q[2])
+
+
+class TraceTests(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def read_csv(self, path):
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        return rows
+
+    def test_trace_twist_csv_matches_exact_geodesic(self):
+        out = os.path.join(self.dir, "twist.csv")
+        status, _, err = run("trace", "--metric", os.path.join(METRICS, "twist.json"),
+                             "--seed", "1,0,-1", "--direction", "0.3,1,0.5", "--length", "5",
+                             "--integrator", "rk4", "--step", "0.01", "-o", out)
+        self.assertEqual(status, 0, err)
+        with open(out) as f:
+            self.assertEqual(f.readline().strip(), "seed_id,step,t,x,y,z,vx,vy,vz")
+        rows = self.read_csv(out)
+        self.assertEqual(len(rows), 501)
+        last = rows[-1]
+        self.assertAlmostEqual(float(last["t"]), 5.0, places=9)
+        exact = twist_exact((1, 0, -1), (0.3, 1, 0.5), 5.0)
+        error = math.dist([float(last[k]) for k in "xyz"], exact)
+        self.assertLess(error, 1e-7)  # RK4 at h = 0.01: measured ~1e-9
+        self.assertEqual([int(r["step"]) for r in rows[:3]], [0, 1, 2])
+
+    def test_trace_dp45_both_directions_vtp(self):
+        out = os.path.join(self.dir, "both.vtp")
+        status, _, err = run("trace", "-m", os.path.join(METRICS, "twist.json"), "--seed", "0.5,0.2,0",
+                             "--direction", "1,0,0", "--length", "2", "--integrator", "dp45",
+                             "--tolerance", "1e-10", "--propagation", "both", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertIn("2 geodesic(s)", err)
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        lines = reader.GetOutput()
+        self.assertEqual(lines.GetNumberOfLines(), 2)
+        for name in ("ArcLength", "Velocity", "SpeedDrift"):
+            self.assertIsNotNone(lines.GetPointData().GetArray(name), name)
+        for name in ("SeedIds", "ReasonForTermination"):
+            self.assertIsNotNone(lines.GetCellData().GetArray(name), name)
+        arc = vtk_to_numpy(lines.GetPointData().GetArray("ArcLength"))
+        self.assertAlmostEqual(arc.min(), -2.0, places=9)
+        self.assertAlmostEqual(arc.max(), 2.0, places=9)
+        # The end of the backward line is the exact point at s = -2.
+        points = vtk_to_numpy(lines.GetPoints().GetData())
+        end = points[arc.argmin()]
+        self.assertLess(math.dist(end, twist_exact((0.5, 0.2, 0), (1, 0, 0), -2.0)), 1e-7)
+
+    def test_trace_seeds_file(self):
+        seeds = os.path.join(self.dir, "seeds.csv")
+        with open(seeds, "w") as f:
+            f.write("x,y,z,dx,dy,dz\n-2,0.1,0,1,0,0\n-2,0.3,0,1,0,0\n\n-2,-0.2,0.1,1,0.1,0\n")
+        out = os.path.join(self.dir, "bundle.csv")
+        status, _, err = run("trace", "-m", os.path.join(METRICS, "gaussian-bump.json"),
+                             "--seeds", seeds, "--length", "4", "-o", out)
+        self.assertEqual(status, 0, err)
+        rows = self.read_csv(out)
+        self.assertEqual(sorted({int(r["seed_id"]) for r in rows}), [0, 1, 2])
+        # Unit speed in g at every sample: g = I + grad f grad f^T for the bump.
+        for r in rows[::50]:
+            x, y, z = (float(r[k]) for k in "xyz")
+            v = [float(r[k]) for k in ("vx", "vy", "vz")]
+            f = math.exp(-(x * x + y * y + z * z) / 0.5)
+            grad = [-4.0 * c * f for c in (x, y, z)]
+            gvv = sum(c * c for c in v) + sum(a * b for a, b in zip(grad, v)) ** 2
+            self.assertAlmostEqual(gvv, 1.0, places=7)
+
+    def test_info_prints_metric_at_point(self):
+        status, out, err = run("info", "-m", os.path.join(METRICS, "gaussian-bump.json"), "-p", "0,0,0")
+        self.assertEqual(status, 0, err)
+        self.assertIn("family:  graph", out)
+        self.assertIn("volume form sqrt(det g): 1", out)
+        status, out, _ = run("info", "-m", os.path.join(METRICS, "paraboloid.json"), "-p", "1,0,0")
+        self.assertEqual(status, 0)
+        # grad f = (2,0,0): g_xx = 5, volume form sqrt(5).
+        self.assertIn("volume form sqrt(det g): 2.236067977", out)
+
+
+# (description, arguments, metric text or None, expected substring of stderr)
+BAD_INPUTS = [
+    ("missing metric file", ["trace", "-m", "/nonexistent.json", "-o", "OUT.csv"], None, "File does not exist"),
+    ("malformed JSON", ["trace", "-m", "METRIC", "-o", "OUT.csv"], '{"type": "graph",\n "gaussians": [}',
+     "invalid JSON: parse error at line 2, column 16"),
+    ("unknown key", ["trace", "-m", "METRIC", "-o", "OUT.csv"], '{"type": "graph", "gausians": []}',
+     'unknown key "gausians"'),
+    ("not a diffeomorphism", ["trace", "-m", "METRIC", "-o", "OUT.csv"],
+     '{"type": "diffeo", "preset": "bump", "gaussian": {"amplitude": 2, "center": [0,0,0], "sigma": 0.5}, "direction": [1,0,0]}',
+     "is not a diffeomorphism"),
+    ("expression (later issue)", ["trace", "-m", "METRIC", "-o", "OUT.csv"], '{"type": "graph", "f": "x^2"}',
+     "not yet supported"),
+    ("seed with two numbers", ["trace", "-m", "METRIC", "--seed", "1,2", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     "--seed: expected three finite comma-separated numbers"),
+    ("NaN in seed", ["trace", "-m", "METRIC", "--seed", "nan,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     "--seed: expected three finite"),
+    ("zero direction", ["trace", "-m", "METRIC", "--direction", "0,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     "must not be zero"),
+    ("unknown integrator", ["trace", "-m", "METRIC", "--integrator", "rk5", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     "rk5 not in {euler,rk4,dp45}"),
+    ("negative length", ["trace", "-m", "METRIC", "--length", "-1", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     "--length"),
+    ("absurd step count", ["trace", "-m", "METRIC", "--max-steps", "99999999999", "-o", "OUT.csv"],
+     '{"type": "euclidean"}', "--max-steps"),
+    ("wrong output extension", ["trace", "-m", "METRIC", "-o", "OUT.txt"], '{"type": "euclidean"}',
+     "must end in .vtp or .csv"),
+    ("unwritable output folder", ["trace", "-m", "METRIC", "-o", "/nonexistent-dir/out.csv"], '{"type": "euclidean"}',
+     "could not write /nonexistent-dir/out.csv"),
+    ("bad number in seeds file", ["trace", "-m", "METRIC", "--seeds", "SEEDS", "-o", "OUT.csv"], '{"type": "euclidean"}',
+     'line 3: "abc" is not a finite number'),
+    ("info at a bad point", ["info", "-m", "METRIC", "-p", "1,2,inf"], '{"type": "euclidean"}',
+     "--point: expected three finite"),
+    ("no subcommand", [], None, "A subcommand is required"),
+]
+
+
+class BadInputTests(unittest.TestCase):
+    def run_bad(self, args, metric_text):
+        with tempfile.TemporaryDirectory() as d:
+            metric = os.path.join(d, "metric.json")
+            if metric_text is not None:
+                with open(metric, "w") as f:
+                    f.write(metric_text)
+            seeds = os.path.join(d, "seeds.csv")
+            with open(seeds, "w") as f:
+                f.write("x,y,z,dx,dy,dz\n0,0,0,1,0,0\n1,abc,0,1,0,0\n")
+            out = os.path.join(d, "out.csv")
+            resolved = [a.replace("METRIC", metric).replace("OUT.csv", out).replace("OUT.txt", out[:-3] + "txt")
+                        .replace("SEEDS", seeds) for a in args]
+            status, _, err = run(*resolved)
+            leftovers = [n for n in os.listdir(d) if n not in ("metric.json", "seeds.csv")]
+            return status, err, leftovers
+
+    def test_bad_inputs(self):
+        for what, args, metric_text, expected in BAD_INPUTS:
+            with self.subTest(what):
+                status, err, leftovers = self.run_bad(args, metric_text)
+                self.assertNotEqual(status, 0, what)
+                self.assertIn(expected, err, what)
+                self.assertEqual(leftovers, [], f"{what}: output files left behind")
+
+
+def print_table():
+    print("| bad input | exit | message |\n|---|---|---|")
+    for what, args, metric_text, _ in BAD_INPUTS:
+        status, err, _ = BadInputTests().run_bad(args, metric_text)
+        message = " ".join(err.strip().splitlines()[:2]).replace("|", "\\|")
+        print(f"| {what} | {status} | {message} |")
+
+
+if __name__ == "__main__":
+    if "--table" in sys.argv:
+        print_table()
+    else:
+        unittest.main()
