@@ -4,8 +4,6 @@
 #include "vtkObjectFactory.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 vtkStandardNewMacro(vtkRiemannMetric);
 
@@ -29,15 +27,18 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
     this->LastError = "no definition given (null)";
     return false;
   }
+  std::shared_ptr<const riemann::Metric> metric;
   try
   {
-    this->Metric = riemann::ParseMetricDefinition(json);
+    metric = riemann::ParseMetricDefinition(json);
   }
   catch (const riemann::MetricDefinitionError& e)
   {
     this->LastError = e.what();
     return false;
   }
+  // Atomic: a filter running on another thread may be copying the pointer.
+  std::atomic_store(&this->Metric, metric);
   this->Definition = json;
   this->LastError.clear();
   this->Modified();
@@ -51,15 +52,17 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
     this->LastError = "no file name given (null)";
     return false;
   }
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
+  std::string text;
+  try
   {
-    this->LastError = std::string(path) + ": cannot open the metric file";
+    text = riemann::ReadMetricDefinitionFile(path);
+  }
+  catch (const riemann::MetricDefinitionError& e)
+  {
+    this->LastError = e.what();
     return false;
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (!this->SetDefinition(text.str().c_str()))
+  if (!this->SetDefinition(text.c_str()))
   {
     this->LastError = std::string(path) + ": " + this->LastError;
     return false;
@@ -67,20 +70,33 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
   return true;
 }
 
+std::shared_ptr<const riemann::Metric> vtkRiemannMetric::GetMetric() const
+{
+  return std::atomic_load(&this->Metric);
+}
+
+bool vtkRiemannMetric::HasDefinition() const
+{
+  return this->GetMetric() != nullptr;
+}
+
 std::string vtkRiemannMetric::GetFamilyName() const
 {
-  return this->Metric ? this->Metric->FamilyName() : std::string();
+  const auto metric = this->GetMetric();
+  return metric ? metric->FamilyName() : std::string();
 }
 
 std::string vtkRiemannMetric::GetDescription() const
 {
-  return this->Metric ? this->Metric->Describe() : std::string();
+  const auto metric = this->GetMetric();
+  return metric ? metric->Describe() : std::string();
 }
 
 bool vtkRiemannMetric::EvaluateMetricTensor(const double p[3], double g[9])
 {
   riemann::Mat3 m;
-  if (!this->Metric || !this->Metric->Tensor(riemann::Vec3(p[0], p[1], p[2]), m))
+  const auto metric = this->GetMetric();
+  if (!metric || !metric->Tensor(riemann::Vec3(p[0], p[1], p[2]), m))
   {
     return false;
   }
@@ -91,7 +107,8 @@ bool vtkRiemannMetric::EvaluateMetricTensor(const double p[3], double g[9])
 bool vtkRiemannMetric::EvaluateInverseMetricTensor(const double p[3], double inverse[9])
 {
   riemann::Mat3 m;
-  if (!this->Metric || !this->Metric->InverseTensor(riemann::Vec3(p[0], p[1], p[2]), m))
+  const auto metric = this->GetMetric();
+  if (!metric || !metric->InverseTensor(riemann::Vec3(p[0], p[1], p[2]), m))
   {
     return false;
   }
@@ -102,7 +119,8 @@ bool vtkRiemannMetric::EvaluateInverseMetricTensor(const double p[3], double inv
 bool vtkRiemannMetric::EvaluateChristoffelSymbols(const double p[3], double gamma[27])
 {
   riemann::Mat3Stack symbols;
-  if (!this->Metric || !this->Metric->Christoffel(riemann::Vec3(p[0], p[1], p[2]), symbols))
+  const auto metric = this->GetMetric();
+  if (!metric || !metric->Christoffel(riemann::Vec3(p[0], p[1], p[2]), symbols))
   {
     return false;
   }
@@ -115,7 +133,8 @@ bool vtkRiemannMetric::EvaluateChristoffelSymbols(const double p[3], double gamm
 
 double vtkRiemannMetric::EvaluateVolumeForm(const double p[3])
 {
-  return this->Metric ? this->Metric->VolumeForm(riemann::Vec3(p[0], p[1], p[2])) : std::nan("");
+  const auto metric = this->GetMetric();
+  return metric ? metric->VolumeForm(riemann::Vec3(p[0], p[1], p[2])) : std::nan("");
 }
 
 void vtkRiemannMetric::PrintSelf(ostream& os, vtkIndent indent)

@@ -26,7 +26,7 @@
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
-#include <memory> // For std::shared_ptr
+#include <memory> // For std::shared_ptr, std::atomic_load
 #include <string> // For std::string
 
 namespace riemann
@@ -58,7 +58,7 @@ public:
   const char* GetLastError() const { return this->LastError.c_str(); }
 
   /// True once a valid definition is set.
-  bool HasDefinition() const { return this->Metric != nullptr; }
+  bool HasDefinition() const;
 
   /// "graph", "diffeo", "conformal", "tensor", "euclidean", or "" when none.
   std::string GetFamilyName() const;
@@ -82,9 +82,10 @@ public:
 
   /**
    * The core metric, shared and immutable: filters hold it for the duration
-   * of a computation so a concurrent SetDefinition cannot pull it away.
+   * of a computation so a concurrent SetDefinition cannot pull it away (the
+   * pointer is loaded and stored atomically).
    */
-  VTK_WRAPEXCLUDE std::shared_ptr<const riemann::Metric> GetMetric() const { return this->Metric; }
+  VTK_WRAPEXCLUDE std::shared_ptr<const riemann::Metric> GetMetric() const;
 
 protected:
   vtkRiemannMetric();

@@ -68,7 +68,15 @@ void CheckKeys(const Json& object, const std::string& path, std::initializer_lis
   for (const auto& item : object.items())
   {
     const std::string& key = item.key();
-    bool known = key == "name" || key == "description";
+    if (key == "name" || key == "description")
+    {
+      if (!item.value().is_string())
+      {
+        Fail(path + "." + key, "expected a string, got " + Describe(item.value()));
+      }
+      continue;
+    }
+    bool known = false;
     for (const char* a : allowed)
     {
       known = known || key == a;
@@ -383,7 +391,7 @@ std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json)
   return metric;
 }
 
-std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path)
+std::string ReadMetricDefinitionFile(const std::string& path)
 {
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file)
@@ -397,9 +405,15 @@ std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path)
   file.seekg(0);
   std::ostringstream text;
   text << file.rdbuf();
+  return text.str();
+}
+
+std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path)
+{
+  const std::string text = ReadMetricDefinitionFile(path);
   try
   {
-    return ParseMetricDefinition(text.str());
+    return ParseMetricDefinition(text);
   }
   catch (const MetricDefinitionError& e)
   {

@@ -52,6 +52,9 @@ public:
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
   const std::string& json);
 
+/// The text of a metric file (refusing unreadable or absurdly large files).
+RIEMANNCOMMONMETRIC_EXPORT std::string ReadMetricDefinitionFile(const std::string& path);
+
 /// Read a file and ParseMetricDefinition() it; the message names the file.
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> LoadMetricDefinitionFile(
   const std::string& path);

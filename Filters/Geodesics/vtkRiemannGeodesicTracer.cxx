@@ -25,9 +25,10 @@ vtkStandardNewMacro(vtkRiemannGeodesicTracer);
 vtkCxxSetObjectMacro(vtkRiemannGeodesicTracer, Metric, vtkRiemannMetric);
 
 // The public enums mirror the core's numbering, which is part of the file formats.
-static_assert(vtkRiemannGeodesicTracer::DEGENERATE_METRIC == riemann::DegenerateMetric &&
-    vtkRiemannGeodesicTracer::HIT_SURFACE == riemann::HitSurface &&
-    vtkRiemannGeodesicTracer::OUT_OF_LENGTH == riemann::OutOfLength,
+static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
+      static_cast<int>(riemann::DegenerateMetric) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::HIT_SURFACE) == static_cast<int>(riemann::HitSurface) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) == static_cast<int>(riemann::OutOfLength),
   "termination codes must match the core");
 static_assert(vtkRiemannGeodesicTracer::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),
@@ -180,14 +181,17 @@ int vtkRiemannGeodesicTracer::RequestData(
     this->UpdateProgress(static_cast<double>(traced) / count);
   }
 
-  // Assemble the polylines in seed order.
+  // Assemble the polylines in seed order. A path of one point (a seed outside
+  // DomainBounds, a zero length or step budget) makes no line; say so.
   vtkIdType pointCount = 0;
   vtkIdType lineCount = 0;
   vtkIdType unstarted = 0;
+  vtkIdType stillborn = 0;
   for (vtkIdType i = 0; i < traced; ++i)
   {
     const size_t n = paths[i].Points.size();
     unstarted += n == 0 ? 1 : 0;
+    stillborn += n == 1 ? 1 : 0;
     if (n >= 2)
     {
       pointCount += static_cast<vtkIdType>(n);
@@ -196,9 +200,15 @@ int vtkRiemannGeodesicTracer::RequestData(
   }
   if (unstarted > 0)
   {
-    vtkWarningMacro(<< unstarted << " of " << count
+    vtkWarningMacro(<< unstarted << " of " << traced
                     << " geodesics could not start: zero or non-finite direction, or a "
                        "degenerate metric at the seed.");
+  }
+  if (stillborn > 0)
+  {
+    vtkWarningMacro(<< stillborn << " of " << traced
+                    << " geodesics made no step: seed outside DomainBounds, or "
+                       "MaximumPropagation or MaximumNumberOfSteps is 0.");
   }
 
   vtkNew<vtkPoints> points;
@@ -276,4 +286,7 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "UseDomainBounds: " << this->UseDomainBounds << "\n";
+  os << indent << "DomainBounds: " << this->DomainBounds[0] << " " << this->DomainBounds[1] << " "
+     << this->DomainBounds[2] << " " << this->DomainBounds[3] << " " << this->DomainBounds[4] << " "
+     << this->DomainBounds[5] << "\n";
 }

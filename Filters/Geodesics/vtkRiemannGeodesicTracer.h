@@ -21,7 +21,8 @@
  *   where the metric degenerates.
  *
  * Output: one polyline per seed and direction with point data `ArcLength`,
- * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1: the integration error monitor)
+ * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1 for the unit-speed velocity:
+ * exactly 0 for an exact geodesic, so it monitors the integration error)
  * and cell data `SeedIds` and `ReasonForTermination` (vtkStreamTracer's codes
  * plus DEGENERATE_METRIC and HIT_SURFACE).
  *
