@@ -140,7 +140,8 @@ double vtkRiemannMetric::EvaluateVolumeForm(const double p[3])
 void vtkRiemannMetric::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Definition: " << (this->Definition.empty() ? "(none)" : this->Definition) << "\n";
+  os << indent << "Definition: " << (this->Definition.empty() ? "(none)" : this->Definition)
+     << "\n";
   os << indent << "Family: " << this->GetFamilyName() << "\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }

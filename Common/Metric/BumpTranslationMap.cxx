@@ -16,8 +16,8 @@ BumpTranslationMap::BumpTranslationMap(std::shared_ptr<const ScalarField> f, con
 {
 }
 
-BumpTranslationMap::BumpTranslationMap(std::shared_ptr<const ScalarField> f, const Mat3& matrix,
-  const Vec3& center, const Vec3& offset)
+BumpTranslationMap::BumpTranslationMap(
+  std::shared_ptr<const ScalarField> f, const Mat3& matrix, const Vec3& center, const Vec3& offset)
   : Field(std::move(f))
   , Matrix(matrix)
   , Center(center)
@@ -66,8 +66,8 @@ void BumpTranslationMap::Evaluate(const Vec3& p, int order, VectorJet& jet) cons
           {
             for (int k = 0; k < 3; ++k)
             {
-              jet.Third[s][i](j, k) += f.Hessian(i, j) * a(s, k) + f.Hessian(i, k) * a(s, j) +
-                f.Hessian(j, k) * a(s, i);
+              jet.Third[s][i](j, k) +=
+                f.Hessian(i, j) * a(s, k) + f.Hessian(i, k) * a(s, j) + f.Hessian(j, k) * a(s, i);
             }
           }
         }

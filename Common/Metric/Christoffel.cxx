@@ -2,7 +2,8 @@
 
 namespace riemann
 {
-void ChristoffelFromMetricDerivatives(const Mat3& inverseMetric, const Mat3Stack& dg, Mat3Stack& gamma)
+void ChristoffelFromMetricDerivatives(
+  const Mat3& inverseMetric, const Mat3Stack& dg, Mat3Stack& gamma)
 {
   // Christoffel symbols of the first kind, lowered[k](i, j) = Gamma_kij.
   Mat3Stack lowered;

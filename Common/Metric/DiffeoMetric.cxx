@@ -61,8 +61,8 @@ bool DiffeoMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
   const Mat3 inverse = jet.Jacobian.inverse();
   for (int m = 0; m < 3; ++m)
   {
-    gamma[m] =
-      inverse(m, 0) * jet.Hessian[0] + inverse(m, 1) * jet.Hessian[1] + inverse(m, 2) * jet.Hessian[2];
+    gamma[m] = inverse(m, 0) * jet.Hessian[0] + inverse(m, 1) * jet.Hessian[1] +
+      inverse(m, 2) * jet.Hessian[2];
   }
   return gamma[0].allFinite() && gamma[1].allFinite() && gamma[2].allFinite();
 }

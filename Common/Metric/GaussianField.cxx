@@ -13,7 +13,7 @@ GaussianField::GaussianField(double amplitude, const Vec3& center, const Vec3& s
 {
 }
 
-void GaussianField::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
+void GaussianField::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
 {
   // With w_i = 1/s_i^2 and u_i = w_i (p_i - c_i):
   //   d_i f = -u_i f
@@ -22,14 +22,14 @@ void GaussianField::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
   const Vec3 d = p - this->Center;
   const Vec3 u = this->InverseVariance.cwiseProduct(d);
   const double f = this->Amplitude * std::exp(-0.5 * d.dot(u));
-  jet.Value = f;
+  jet.Value += f;
   if (order >= FirstDerivatives)
   {
-    jet.Gradient = -f * u;
+    jet.Gradient.noalias() -= f * u;
   }
   if (order >= SecondDerivatives)
   {
-    jet.Hessian = f * (u * u.transpose());
+    jet.Hessian.noalias() += (f * u) * u.transpose();
     jet.Hessian.diagonal() -= f * this->InverseVariance;
   }
   if (order >= ThirdDerivatives)
@@ -54,7 +54,7 @@ void GaussianField::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
           {
             t += w[j] * u[i];
           }
-          jet.Third[i](j, k) = f * t;
+          jet.Third[i](j, k) += f * t;
         }
       }
     }

@@ -16,7 +16,7 @@ public:
   /// `sigma` must be positive in every component (checked by the JSON parser).
   GaussianField(double amplitude, const Vec3& center, const Vec3& sigma);
 
-  void Evaluate(const Vec3& p, int order, ScalarJet& jet) const override;
+  void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
   /// A 17^3 grid over center +- 4 sigma (spacing sigma/2 resolves the bump).
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

@@ -82,7 +82,8 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
   Vec6 y;
   y << p, sign * v;
   double tau = 0.0;
-  auto record = [&](double drift) {
+  auto record = [&](double drift)
+  {
     path.Points.push_back(y.head<3>());
     path.Velocities.push_back(y.tail<3>() * (sign / speed));
     path.ArcLength.push_back(sign * speed * tau);

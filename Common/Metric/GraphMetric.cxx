@@ -60,8 +60,8 @@ bool GraphMetric::InverseTensor(const Vec3& p, Mat3& inverse) const
 {
   ScalarJet f;
   this->Field->Evaluate(p, FirstDerivatives, f);
-  inverse = Mat3::Identity() -
-    (f.Gradient * f.Gradient.transpose()) / (1.0 + f.Gradient.squaredNorm());
+  inverse =
+    Mat3::Identity() - (f.Gradient * f.Gradient.transpose()) / (1.0 + f.Gradient.squaredNorm());
   return inverse.allFinite();
 }
 

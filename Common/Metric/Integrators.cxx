@@ -109,8 +109,8 @@ DormandPrince45::StepStatus DormandPrince45::Step(
       {
         const Vec6 estimate = step * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
         // RMS of the error scaled by a mixed absolute/relative tolerance (Hairer).
-        const Vec6 scale =
-          Vec6::Constant(this->Tolerance) + this->Tolerance * y.cwiseAbs().cwiseMax(next.cwiseAbs());
+        const Vec6 scale = Vec6::Constant(this->Tolerance) +
+          this->Tolerance * y.cwiseAbs().cwiseMax(next.cwiseAbs());
         error = std::sqrt(estimate.cwiseQuotient(scale).squaredNorm() / 6.0);
       }
     }
@@ -121,7 +121,8 @@ DormandPrince45::StepStatus DormandPrince45::Step(
       this->CachedDerivative = k7;
       taken = step;
       // Grow at most 5x, shrink at most 5x, with the usual 0.9 safety factor.
-      const double factor = error > 0 ? std::min(5.0, std::max(0.2, 0.9 * std::pow(error, -0.2))) : 5.0;
+      const double factor =
+        error > 0 ? std::min(5.0, std::max(0.2, 0.9 * std::pow(error, -0.2))) : 5.0;
       if (!lastStep || factor < 1.0)
       {
         h = std::min(std::max(step * factor, this->MinimumStep), this->MaximumStep);

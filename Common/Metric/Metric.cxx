@@ -87,7 +87,9 @@ std::string Metric::Validate() const
       if (g.allFinite())
       {
         s << ": eigenvalues of g are ("
-          << Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues().transpose()
+          << Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly)
+               .eigenvalues()
+               .transpose()
           << ")";
       }
       return s.str();

@@ -59,7 +59,8 @@ bool IsExpressionKey(const std::string& key)
 }
 
 /// Refuse keys outside `allowed` (plus "name" and "description").
-void CheckKeys(const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+void CheckKeys(
+  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
 {
   if (!object.is_object())
   {
@@ -96,8 +97,8 @@ void CheckKeys(const Json& object, const std::string& path, std::initializer_lis
     {
       expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
     }
-    Fail(path, "unknown key \"" + key + "\"; expected one of " + expected +
-        ", \"name\", \"description\"");
+    Fail(path,
+      "unknown key \"" + key + "\"; expected one of " + expected + ", \"name\", \"description\"");
   }
 }
 
@@ -126,8 +127,8 @@ Vec3 Vector(const Json& value, const std::string& path)
   {
     Fail(path, "expected an array of 3 numbers, got " + Describe(value));
   }
-  return Vec3(Number(value[0], path + "[0]"), Number(value[1], path + "[1]"),
-    Number(value[2], path + "[2]"));
+  return Vec3(
+    Number(value[0], path + "[0]"), Number(value[1], path + "[1]"), Number(value[2], path + "[2]"));
 }
 
 Mat3 Matrix(const Json& value, const std::string& path)
@@ -159,9 +160,8 @@ std::shared_ptr<const ScalarField> Gaussian(const Json& object, const std::strin
   const double amplitude = Number(Required(object, "amplitude", path), path + ".amplitude");
   const Vec3 center = Vector(Required(object, "center", path), path + ".center");
   const Json& sigmaValue = Required(object, "sigma", path);
-  const Vec3 sigma = sigmaValue.is_number()
-    ? Vec3::Constant(Number(sigmaValue, path + ".sigma"))
-    : Vector(sigmaValue, path + ".sigma");
+  const Vec3 sigma = sigmaValue.is_number() ? Vec3::Constant(Number(sigmaValue, path + ".sigma"))
+                                            : Vector(sigmaValue, path + ".sigma");
   if (!(sigma.minCoeff() > 0))
   {
     Fail(path + ".sigma", "every spread must be positive");
@@ -185,8 +185,8 @@ std::shared_ptr<const ScalarField> Quadratic(const Json& object, const std::stri
   {
     matrix = Vector(object.at("diagonal"), path + ".diagonal").asDiagonal();
   }
-  const Vec3 linear = object.contains("linear") ? Vector(object.at("linear"), path + ".linear")
-                                                : Vec3::Zero();
+  const Vec3 linear =
+    object.contains("linear") ? Vector(object.at("linear"), path + ".linear") : Vec3::Zero();
   return std::make_shared<QuadraticField>(matrix, linear, NumberOr(object, "constant", path, 0.0));
 }
 
@@ -204,8 +204,9 @@ std::shared_ptr<const ScalarField> ScalarTerms(
     }
     if (list.size() > MaximumTerms)
     {
-      Fail(path + ".gaussians", "too many terms (" + std::to_string(list.size()) + " > " +
-          std::to_string(MaximumTerms) + ")");
+      Fail(path + ".gaussians",
+        "too many terms (" + std::to_string(list.size()) + " > " + std::to_string(MaximumTerms) +
+          ")");
     }
     for (size_t i = 0; i < list.size(); ++i)
     {
@@ -229,7 +230,8 @@ std::shared_ptr<const ScalarField> ScalarTerms(
   }
   if (terms.empty() && !object.contains("constant"))
   {
-    Fail(path, std::string("the ") + what +
+    Fail(path,
+      std::string("the ") + what +
         " needs at least one of \"gaussians\", \"quadratic\" or \"constant\"");
   }
   return std::make_shared<ScalarFieldSum>(
@@ -257,7 +259,8 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
     const Json& list = object.at("compose");
     if (!list.is_array() || list.empty())
     {
-      Fail(path + ".compose", "expected a non-empty array of diffeomorphisms, got " + Describe(list));
+      Fail(
+        path + ".compose", "expected a non-empty array of diffeomorphisms, got " + Describe(list));
     }
     if (list.size() > MaximumTerms)
     {
@@ -266,7 +269,8 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
     std::vector<std::shared_ptr<const SpaceMap>> maps;
     for (size_t i = 0; i < list.size(); ++i)
     {
-      maps.push_back(Diffeomorphism(list[i], path + ".compose[" + std::to_string(i) + "]", depth + 1));
+      maps.push_back(
+        Diffeomorphism(list[i], path + ".compose[" + std::to_string(i) + "]", depth + 1));
     }
     return std::make_shared<MapComposition>(std::move(maps));
   }
@@ -295,8 +299,9 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
     auto f = Gaussian(Required(object, "gaussian", path), path + ".gaussian");
     if (object.contains("direction") == object.contains("field"))
     {
-      Fail(path, "a bump needs exactly one of \"direction\" (p + f(p) v) or \"field\" "
-                 "(p + f(p) (A (p - c) + b))");
+      Fail(path,
+        "a bump needs exactly one of \"direction\" (p + f(p) v) or \"field\" "
+        "(p + f(p) (A (p - c) + b))");
     }
     if (object.contains("direction"))
     {
@@ -313,7 +318,9 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
       field.contains("offset") ? Vector(field.at("offset"), fieldPath + ".offset") : Vec3::Zero();
     return std::make_shared<BumpTranslationMap>(f, matrix, center, offset);
   }
-  Fail(path + ".preset", "unknown preset " + (preset.is_string() ? preset.dump() : Describe(preset)) + "; expected \"twist\", \"bump\" or \"identity\"");
+  Fail(path + ".preset",
+    "unknown preset " + (preset.is_string() ? preset.dump() : Describe(preset)) +
+      "; expected \"twist\", \"bump\" or \"identity\"");
 }
 
 std::shared_ptr<const Metric> Build(const Json& root)
@@ -358,7 +365,8 @@ std::shared_ptr<const Metric> Build(const Json& root)
     }
     return std::make_shared<TensorMetric>(std::make_shared<ConstantTensorField>(matrix));
   }
-  Fail(path + ".type", "unknown metric type \"" + type +
+  Fail(path + ".type",
+    "unknown metric type \"" + type +
       "\"; expected \"graph\", \"diffeo\", \"conformal\", \"tensor\" or \"euclidean\"");
 }
 } // namespace

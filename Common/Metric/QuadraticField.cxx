@@ -11,24 +11,18 @@ QuadraticField::QuadraticField(const Mat3& matrix, const Vec3& linear, double co
 {
 }
 
-void QuadraticField::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
+void QuadraticField::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
 {
+  // The third derivatives are zero: nothing to add at that order.
   const Vec3 ap = this->Matrix * p;
-  jet.Value = p.dot(ap) + this->Linear.dot(p) + this->Constant;
+  jet.Value += p.dot(ap) + this->Linear.dot(p) + this->Constant;
   if (order >= FirstDerivatives)
   {
-    jet.Gradient = 2.0 * ap + this->Linear;
+    jet.Gradient += 2.0 * ap + this->Linear;
   }
   if (order >= SecondDerivatives)
   {
-    jet.Hessian = 2.0 * this->Matrix;
-  }
-  if (order >= ThirdDerivatives)
-  {
-    for (Mat3& m : jet.Third)
-    {
-      m.setZero();
-    }
+    jet.Hessian += 2.0 * this->Matrix;
   }
 }
 

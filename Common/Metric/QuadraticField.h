@@ -15,7 +15,7 @@ class RIEMANNCOMMONMETRIC_EXPORT QuadraticField : public ScalarField
 public:
   QuadraticField(const Mat3& matrix, const Vec3& linear, double constant);
 
-  void Evaluate(const Vec3& p, int order, ScalarJet& jet) const override;
+  void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
   /// A 9^3 grid over [-4, 4]^3: a quadratic has no localized feature.
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

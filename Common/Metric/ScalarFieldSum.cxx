@@ -4,36 +4,19 @@
 
 namespace riemann
 {
-ScalarFieldSum::ScalarFieldSum(double constant, std::vector<std::shared_ptr<const ScalarField>> terms)
+ScalarFieldSum::ScalarFieldSum(
+  double constant, std::vector<std::shared_ptr<const ScalarField>> terms)
   : Constant(constant)
   , Terms(std::move(terms))
 {
 }
 
-void ScalarFieldSum::Evaluate(const Vec3& p, int order, ScalarJet& jet) const
+void ScalarFieldSum::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
 {
-  jet.SetZero(order);
-  jet.Value = this->Constant;
-  ScalarJet term;
+  jet.Value += this->Constant;
   for (const auto& field : this->Terms)
   {
-    field->Evaluate(p, order, term);
-    jet.Value += term.Value;
-    if (order >= FirstDerivatives)
-    {
-      jet.Gradient += term.Gradient;
-    }
-    if (order >= SecondDerivatives)
-    {
-      jet.Hessian += term.Hessian;
-    }
-    if (order >= ThirdDerivatives)
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        jet.Third[i] += term.Third[i];
-      }
-    }
+    field->Accumulate(p, order, jet);
   }
 }
 

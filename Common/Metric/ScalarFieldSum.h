@@ -17,7 +17,7 @@ class RIEMANNCOMMONMETRIC_EXPORT ScalarFieldSum : public ScalarField
 public:
   ScalarFieldSum(double constant, std::vector<std::shared_ptr<const ScalarField>> terms);
 
-  void Evaluate(const Vec3& p, int order, ScalarJet& jet) const override;
+  void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 

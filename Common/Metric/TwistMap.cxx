@@ -21,7 +21,8 @@ void TwistMap::Evaluate(const Vec3& p, int order, VectorJet& jet) const
   // rotated(n, w) = k^n R(angle + n pi/2) w, using R(a + pi/2) w = R(a) (-w_y, w_x).
   const double c = std::cos(angle);
   const double s = std::sin(angle);
-  auto rotated = [&](int n, double wx, double wy, double& ox, double& oy) {
+  auto rotated = [&](int n, double wx, double wy, double& ox, double& oy)
+  {
     double scale = 1.0;
     for (int i = 0; i < n; ++i)
     {
@@ -35,7 +36,8 @@ void TwistMap::Evaluate(const Vec3& p, int order, VectorJet& jet) const
   };
   // derivative(counts) fills the (x, y) components of the mixed partial with
   // nx x-derivatives, ny y-derivatives and nz z-derivatives.
-  auto derivative = [&](int nx, int ny, int nz, double& ox, double& oy) {
+  auto derivative = [&](int nx, int ny, int nz, double& ox, double& oy)
+  {
     if (nx + ny >= 2)
     {
       ox = oy = 0.0;
@@ -53,7 +55,8 @@ void TwistMap::Evaluate(const Vec3& p, int order, VectorJet& jet) const
       rotated(nz, p[0], p[1], ox, oy);
     }
   };
-  auto counts = [](std::initializer_list<int> indices, int& nx, int& ny, int& nz) {
+  auto counts = [](std::initializer_list<int> indices, int& nx, int& ny, int& nz)
+  {
     nx = ny = nz = 0;
     for (int i : indices)
     {

@@ -96,19 +96,19 @@ struct Seed
  * (u = w (x - c), w = 1 / sigma^2). No finiteness checks: f is smooth and
  * bounded, so nothing can become degenerate on this metric.
  */
-inline void HandFlow(const PlainBumps& b, const double y[6], double dy[6])
+inline void HandFlow(const PlainBumps& b, const double y[6], double flow[6])
 {
   double gx = 0, gy = 0, gz = 0;
   double hxx = 0, hyy = 0, hzz = 0, hxy = 0, hxz = 0, hyz = 0;
   for (int k = 0; k < BumpCount; ++k)
   {
     const double dx = y[0] - b.Center[0][k];
-    const double dy_ = y[1] - b.Center[1][k];
+    const double dy = y[1] - b.Center[1][k];
     const double dz = y[2] - b.Center[2][k];
     const double ux = b.InverseVariance[0][k] * dx;
-    const double uy = b.InverseVariance[1][k] * dy_;
+    const double uy = b.InverseVariance[1][k] * dy;
     const double uz = b.InverseVariance[2][k] * dz;
-    const double f = b.Amplitude[k] * std::exp(-0.5 * (dx * ux + dy_ * uy + dz * uz));
+    const double f = b.Amplitude[k] * std::exp(-0.5 * (dx * ux + dy * uy + dz * uz));
     gx -= f * ux;
     gy -= f * uy;
     gz -= f * uz;
@@ -124,12 +124,12 @@ inline void HandFlow(const PlainBumps& b, const double y[6], double dy[6])
   const double vHv = hxx * vx * vx + hyy * vy * vy + hzz * vz * vz +
     2.0 * (hxy * vx * vy + hxz * vx * vz + hyz * vy * vz);
   const double s = -vHv / (1.0 + gx * gx + gy * gy + gz * gz);
-  dy[0] = vx;
-  dy[1] = vy;
-  dy[2] = vz;
-  dy[3] = s * gx;
-  dy[4] = s * gy;
-  dy[5] = s * gz;
+  flow[0] = vx;
+  flow[1] = vy;
+  flow[2] = vz;
+  flow[3] = s * gx;
+  flow[4] = s * gy;
+  flow[5] = s * gz;
 }
 
 /**

@@ -98,10 +98,12 @@ inline std::vector<std::pair<std::string, std::shared_ptr<const SpaceMap>>> MapP
 {
   return { { "twist", std::make_shared<TwistMap>(1.0) },
     { "twist rate 0.7", std::make_shared<TwistMap>(0.7) },
-    { "bump direction", std::make_shared<BumpTranslationMap>(AnisotropicGaussian(), Vec3(0.2, 0.3, -0.1)) },
+    { "bump direction",
+      std::make_shared<BumpTranslationMap>(AnisotropicGaussian(), Vec3(0.2, 0.3, -0.1)) },
     { "bump field", LocalTwistBump() }, { "two-bump composition", TwoBumpComposition() },
-    { "twist o bump", std::make_shared<MapComposition>(std::vector<std::shared_ptr<const SpaceMap>>{
-                        std::make_shared<TwistMap>(0.8), LocalTwistBump() }) } };
+    { "twist o bump",
+      std::make_shared<MapComposition>(std::vector<std::shared_ptr<const SpaceMap>>{
+        std::make_shared<TwistMap>(0.8), LocalTwistBump() }) } };
 }
 
 /// A tensor field that forwards to another metric's g and dg: lets the general
@@ -152,11 +154,11 @@ inline std::vector<std::pair<std::string, std::shared_ptr<const Metric>>> Metric
   metrics.emplace_back("euclidean", std::make_shared<EuclideanMetric>());
   Mat3 constant;
   constant << 2.0, 0.3, 0.1, 0.3, 1.5, -0.2, 0.1, -0.2, 1.0;
-  metrics.emplace_back(
-    "tensor constant", std::make_shared<TensorMetric>(std::make_shared<ConstantTensorField>(constant)));
+  metrics.emplace_back("tensor constant",
+    std::make_shared<TensorMetric>(std::make_shared<ConstantTensorField>(constant)));
   metrics.emplace_back("tensor forwarding graph",
-    std::make_shared<TensorMetric>(std::make_shared<ForwardingTensorField>(
-      std::make_shared<GraphMetric>(MixedSum()))));
+    std::make_shared<TensorMetric>(
+      std::make_shared<ForwardingTensorField>(std::make_shared<GraphMetric>(MixedSum()))));
   return metrics;
 }
 } // namespace testing

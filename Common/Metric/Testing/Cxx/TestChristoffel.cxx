@@ -82,7 +82,8 @@ TEST(Christoffel, AccelerationInverseAndVolumeFormAgree)
       ASSERT_TRUE(metric->Tensor(p, g)) << name;
       ASSERT_TRUE(metric->InverseTensor(p, inverse)) << name;
       EXPECT_LT((g * inverse - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12) << name;
-      EXPECT_NEAR(metric->VolumeForm(p), std::sqrt(g.determinant()), 1e-10 * std::sqrt(g.determinant()))
+      EXPECT_NEAR(
+        metric->VolumeForm(p), std::sqrt(g.determinant()), 1e-10 * std::sqrt(g.determinant()))
         << name;
       EXPECT_NEAR(metric->InnerProduct(p, v, v), v.dot(g * v), 1e-12 * (1 + v.dot(g * v))) << name;
     }

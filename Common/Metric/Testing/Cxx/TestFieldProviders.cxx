@@ -75,7 +75,8 @@ TEST(FieldProviders, MapDerivativesMatchFiniteDifferences)
           EXPECT_NEAR(jet.Jacobian(s, i), dValue, Tolerance * Scale(dValue)) << name;
           for (int j = 0; j < 3; ++j)
           {
-            const double dJacobian = (plus.Jacobian(s, j) - minus.Jacobian(s, j)) / (2 * FiniteStep);
+            const double dJacobian =
+              (plus.Jacobian(s, j) - minus.Jacobian(s, j)) / (2 * FiniteStep);
             EXPECT_NEAR(jet.Hessian[s](i, j), dJacobian, Tolerance * Scale(dJacobian))
               << name << " Hessian s=" << s << " " << i << j;
             for (int k = 0; k < 3; ++k)
@@ -126,8 +127,7 @@ TEST(FieldProviders, GaussianMatchesThePaperFormula)
   ScalarJet jet;
   const Vec3 p(1.5, 1.0, 5.0);
   f.Evaluate(p, ValueOnly, jet);
-  const double expected = 2.0 *
-    std::exp(-0.25 / (2 * 0.25) - 1.0 / (2 * 1.0) - 4.0 / (2 * 4.0));
+  const double expected = 2.0 * std::exp(-0.25 / (2 * 0.25) - 1.0 / (2 * 1.0) - 4.0 / (2 * 4.0));
   EXPECT_NEAR(jet.Value, expected, 1e-15);
 }
 

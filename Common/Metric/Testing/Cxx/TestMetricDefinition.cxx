@@ -84,13 +84,17 @@ TEST(MetricDefinition, RefusesBadInputWithAClearMessage)
     { "expression (later issue)", R"({"type": "graph", "f": "x^2"})", "not yet supported" },
     { "expression phi", R"({"type": "diffeo", "phi": ["x","y","z"]})", "not yet supported" },
     { "empty graph", R"({"type": "graph"})", "needs at least one of" },
-    { "center of 2", R"({"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0], "sigma": 1}]})",
+    { "center of 2",
+      R"({"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0], "sigma": 1}]})",
       "metric.gaussians[0].center: expected an array of 3 numbers, got an array of 2" },
-    { "string for number", R"({"type": "graph", "gaussians": [{"amplitude": "big", "center": [0,0,0], "sigma": 1}]})",
+    { "string for number",
+      R"({"type": "graph", "gaussians": [{"amplitude": "big", "center": [0,0,0], "sigma": 1}]})",
       "metric.gaussians[0].amplitude: expected a number, got the string \"big\"" },
-    { "negative sigma", R"({"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0,0], "sigma": [1,-1,1]}]})",
+    { "negative sigma",
+      R"({"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0,0], "sigma": [1,-1,1]}]})",
       "metric.gaussians[0].sigma: every spread must be positive" },
-    { "overflowing number", R"({"type": "diffeo", "preset": "twist", "rate": 1e999})", "number overflow" },
+    { "overflowing number", R"({"type": "diffeo", "preset": "twist", "rate": 1e999})",
+      "number overflow" },
     { "bump not a diffeomorphism",
       R"({"type": "diffeo", "preset": "bump", "gaussian": {"amplitude": 2, "center": [0,0,0], "sigma": 0.5}, "direction": [1,0,0]})",
       "is not a diffeomorphism: 1 + grad f . v" },
@@ -110,7 +114,8 @@ TEST(MetricDefinition, RefusesBadInputWithAClearMessage)
     { "conformal index not positive",
       R"({"type": "conformal", "constant": 1, "gaussians": [{"amplitude": -2, "center": [0,0,0], "sigma": 1}]})",
       "must be positive everywhere" },
-    { "tensor not symmetric", R"({"type": "tensor", "matrix": [[1,2,0],[0,1,0],[0,0,1]]})", "symmetric" },
+    { "tensor not symmetric", R"({"type": "tensor", "matrix": [[1,2,0],[0,1,0],[0,0,1]]})",
+      "symmetric" },
     { "tensor not positive definite", R"({"type": "tensor", "matrix": [[1,0,0],[0,-1,0],[0,0,1]]})",
       "not positive definite" },
     { "matrix of wrong shape", R"({"type": "tensor", "matrix": [[1,0,0],[0,1,0]]})",
@@ -144,7 +149,8 @@ TEST(MetricDefinition, FileErrorsNameTheFile)
   }
   catch (const MetricDefinitionError& e)
   {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/metric.json: cannot open"), std::string::npos);
+    EXPECT_NE(
+      std::string(e.what()).find("/nonexistent/metric.json: cannot open"), std::string::npos);
   }
 }
 } // namespace
