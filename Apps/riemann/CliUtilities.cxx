@@ -33,7 +33,8 @@ void ParseVector3(const std::string& text, const std::string& option, double out
   }
   if (count != 3 || (!text.empty() && text.back() == ','))
   {
-    throw Failure(option + ": expected three finite comma-separated numbers X,Y,Z, got \"" + text + "\"", 2);
+    throw Failure(
+      option + ": expected three finite comma-separated numbers X,Y,Z, got \"" + text + "\"", 2);
   }
 }
 

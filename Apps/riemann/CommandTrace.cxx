@@ -158,7 +158,8 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
   const vtkIdType* ids = nullptr;
   auto iterator = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
   vtkIdType cell = 0;
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell(), ++cell)
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++cell)
   {
     iterator->GetCurrentCell(count, ids);
     const long long seed = static_cast<long long>(seedIds->GetTuple1(cell));
@@ -182,13 +183,14 @@ void RunTrace(const TraceArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
   }
-  static const std::map<std::string, int> integrators = { { "euler",
-                                                            vtkRiemannGeodesicTracer::EULER },
-    { "rk4", vtkRiemannGeodesicTracer::RUNGE_KUTTA4 },
-    { "dp45", vtkRiemannGeodesicTracer::DORMAND_PRINCE45 } };
-  static const std::map<std::string, int> propagations = { { "forward",
-                                                             vtkRiemannGeodesicTracer::FORWARD },
-    { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH } };
+  static const std::map<std::string, int> integrators = {
+    { "euler", vtkRiemannGeodesicTracer::EULER }, { "rk4", vtkRiemannGeodesicTracer::RUNGE_KUTTA4 },
+    { "dp45", vtkRiemannGeodesicTracer::DORMAND_PRINCE45 }
+  };
+  static const std::map<std::string, int> propagations = {
+    { "forward", vtkRiemannGeodesicTracer::FORWARD },
+    { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH }
+  };
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannGeodesicTracer> tracer;
@@ -225,17 +227,19 @@ void RunTrace(const TraceArguments& args)
     throw Failure("no geodesic could be traced from the given seeds");
   }
 
-  WriteAtomically(args.Output, [&](const std::string& temporary) {
-    if (extension == "csv")
+  WriteAtomically(args.Output,
+    [&](const std::string& temporary)
     {
-      return WriteCsv(lines, temporary);
-    }
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temporary.c_str());
-    writer->SetInputData(lines);
-    writer->SetDataModeToAppended();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
+      if (extension == "csv")
+      {
+        return WriteCsv(lines, temporary);
+      }
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName(temporary.c_str());
+      writer->SetInputData(lines);
+      writer->SetDataModeToAppended();
+      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+    });
 
   // A one-line summary on stderr: how many lines, and why they stopped.
   std::map<int, int> reasons;
@@ -266,8 +270,9 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_option("--seed", args->Seed, "Start point X,Y,Z (default 0,0,0)");
   command->add_option("--direction", args->Direction,
     "Initial direction DX,DY,DZ, normalised to unit speed in g (default 1,0,0)");
-  command->add_option("--seeds", args->SeedsFile,
-           "CSV of seeds with header x,y,z,dx,dy,dz (replaces --seed/--direction)")
+  command
+    ->add_option("--seeds", args->SeedsFile,
+      "CSV of seeds with header x,y,z,dx,dy,dz (replaces --seed/--direction)")
     ->check(CLI::ExistingFile)
     ->excludes(command->get_option("--seed"))
     ->excludes(command->get_option("--direction"));
@@ -277,11 +282,14 @@ void RegisterTraceCommand(CLI::App& app)
     ->check(CLI::IsMember({ "euler", "rk4", "dp45" }));
   command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
     ->check(CLI::IsMember({ "forward", "backward", "both" }));
-  command->add_option("--step", args->Step, "Step in arc length (initial step for dp45; default 0.01)")
+  command
+    ->add_option("--step", args->Step, "Step in arc length (initial step for dp45; default 0.01)")
     ->check(CLI::Range(1e-9, 1e6));
-  command->add_option("--tolerance", args->Tolerance, "Per-step error tolerance of dp45 (default 1e-8)")
+  command
+    ->add_option("--tolerance", args->Tolerance, "Per-step error tolerance of dp45 (default 1e-8)")
     ->check(CLI::Range(1e-15, 1.0));
-  command->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
+  command
+    ->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
     ->check(CLI::Range(1LL, 1000000000LL));
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->callback([args]() { RunTrace(*args); });

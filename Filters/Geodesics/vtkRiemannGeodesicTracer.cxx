@@ -27,8 +27,10 @@ vtkCxxSetObjectMacro(vtkRiemannGeodesicTracer, Metric, vtkRiemannMetric);
 // The public enums mirror the core's numbering, which is part of the file formats.
 static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
       static_cast<int>(riemann::DegenerateMetric) &&
-    static_cast<int>(vtkRiemannGeodesicTracer::HIT_SURFACE) == static_cast<int>(riemann::HitSurface) &&
-    static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) == static_cast<int>(riemann::OutOfLength),
+    static_cast<int>(vtkRiemannGeodesicTracer::HIT_SURFACE) ==
+      static_cast<int>(riemann::HitSurface) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) ==
+      static_cast<int>(riemann::OutOfLength),
   "termination codes must match the core");
 static_assert(vtkRiemannGeodesicTracer::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),
@@ -91,9 +93,8 @@ int vtkRiemannGeodesicTracer::RequestData(
   std::vector<Seed> seeds;
   const riemann::Vec3 startDirection(
     this->StartDirection[0], this->StartDirection[1], this->StartDirection[2]);
-  vtkDataSet* input = this->GetNumberOfInputConnections(0) > 0
-    ? vtkDataSet::GetData(inputVector[0], 0)
-    : nullptr;
+  vtkDataSet* input =
+    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   std::vector<std::pair<riemann::Vec3, riemann::Vec3>> starts;
   if (input)
   {
@@ -164,19 +165,22 @@ int vtkRiemannGeodesicTracer::RequestData(
   while (traced < count && !this->GetAbortExecute())
   {
     const vtkIdType end = std::min(count, traced + batch);
-    vtkSMPTools::For(traced, end, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType i = first; i < last; ++i)
+    vtkSMPTools::For(traced, end,
+      [&](vtkIdType first, vtkIdType last)
       {
-        const Seed& seed = seeds[i];
-        riemann::Vec3 velocity;
-        if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
+        for (vtkIdType i = first; i < last; ++i)
         {
-          paths[i].Clear();
-          continue;
+          const Seed& seed = seeds[i];
+          riemann::Vec3 velocity;
+          if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
+          {
+            paths[i].Clear();
+            continue;
+          }
+          riemann::TraceGeodesic(
+            *metric, seed.Position, velocity, options, paths[i], seed.Backward);
         }
-        riemann::TraceGeodesic(*metric, seed.Position, velocity, options, paths[i], seed.Backward);
-      }
-    });
+      });
     traced = end;
     this->UpdateProgress(static_cast<double>(traced) / count);
   }
@@ -216,7 +220,8 @@ int vtkRiemannGeodesicTracer::RequestData(
   points->SetNumberOfPoints(pointCount);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(lineCount, pointCount);
-  auto makeArray = [](vtkDoubleArray* array, const char* name, int components, vtkIdType tuples) {
+  auto makeArray = [](vtkDoubleArray* array, const char* name, int components, vtkIdType tuples)
+  {
     array->SetName(name);
     array->SetNumberOfComponents(components);
     array->SetNumberOfTuples(tuples);
@@ -275,8 +280,9 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->StartPosition[2] << "\n";
   os << indent << "StartDirection: " << this->StartDirection[0] << " " << this->StartDirection[1]
      << " " << this->StartDirection[2] << "\n";
-  os << indent << "DirectionArrayName: "
-     << (this->DirectionArrayName ? this->DirectionArrayName : "(none)") << "\n";
+  os << indent
+     << "DirectionArrayName: " << (this->DirectionArrayName ? this->DirectionArrayName : "(none)")
+     << "\n";
   os << indent << "IntegratorType: " << this->IntegratorType << "\n";
   os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
   os << indent << "InitialIntegrationStep: " << this->InitialIntegrationStep << "\n";
