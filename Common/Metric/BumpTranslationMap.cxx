@@ -122,4 +122,40 @@ void BumpTranslationMap::AppendSamplePoints(std::vector<Vec3>& points) const
 {
   this->Field->AppendSamplePoints(points);
 }
+
+std::string BumpTranslationMap::EmitGlsl(GlslBuilder& builder) const
+{
+  // A constant direction is the affine field with A = 0: one structure, so
+  // switching between them only changes uniforms.
+  const std::string field = this->Field->EmitGlsl(builder);
+  const Mat3& m = this->Matrix;
+  const std::string a =
+    builder.AddUniform("field_matrix", "mat3", std::vector<double>(m.data(), m.data() + 9));
+  const std::string c = builder.AddUniform(
+    "field_center", "vec3", { this->Center[0], this->Center[1], this->Center[2] });
+  const std::string b = builder.AddUniform(
+    "field_offset", "vec3", { this->Offset[0], this->Offset[1], this->Offset[2] });
+  const std::string name = builder.NewName("bump");
+  builder.AddFunction("void " + name +
+    "(vec3 p, out vec3 y, out mat3 J, out mat3 H0, out mat3 H1, out mat3 H2)\n"
+    "{\n"
+    "  float f = 0.0;\n"
+    "  vec3 gf = vec3(0.0);\n"
+    "  mat3 hf = mat3(0.0);\n"
+    "  " + field + "(p, f, gf, hf);\n"
+    "  mat3 A = " + a + ";\n"
+    "  vec3 v = A * (p - " + c + ") + " + b + ";\n"
+    "  y = p + f * v;\n"
+    "  J = mat3(1.0) + outerProduct(v, gf) + f * A;\n"
+    "  // H_s = v_s hf + gf a_s^T + a_s gf^T with a_s the row s of A.\n"
+    "  vec3 a0 = vec3(A[0][0], A[1][0], A[2][0]);\n"
+    "  vec3 a1 = vec3(A[0][1], A[1][1], A[2][1]);\n"
+    "  vec3 a2 = vec3(A[0][2], A[1][2], A[2][2]);\n"
+    "  H0 = v.x * hf + outerProduct(gf, a0) + outerProduct(a0, gf);\n"
+    "  H1 = v.y * hf + outerProduct(gf, a1) + outerProduct(a1, gf);\n"
+    "  H2 = v.z * hf + outerProduct(gf, a2) + outerProduct(a2, gf);\n"
+    "}\n");
+  return name;
+}
+
 } // namespace riemann

@@ -28,6 +28,7 @@ public:
 
   void Evaluate(const Vec3& p, int order, VectorJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   /**
    * For a Gaussian f and a constant v the minimum of grad f . v is known in
    * closed form (-|a| |w| e^{-1/2}, w_i = v_i / s_i), so the check is exact;

@@ -26,6 +26,7 @@ public:
   bool Tensor(const Vec3& p, Mat3& g) const override;
   bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+  void EmitGlsl(GlslBuilder& builder) const override;
   bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const override;
   bool InverseTensor(const Vec3& p, Mat3& inverse) const override;
   double VolumeForm(const Vec3& p) const override;

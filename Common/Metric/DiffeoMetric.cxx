@@ -107,4 +107,33 @@ void DiffeoMetric::AppendSamplePoints(std::vector<Vec3>& points) const
 {
   this->Map->AppendSamplePoints(points);
 }
+
+void DiffeoMetric::EmitGlsl(GlslBuilder& builder) const
+{
+  // Single precision: |det J| below 1e-6 counts as degenerate on the GPU.
+  const std::string phi = this->Map->EmitGlsl(builder);
+  builder.AddFunction("bool rt_metric_tensor(vec3 p, out mat3 g)\n"
+                      "{\n"
+                      "  vec3 y;\n"
+                      "  mat3 J, H0, H1, H2;\n"
+                      "  " + phi + "(p, y, J, H0, H1, H2);\n"
+                      "  g = transpose(J) * J;\n"
+                      "  return abs(determinant(J)) > 1e-6;\n"
+                      "}\n");
+  builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
+                      "{\n"
+                      "  vec3 y;\n"
+                      "  mat3 J, H0, H1, H2;\n"
+                      "  " + phi + "(p, y, J, H0, H1, H2);\n"
+                      "  if (!(abs(determinant(J)) > 1e-6))\n"
+                      "  {\n"
+                      "    a = vec3(0.0);\n"
+                      "    return false;\n"
+                      "  }\n"
+                      "  vec3 w = vec3(dot(v, H0 * v), dot(v, H1 * v), dot(v, H2 * v));\n"
+                      "  a = -(inverse(J) * w);\n"
+                      "  return true;\n"
+                      "}\n");
+}
+
 } // namespace riemann

@@ -43,4 +43,19 @@ double EuclideanMetric::VolumeForm(const Vec3& /*p*/) const
 {
   return 1.0;
 }
+
+void EuclideanMetric::EmitGlsl(GlslBuilder& builder) const
+{
+  builder.AddFunction("bool rt_metric_tensor(vec3 p, out mat3 g)\n"
+                      "{\n"
+                      "  g = mat3(1.0);\n"
+                      "  return true;\n"
+                      "}\n");
+  builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
+                      "{\n"
+                      "  a = vec3(0.0);\n"
+                      "  return true;\n"
+                      "}\n");
+}
+
 } // namespace riemann

@@ -18,6 +18,7 @@ public:
 
   void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   /// A 17^3 grid over center +- 4 sigma (spacing sigma/2 resolves the bump).
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 

@@ -76,4 +76,28 @@ void GraphMetric::AppendSamplePoints(std::vector<Vec3>& points) const
 {
   this->Field->AppendSamplePoints(points);
 }
+
+void GraphMetric::EmitGlsl(GlslBuilder& builder) const
+{
+  const std::string f = this->Field->EmitGlsl(builder);
+  builder.AddFunction("bool rt_metric_tensor(vec3 p, out mat3 g)\n"
+                      "{\n"
+                      "  float f = 0.0;\n"
+                      "  vec3 gf = vec3(0.0);\n"
+                      "  mat3 hf = mat3(0.0);\n"
+                      "  " + f + "(p, f, gf, hf);\n"
+                      "  g = mat3(1.0) + outerProduct(gf, gf);\n"
+                      "  return true;\n"
+                      "}\n");
+  builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
+                      "{\n"
+                      "  float f = 0.0;\n"
+                      "  vec3 gf = vec3(0.0);\n"
+                      "  mat3 hf = mat3(0.0);\n"
+                      "  " + f + "(p, f, gf, hf);\n"
+                      "  a = -gf * (dot(v, hf * v) / (1.0 + dot(gf, gf)));\n"
+                      "  return true;\n"
+                      "}\n");
+}
+
 } // namespace riemann

@@ -141,4 +141,40 @@ void MapComposition::AppendSamplePoints(std::vector<Vec3>& points) const
     map->AppendSamplePoints(points);
   }
 }
+
+std::string MapComposition::EmitGlsl(GlslBuilder& builder) const
+{
+  // Second-order forward mode, innermost map first, as in Evaluate().
+  std::vector<std::string> maps;
+  for (const auto& map : this->Maps)
+  {
+    maps.push_back(map->EmitGlsl(builder));
+  }
+  const std::string name = builder.NewName("compose");
+  std::string code = "void " + name +
+    "(vec3 p, out vec3 y, out mat3 J, out mat3 H0, out mat3 H1, out mat3 H2)\n"
+    "{\n"
+    "  y = p;\n"
+    "  J = mat3(1.0);\n"
+    "  H0 = mat3(0.0);\n"
+    "  H1 = mat3(0.0);\n"
+    "  H2 = mat3(0.0);\n"
+    "  vec3 yo;\n"
+    "  mat3 Jo, G0, G1, G2, Jt;\n";
+  for (auto it = maps.rbegin(); it != maps.rend(); ++it)
+  {
+    // H'_s = J^T G_s J + sum_r Jo(s, r) H_r, with Jo(s, r) = Jo[r][s] in GLSL.
+    code += "  " + *it + "(y, yo, Jo, G0, G1, G2);\n"
+      "  Jt = transpose(J);\n"
+      "  mat3 N0 = Jt * G0 * J + Jo[0][0] * H0 + Jo[1][0] * H1 + Jo[2][0] * H2;\n"
+      "  mat3 N1 = Jt * G1 * J + Jo[0][1] * H0 + Jo[1][1] * H1 + Jo[2][1] * H2;\n"
+      "  mat3 N2 = Jt * G2 * J + Jo[0][2] * H0 + Jo[1][2] * H1 + Jo[2][2] * H2;\n"
+      "  H0 = N0;\n  H1 = N1;\n  H2 = N2;\n"
+      "  J = Jo * J;\n"
+      "  y = yo;\n";
+  }
+  builder.AddFunction(code + "}\n");
+  return name;
+}
+
 } // namespace riemann

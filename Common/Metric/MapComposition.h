@@ -21,6 +21,7 @@ public:
 
   void Evaluate(const Vec3& p, int order, VectorJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   /// Inverts each map in turn, outermost first.
   bool Inverse(const Vec3& y, Vec3& p, double tolerance = 1e-13) const override;
   /// A composition of diffeomorphisms is one: each map is checked on its own.

@@ -60,6 +60,12 @@ double Metric::InnerProduct(const Vec3& p, const Vec3& u, const Vec3& w) const
   return u.dot(g * w);
 }
 
+void Metric::EmitGlsl(GlslBuilder& /*builder*/) const
+{
+  throw GlslUnsupportedError(
+    "the " + this->FamilyName() + " metric " + this->Describe() + " has no GLSL form");
+}
+
 std::string Metric::Validate() const
 {
   std::vector<Vec3> points;

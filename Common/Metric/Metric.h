@@ -15,6 +15,7 @@
 #ifndef RiemannMetric_h
 #define RiemannMetric_h
 
+#include "GlslSource.h"
 #include "Jets.h"
 #include "RiemannCommonMetricExport.h"
 
@@ -59,6 +60,13 @@ public:
    * an empty string when valid, else a message that says where and why not.
    */
   virtual std::string Validate() const;
+
+  /**
+   * Emit the metric part of the ray-tracing shader (GlslSource.h):
+   * rt_metric_tensor and rt_metric_acceleration. The default refuses with
+   * GlslUnsupportedError naming the metric.
+   */
+  virtual void EmitGlsl(GlslBuilder& builder) const;
 
 protected:
   /// Points where Validate() samples g: the providers' features.

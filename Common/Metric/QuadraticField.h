@@ -17,6 +17,7 @@ public:
 
   void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   /// A 9^3 grid over [-4, 4]^3: a quadratic has no localized feature.
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 

@@ -9,6 +9,7 @@
 #ifndef RiemannScalarField_h
 #define RiemannScalarField_h
 
+#include "GlslSource.h"
 #include "Jets.h"
 #include "RiemannCommonMetricExport.h"
 
@@ -46,6 +47,18 @@ public:
    * diffeomorphism conditions) at these points.
    */
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+
+  /**
+   * Emit a GLSL function
+   *   void NAME(vec3 p, inout float f, inout vec3 grad, inout mat3 hess)
+   * that adds this field's value, gradient and Hessian (as Accumulate does),
+   * with every number a uniform; returns NAME. The default refuses.
+   */
+  virtual std::string EmitGlsl(GlslBuilder& builder) const
+  {
+    (void)builder;
+    throw GlslUnsupportedError(this->Describe() + " has no GLSL form");
+  }
 };
 } // namespace riemann
 

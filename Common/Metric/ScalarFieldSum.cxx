@@ -41,4 +41,24 @@ void ScalarFieldSum::AppendSamplePoints(std::vector<Vec3>& points) const
     field->AppendSamplePoints(points);
   }
 }
+
+std::string ScalarFieldSum::EmitGlsl(GlslBuilder& builder) const
+{
+  std::vector<std::string> terms;
+  for (const auto& field : this->Terms)
+  {
+    terms.push_back(field->EmitGlsl(builder));
+  }
+  const std::string c = builder.AddUniform("constant", "float", { this->Constant });
+  const std::string name = builder.NewName("sum");
+  std::string code = "void " + name +
+    "(vec3 p, inout float f, inout vec3 grad, inout mat3 hess)\n{\n  f += " + c + ";\n";
+  for (const std::string& term : terms)
+  {
+    code += "  " + term + "(p, f, grad, hess);\n";
+  }
+  builder.AddFunction(code + "}\n");
+  return name;
+}
+
 } // namespace riemann

@@ -19,6 +19,7 @@ public:
 
   void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 
   double GetConstant() const { return this->Constant; }

@@ -8,6 +8,7 @@
 #ifndef RiemannSpaceMap_h
 #define RiemannSpaceMap_h
 
+#include "GlslSource.h"
 #include "Jets.h"
 #include "RiemannCommonMetricExport.h"
 
@@ -42,6 +43,18 @@ public:
 
   /// Points where the map varies, for validation sampling.
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+
+  /**
+   * Emit a GLSL function
+   *   void NAME(vec3 p, out vec3 y, out mat3 J, out mat3 H0, out mat3 H1, out mat3 H2)
+   * giving Phi(p), its Jacobian (a GLSL mat3 whose column i is d_i Phi) and
+   * the Hessians of the three components; returns NAME. The default refuses.
+   */
+  virtual std::string EmitGlsl(GlslBuilder& builder) const
+  {
+    (void)builder;
+    throw GlslUnsupportedError(this->Describe() + " has no GLSL form");
+  }
 };
 } // namespace riemann
 

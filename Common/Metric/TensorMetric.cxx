@@ -75,4 +75,27 @@ void TensorMetric::AppendSamplePoints(std::vector<Vec3>& points) const
 {
   this->Field->AppendSamplePoints(points);
 }
+
+std::string ConstantTensorField::EmitConstantGlsl(GlslBuilder& builder) const
+{
+  return builder.AddUniform(
+    "tensor", "mat3", std::vector<double>(this->Value.data(), this->Value.data() + 9));
+}
+
+void TensorMetric::EmitGlsl(GlslBuilder& builder) const
+{
+  // A constant g is flat: straight rays, only the camera frame feels g.
+  const std::string g = this->Field->EmitConstantGlsl(builder);
+  builder.AddFunction("bool rt_metric_tensor(vec3 p, out mat3 g)\n"
+                      "{\n"
+                      "  g = " + g + ";\n"
+                      "  return true;\n"
+                      "}\n");
+  builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
+                      "{\n"
+                      "  a = vec3(0.0);\n"
+                      "  return true;\n"
+                      "}\n");
+}
+
 } // namespace riemann

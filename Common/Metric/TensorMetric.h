@@ -25,6 +25,16 @@ public:
   virtual void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const = 0;
   virtual std::string Describe() const = 0;
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
+  /**
+   * For the shader: only constant fields have a GLSL form so far (component
+   * expressions come later). Declares a uniform mat3 holding g and returns
+   * its name, or throws GlslUnsupportedError.
+   */
+  virtual std::string EmitConstantGlsl(GlslBuilder& builder) const
+  {
+    (void)builder;
+    throw GlslUnsupportedError("the tensor field " + this->Describe() + " has no GLSL form");
+  }
 };
 
 /// g_ij = constant (symmetrised on construction).
@@ -34,6 +44,7 @@ public:
   explicit ConstantTensorField(const Mat3& value);
   void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
   std::string Describe() const override;
+  std::string EmitConstantGlsl(GlslBuilder& builder) const override;
 
 private:
   Mat3 Value;
@@ -50,6 +61,7 @@ public:
   bool Tensor(const Vec3& p, Mat3& g) const override;
   bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+  void EmitGlsl(GlslBuilder& builder) const override;
 
 protected:
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

@@ -120,4 +120,27 @@ bool TwistMap::Inverse(const Vec3& y, Vec3& p, double /*tolerance*/) const
   p = Vec3(c * y[0] - s * y[1], s * y[0] + c * y[1], y[2]);
   return p.allFinite();
 }
+
+std::string TwistMap::EmitGlsl(GlslBuilder& builder) const
+{
+  // The closed form of Evaluate() to second order: with c, s = cos, sin(k z),
+  // d_z Phi_x = -k Phi_y, d_z Phi_y = k Phi_x, d_xz Phi_x = -k s, d_yz Phi_x = -k c,
+  // d_xz Phi_y = k c, d_yz Phi_y = -k s, d_zz Phi_{x,y} = -k^2 Phi_{x,y}.
+  const std::string k = builder.AddUniform("rate", "float", { this->Rate });
+  const std::string name = builder.NewName("twist");
+  builder.AddFunction("void " + name +
+    "(vec3 p, out vec3 y, out mat3 J, out mat3 H0, out mat3 H1, out mat3 H2)\n"
+    "{\n"
+    "  float k = " + k + ";\n"
+    "  float c = cos(k * p.z);\n"
+    "  float s = sin(k * p.z);\n"
+    "  y = vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);\n"
+    "  J = mat3(c, s, 0.0, -s, c, 0.0, -k * y.y, k * y.x, 1.0);\n"
+    "  H0 = mat3(0.0, 0.0, -k * s, 0.0, 0.0, -k * c, -k * s, -k * c, -k * k * y.x);\n"
+    "  H1 = mat3(0.0, 0.0, k * c, 0.0, 0.0, -k * s, k * c, -k * s, -k * k * y.y);\n"
+    "  H2 = mat3(0.0);\n"
+    "}\n");
+  return name;
+}
+
 } // namespace riemann

@@ -18,6 +18,7 @@ public:
 
   void Evaluate(const Vec3& p, int order, VectorJet& jet) const override;
   std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
   bool Inverse(const Vec3& y, Vec3& p, double tolerance = 1e-13) const override;
   std::string CheckDiffeomorphism() const override { return {}; }
 

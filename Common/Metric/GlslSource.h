@@ -1,0 +1,87 @@
+/**
+ * @file GlslSource.h
+ * @brief GLSL emission of a metric for the ray-tracing shader.
+ *
+ * Each provider and family writes its own GLSL (ScalarField::EmitGlsl,
+ * SpaceMap::EmitGlsl, Metric::EmitGlsl). The source depends only on the
+ * metric's structure (which providers, composed how); every number
+ * (amplitudes, centres, spreads, rates, matrices) is a uniform whose value is
+ * listed next to the source. Two metrics of the same structure therefore give
+ * byte-identical source, so a renderer recompiles only when the structure
+ * changes and otherwise just uploads new uniform values (animation in t,
+ * interactive edits).
+ *
+ * The metric part of the shader defines (float precision):
+ *
+ *   bool rt_metric_tensor(vec3 p, out mat3 g);             // g_ij at p
+ *   bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a); // -Gamma(v, v)
+ *
+ * both returning false where the metric is degenerate. GLSL mat3 values are
+ * column-major: M[j][i] is row i, column j.
+ */
+#ifndef RiemannGlslSource_h
+#define RiemannGlslSource_h
+
+#include "RiemannCommonMetricExport.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+class Metric;
+
+/// A uniform of the generated source and its value.
+struct GlslUniform
+{
+  std::string Name;
+  /// "float", "vec3" or "mat3".
+  std::string Type;
+  /// 1, 3 or 9 values (mat3: column-major, as glUniformMatrix3fv expects).
+  std::vector<double> Values;
+};
+
+/// A metric (or provider) that the GLSL backend cannot express; what() says which.
+class RIEMANNCOMMONMETRIC_EXPORT GlslUnsupportedError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/**
+ * Collects uniforms and functions while providers emit themselves. Names are
+ * numbered in emission order, so the same structure always yields the same text.
+ */
+class RIEMANNCOMMONMETRIC_EXPORT GlslBuilder
+{
+public:
+  /// A fresh identifier "rt_<stem><n>".
+  std::string NewName(const std::string& stem);
+  /// Declare a uniform (name from NewName) with its value; returns the name.
+  std::string AddUniform(const std::string& stem, const std::string& type, std::vector<double> values);
+  /// Append a function definition (callees must be added before callers).
+  void AddFunction(const std::string& code);
+
+  /// Uniform declarations followed by the functions.
+  std::string Source() const;
+  const std::vector<GlslUniform>& GetUniforms() const { return this->Uniforms; }
+
+private:
+  int Counter = 0;
+  std::vector<GlslUniform> Uniforms;
+  std::vector<std::string> Functions;
+};
+
+/// The metric part of the shader, and its uniform values.
+struct MetricGlsl
+{
+  std::string Source;
+  std::vector<GlslUniform> Uniforms;
+};
+
+/// Emit the metric part of the shader; throws GlslUnsupportedError.
+RIEMANNCOMMONMETRIC_EXPORT MetricGlsl EmitMetricGlsl(const Metric& metric);
+} // namespace riemann
+
+#endif
