@@ -31,7 +31,7 @@ PACKAGES=(
   libeigen3-dev libembree-dev libopenimageio-dev openimageio-tools libginac-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3-numpy xvfb xauth libgl1-mesa-dri
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev glslang-tools
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }

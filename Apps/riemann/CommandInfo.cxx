@@ -3,6 +3,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 
+#include "GlslSource.h"
 #include "Metric.h"
 #include "vtkRiemannMetric.h"
 
@@ -25,6 +26,7 @@ struct InfoArguments
   std::string Metric;
   std::string Point = "0,0,0";
   int Precision = 10;
+  bool Glsl = false;
 };
 
 void PrintMatrix(std::ostream& out, const std::string& title, const Mat3& m)
@@ -45,6 +47,18 @@ void RunInfo(const InfoArguments& args)
 {
   vtkSmartPointer<vtkRiemannMetric> handle = LoadMetric(args.Metric);
   const std::shared_ptr<const Metric> metric = handle->GetMetric();
+  if (args.Glsl)
+  {
+    try
+    {
+      std::cout << EmitMetricGlsl(*metric).Source;
+    }
+    catch (const GlslUnsupportedError& e)
+    {
+      throw Failure(std::string("no GLSL for this metric: ") + e.what());
+    }
+    return;
+  }
   double p[3];
   ParseVector3(args.Point, "--point", p);
   const Vec3 point(p[0], p[1], p[2]);
@@ -88,6 +102,8 @@ void RegisterInfoCommand(CLI::App& app)
   command->add_option("--point,-p", args->Point, "Point X,Y,Z (default 0,0,0)");
   command->add_option("--precision", args->Precision, "Significant digits (default 10)")
     ->check(CLI::Range(1, 17));
+  command->add_flag("--glsl", args->Glsl,
+    "Print the metric's part of the ray-tracing shader (GLSL) instead");
   command->callback([args]() { RunInfo(*args); });
 }
 } // namespace cli

@@ -160,15 +160,15 @@ std::string MapComposition::EmitGlsl(GlslBuilder& builder) const
     "  H1 = mat3(0.0);\n"
     "  H2 = mat3(0.0);\n"
     "  vec3 yo;\n"
-    "  mat3 Jo, G0, G1, G2, Jt;\n";
+    "  mat3 Jo, G0, G1, G2, Jt, N0, N1, N2;\n";
   for (auto it = maps.rbegin(); it != maps.rend(); ++it)
   {
     // H'_s = J^T G_s J + sum_r Jo(s, r) H_r, with Jo(s, r) = Jo[r][s] in GLSL.
     code += "  " + *it + "(y, yo, Jo, G0, G1, G2);\n"
       "  Jt = transpose(J);\n"
-      "  mat3 N0 = Jt * G0 * J + Jo[0][0] * H0 + Jo[1][0] * H1 + Jo[2][0] * H2;\n"
-      "  mat3 N1 = Jt * G1 * J + Jo[0][1] * H0 + Jo[1][1] * H1 + Jo[2][1] * H2;\n"
-      "  mat3 N2 = Jt * G2 * J + Jo[0][2] * H0 + Jo[1][2] * H1 + Jo[2][2] * H2;\n"
+      "  N0 = Jt * G0 * J + Jo[0][0] * H0 + Jo[1][0] * H1 + Jo[2][0] * H2;\n"
+      "  N1 = Jt * G1 * J + Jo[0][1] * H0 + Jo[1][1] * H1 + Jo[2][1] * H2;\n"
+      "  N2 = Jt * G2 * J + Jo[0][2] * H0 + Jo[1][2] * H1 + Jo[2][2] * H2;\n"
       "  H0 = N0;\n  H1 = N1;\n  H2 = N2;\n"
       "  J = Jo * J;\n"
       "  y = yo;\n";

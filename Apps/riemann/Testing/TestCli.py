@@ -124,6 +124,29 @@ class TraceTests(unittest.TestCase):
         self.assertIn("volume form sqrt(det g): 2.236067977", out)
 
 
+class GlslTests(unittest.TestCase):
+    def test_every_example_metric_emits_valid_glsl(self):
+        """`riemann info --glsl` for each Data/metrics file compiles as GLSL 3.30 (glslangValidator)."""
+        import shutil
+        validator = shutil.which("glslangValidator")
+        if validator is None:
+            self.skipTest("glslangValidator (glslang-tools) is not installed")
+        for name in sorted(os.listdir(METRICS)):
+            with self.subTest(name):
+                status, source, err = run("info", "--glsl", "-m", os.path.join(METRICS, name))
+                self.assertEqual(status, 0, err)
+                self.assertIn("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)", source)
+                with tempfile.TemporaryDirectory() as d:
+                    path = os.path.join(d, "metric.frag")
+                    with open(path, "w") as f:
+                        f.write("#version 330 core\nout vec4 color;\n" + source +
+                                "\nvoid main() { mat3 g; vec3 a; bool ok = rt_metric_tensor(vec3(0.1), g)"
+                                " && rt_metric_acceleration(vec3(0.2), vec3(1.0), a);"
+                                " color = vec4(a + g[0], ok ? 1.0 : 0.0); }\n")
+                    result = subprocess.run([validator, path], capture_output=True, text=True)
+                    self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+
+
 # (description, arguments, metric text or None, expected substring of stderr)
 BAD_INPUTS = [
     ("missing metric file", ["trace", "-m", "/nonexistent.json", "-o", "OUT.csv"], None, "File does not exist"),
