@@ -30,7 +30,7 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   std::shared_ptr<const riemann::Metric> metric;
   try
   {
-    metric = riemann::ParseMetricDefinition(json);
+    metric = riemann::ParseMetricDefinition(json, this->Time);
   }
   catch (const riemann::MetricDefinitionError& e)
   {
@@ -42,6 +42,29 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   this->Definition = json;
   this->LastError.clear();
   this->Modified();
+  return true;
+}
+
+bool vtkRiemannMetric::SetTime(double t)
+{
+  if (t == this->Time)
+  {
+    return true;
+  }
+  const double previous = this->Time;
+  this->Time = t;
+  if (this->Definition.empty())
+  {
+    this->Modified();
+    return true;
+  }
+  const std::string definition = this->Definition;
+  if (!this->SetDefinition(definition.c_str()))
+  {
+    this->Time = previous;
+    this->LastError = "at t = " + std::to_string(t) + ": " + this->LastError;
+    return false;
+  }
   return true;
 }
 
@@ -143,5 +166,6 @@ void vtkRiemannMetric::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Definition: " << (this->Definition.empty() ? "(none)" : this->Definition)
      << "\n";
   os << indent << "Family: " << this->GetFamilyName() << "\n";
+  os << indent << "Time: " << this->Time << "\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }

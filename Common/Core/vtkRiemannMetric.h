@@ -51,6 +51,16 @@ public:
   bool SetDefinitionFile(const char* path);
   ///@}
 
+  ///@{
+  /**
+   * The time t in [0, 1] at which animated numbers ({"from": a, "to": b})
+   * of the definition are evaluated (default 0). Returns false, keeping the
+   * current metric, if the definition is not valid at t (GetLastError says why).
+   */
+  bool SetTime(double t);
+  double GetTime() const { return this->Time; }
+  ///@}
+
   /// The JSON text of the current definition ("" when none has been set).
   const char* GetDefinition() const { return this->Definition.c_str(); }
 
@@ -98,6 +108,7 @@ private:
   std::shared_ptr<const riemann::Metric> Metric;
   std::string Definition;
   std::string LastError;
+  double Time = 0.0;
 };
 
 #endif

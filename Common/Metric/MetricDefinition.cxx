@@ -102,11 +102,33 @@ void CheckKeys(
   }
 }
 
+/**
+ * The time t in [0, 1] at which animated numbers are evaluated. A definition
+ * is parsed at one time into an immutable metric (a frame of an animation);
+ * thread_local keeps concurrent parses at different times apart without
+ * threading a context through every helper of this file.
+ */
+thread_local double ParseTime = 0.0;
+
+double Number(const Json& value, const std::string& path);
+
+/// {"from": a, "to": b}: a + t (b - a), for numbers and 3-vectors alike.
+bool IsAnimated(const Json& value)
+{
+  return value.is_object() && value.contains("from") && value.contains("to") && value.size() == 2;
+}
+
 double Number(const Json& value, const std::string& path)
 {
+  if (IsAnimated(value))
+  {
+    const double from = Number(value.at("from"), path + ".from");
+    const double to = Number(value.at("to"), path + ".to");
+    return from + ParseTime * (to - from);
+  }
   if (!value.is_number())
   {
-    Fail(path, "expected a number, got " + Describe(value));
+    Fail(path, "expected a number (or {\"from\": a, \"to\": b}), got " + Describe(value));
   }
   const double number = value.get<double>();
   if (!std::isfinite(number))
@@ -123,6 +145,12 @@ double NumberOr(const Json& object, const char* key, const std::string& path, do
 
 Vec3 Vector(const Json& value, const std::string& path)
 {
+  if (IsAnimated(value))
+  {
+    const Vec3 from = Vector(value.at("from"), path + ".from");
+    const Vec3 to = Vector(value.at("to"), path + ".to");
+    return from + ParseTime * (to - from);
+  }
   if (!value.is_array() || value.size() != 3)
   {
     Fail(path, "expected an array of 3 numbers, got " + Describe(value));
@@ -371,8 +399,22 @@ std::shared_ptr<const Metric> Build(const Json& root)
 }
 } // namespace
 
-std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json)
+std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json, double time)
 {
+  if (!std::isfinite(time))
+  {
+    throw MetricDefinitionError("the time t must be a finite number");
+  }
+  struct TimeScope
+  {
+    double Saved;
+    explicit TimeScope(double t)
+      : Saved(ParseTime)
+    {
+      ParseTime = t;
+    }
+    ~TimeScope() { ParseTime = this->Saved; }
+  } scope(time);
   Json root;
   try
   {
@@ -416,12 +458,12 @@ std::string ReadMetricDefinitionFile(const std::string& path)
   return text.str();
 }
 
-std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path)
+std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path, double time)
 {
   const std::string text = ReadMetricDefinitionFile(path);
   try
   {
-    return ParseMetricDefinition(text);
+    return ParseMetricDefinition(text, time);
   }
   catch (const MetricDefinitionError& e)
   {

@@ -23,6 +23,11 @@
  *   "quadratic": {"matrix": [[..]] or "diagonal": [..], "linear": [..], "constant": c}
  *                (or a list of such objects): f = p^T A p + b . p + c
  *   "constant": c
+ * Any number or 3-vector may be animated as {"from": a, "to": b}: its value at
+ * time t in [0, 1] is a + t (b - a) (`riemann render --frames`, vtkRiemannMetric::SetTime).
+ * The metric's structure never depends on t, so a shader compiled for one
+ * frame serves them all with new uniform values.
+ *
  * Every object also accepts "name" and "description" (free text). Unknown keys,
  * wrong sizes and wrong types are errors that name the offending key's path,
  * e.g. `metric.compose[1].gaussian.sigma`.
@@ -46,18 +51,19 @@ public:
 };
 
 /**
- * Parse, build and validate (Metric::Validate) a metric definition.
+ * Parse, build and validate (Metric::Validate) a metric definition at time
+ * `time` (animated numbers {"from": a, "to": b} become a + t (b - a)).
  * Throws MetricDefinitionError with a message naming the place and cause.
  */
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
-  const std::string& json);
+  const std::string& json, double time = 0.0);
 
 /// The text of a metric file (refusing unreadable or absurdly large files).
 RIEMANNCOMMONMETRIC_EXPORT std::string ReadMetricDefinitionFile(const std::string& path);
 
 /// Read a file and ParseMetricDefinition() it; the message names the file.
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> LoadMetricDefinitionFile(
-  const std::string& path);
+  const std::string& path, double time = 0.0);
 } // namespace riemann
 
 #endif

@@ -2,6 +2,7 @@
 // and every bad input is refused with a message that says where and why.
 // The printed table of bad inputs is part of the foundation issue's note.
 #include "DiffeoMetric.h"
+#include "GlslSource.h"
 #include "GraphMetric.h"
 #include "MetricDefinition.h"
 
@@ -89,7 +90,7 @@ TEST(MetricDefinition, RefusesBadInputWithAClearMessage)
       "metric.gaussians[0].center: expected an array of 3 numbers, got an array of 2" },
     { "string for number",
       R"({"type": "graph", "gaussians": [{"amplitude": "big", "center": [0,0,0], "sigma": 1}]})",
-      "metric.gaussians[0].amplitude: expected a number, got the string \"big\"" },
+      "metric.gaussians[0].amplitude: expected a number (or {\"from\": a, \"to\": b}), got the string \"big\"" },
     { "negative sigma",
       R"({"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0,0], "sigma": [1,-1,1]}]})",
       "metric.gaussians[0].sigma: every spread must be positive" },
@@ -152,6 +153,36 @@ TEST(MetricDefinition, FileErrorsNameTheFile)
     EXPECT_NE(
       std::string(e.what()).find("/nonexistent/metric.json: cannot open"), std::string::npos);
   }
+}
+} // namespace
+} // namespace riemann
+
+namespace riemann
+{
+namespace
+{
+TEST(MetricDefinition, AnimatedNumbersFollowTime)
+{
+  const std::string text = R"({"type": "graph", "gaussians": [{"amplitude": {"from": 0, "to": 2},
+      "center": {"from": [0,0,0], "to": [1,0,0]}, "sigma": 0.5}]})";
+  for (double t : { 0.0, 0.25, 1.0 })
+  {
+    const auto metric = ParseMetricDefinition(text, t);
+    ScalarJet f;
+    const Vec3 center(t, 0, 0);
+    static_cast<const GraphMetric&>(*metric).GetField().Evaluate(center, ValueOnly, f);
+    EXPECT_NEAR(f.Value, 2.0 * t, 1e-15) << "t = " << t;
+  }
+  // The structure, hence the shader source, is the same at every time.
+  EXPECT_EQ(EmitMetricGlsl(*ParseMetricDefinition(text, 0.0)).Source,
+    EmitMetricGlsl(*ParseMetricDefinition(text, 0.7)).Source);
+  // Validation runs at the requested time: this bump folds only late.
+  const std::string folding = R"({"type": "diffeo", "preset": "bump", "gaussian":
+      {"amplitude": {"from": 0.5, "to": 3}, "center": [0,0,0], "sigma": 0.5}, "direction": [1,0,0]})";
+  EXPECT_NO_THROW(ParseMetricDefinition(folding, 0.0));
+  EXPECT_THROW(ParseMetricDefinition(folding, 1.0), MetricDefinitionError);
+  EXPECT_THROW(ParseMetricDefinition(R"({"type": "graph", "gaussians": [{"amplitude": {"from": 0},
+      "center": [0,0,0], "sigma": 1}]})"), MetricDefinitionError);
 }
 } // namespace
 } // namespace riemann
