@@ -77,7 +77,7 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
   const double speed = std::sqrt(initialSquaredSpeed);
   // Work in the curve parameter tau (arc length = speed * tau).
   const double parameterEnd = options.MaximumLength / speed;
-  double step = options.Step / speed;
+  const double step = options.Step / speed;
 
   Vec6 y;
   y << p, sign * v;
@@ -96,8 +96,8 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
     return;
   }
 
-  DormandPrince45 adaptive(
-    options.Tolerance, options.MinimumStep / speed, options.MaximumStep / speed);
+  GeodesicStepper stepper(options.Integrator, step, options.Tolerance,
+    options.MinimumStep / speed, options.MaximumStep / speed);
   // Steps shorter than this (relative to the length) count as arriving.
   const double arrival = 1e-12 * std::max(1.0, parameterEnd);
   for (long long n = 0;; ++n)
@@ -113,31 +113,11 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
       path.Reason = OutOfSteps;
       return;
     }
-    double taken = std::min(step, remaining);
-    bool ok = true;
-    switch (options.Integrator)
+    double taken = 0.0;
+    const auto status = stepper.Advance(metric, y, remaining, taken);
+    if (status != DormandPrince45::Accepted)
     {
-      case IntegratorType::Euler:
-        ok = EulerStep(metric, y, taken);
-        break;
-      case IntegratorType::RungeKutta4:
-        ok = RungeKutta4Step(metric, y, taken);
-        break;
-      case IntegratorType::DormandPrince45:
-      {
-        const auto status = adaptive.Step(metric, y, step, remaining, taken);
-        if (status == DormandPrince45::StepTooSmall)
-        {
-          path.Reason = Stagnation;
-          return;
-        }
-        ok = status == DormandPrince45::Accepted;
-        break;
-      }
-    }
-    if (!ok)
-    {
-      path.Reason = DegenerateMetric;
+      path.Reason = status == DormandPrince45::StepTooSmall ? Stagnation : DegenerateMetric;
       return;
     }
     if (!y.allFinite())

@@ -56,6 +56,39 @@ bool RungeKutta4Step(const Metric& metric, Vec6& y, double h)
   return true;
 }
 
+GeodesicStepper::GeodesicStepper(IntegratorType type, double step, double tolerance,
+  double minimumStep, double maximumStep)
+  : Type(type)
+  , InitialStep(step)
+  , Step(step)
+  , Adaptive(tolerance, minimumStep, maximumStep)
+{
+}
+
+void GeodesicStepper::Reset()
+{
+  this->Step = this->InitialStep;
+  this->Adaptive.Reset();
+}
+
+DormandPrince45::StepStatus GeodesicStepper::Advance(
+  const Metric& metric, Vec6& y, double limit, double& taken)
+{
+  switch (this->Type)
+  {
+    case IntegratorType::Euler:
+      taken = std::min(this->Step, limit);
+      return EulerStep(metric, y, taken) ? DormandPrince45::Accepted : DormandPrince45::Degenerate;
+    case IntegratorType::RungeKutta4:
+      taken = std::min(this->Step, limit);
+      return RungeKutta4Step(metric, y, taken) ? DormandPrince45::Accepted
+                                               : DormandPrince45::Degenerate;
+    case IntegratorType::DormandPrince45:
+      return this->Adaptive.Step(metric, y, this->Step, limit, taken);
+  }
+  return DormandPrince45::Degenerate;
+}
+
 DormandPrince45::DormandPrince45(double tolerance, double minimumStep, double maximumStep)
   : Tolerance(tolerance)
   , MinimumStep(minimumStep)

@@ -85,6 +85,34 @@ private:
   bool HaveCachedDerivative = false;
   Vec6 CachedDerivative;
 };
+/**
+ * @class GeodesicStepper
+ * @brief One integrator behind one interface: fixed-step Euler or RK4, or
+ * adaptive Dormand-Prince 5(4). Used by every tracer (geodesic polylines,
+ * rays of the inside view) so they step identically.
+ */
+class RIEMANNCOMMONMETRIC_EXPORT GeodesicStepper
+{
+public:
+  /// `step` is the fixed step, or the initial one for DormandPrince45.
+  GeodesicStepper(IntegratorType type, double step, double tolerance, double minimumStep,
+    double maximumStep);
+
+  /// Start a new geodesic (forgets the adaptive step's cached state).
+  void Reset();
+
+  /**
+   * Advance y by one step of at most `limit`; `taken` is the step used.
+   * Fixed-step methods return Accepted or Degenerate.
+   */
+  DormandPrince45::StepStatus Advance(const Metric& metric, Vec6& y, double limit, double& taken);
+
+private:
+  IntegratorType Type;
+  double InitialStep;
+  double Step;
+  DormandPrince45 Adaptive;
+};
 } // namespace riemann
 
 #endif
