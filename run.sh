@@ -23,7 +23,9 @@ PYTHON=/usr/bin/python3
 # Where vtk_module_wrap_python puts the `riemann` package in the build tree
 # (RIEMANN_PYTHON_DESTINATION in CMakeLists.txt).
 PYTHONPATH_BUILD="$BUILD_DIR/lib/python3/dist-packages"
-XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24")
+# -noreset: Xvfb otherwise resets when its last client disconnects and
+# refuses connections meanwhile, failing a test that opens a second window.
+XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git

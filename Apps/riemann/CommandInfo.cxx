@@ -102,8 +102,8 @@ void RegisterInfoCommand(CLI::App& app)
   command->add_option("--point,-p", args->Point, "Point X,Y,Z (default 0,0,0)");
   command->add_option("--precision", args->Precision, "Significant digits (default 10)")
     ->check(CLI::Range(1, 17));
-  command->add_flag("--glsl", args->Glsl,
-    "Print the metric's part of the ray-tracing shader (GLSL) instead");
+  command->add_flag(
+    "--glsl", args->Glsl, "Print the metric's part of the ray-tracing shader (GLSL) instead");
   command->callback([args]() { RunInfo(*args); });
 }
 } // namespace cli

@@ -15,6 +15,7 @@ namespace cli
 {
 void RegisterTraceCommand(CLI::App& app);
 void RegisterInfoCommand(CLI::App& app);
+void RegisterRenderCommand(CLI::App& app);
 }
 }
 

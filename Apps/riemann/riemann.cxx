@@ -17,6 +17,7 @@ int main(int argc, char** argv)
   app.set_version_flag("--version", std::string("riemann 0.1.0"));
   riemann::cli::RegisterTraceCommand(app);
   riemann::cli::RegisterInfoCommand(app);
+  riemann::cli::RegisterRenderCommand(app);
   // Warnings and errors of VTK objects without an explicit observer still reach
   // stderr through VTK's output window; no global switch is changed here.
   try

@@ -1,0 +1,449 @@
+// riemann render: the inside view of R^3 with a metric, ray traced per pixel
+// on the GPU by vtkRiemannRayTracePass, written through OpenImageIO; with
+// --bundle, side by side with an outside view of the scene and the same rays;
+// with --frames, an animation in the metric's time t; with --reference, an
+// image regression test in one command (as F3D's CLI).
+#include "CliUtilities.h"
+#include "Commands.h"
+
+#include "RiemannImageIO.h"
+#include "RiemannScene.h"
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayBundle.h"
+#include "vtkRiemannRayTracePass.h"
+#include "vtkRiemannScene.h"
+#include "vtkRiemannSceneSource.h"
+#include "vtkSphereSource.h"
+#include "vtkTubeFilter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+/// The paper's one Gaussian bump in the graph metric: the default picture.
+constexpr const char* DefaultMetric =
+  R"({"type": "graph", "gaussians": [{"amplitude": 1.0, "center": [0, 0, 0], "sigma": [0.5, 0.5, 0.5]}]})";
+
+struct RenderArguments
+{
+  std::string Metric;
+  std::string Scene;
+  int Width = 640;
+  int Height = 480;
+  std::string Backend = "gpu";
+  std::string CameraPosition;
+  std::string LookAt;
+  std::string ViewUp;
+  double Fov = 0.0;
+  bool Equirectangular = false;
+  std::string Integrator;
+  double Step = 0.0;
+  int MaximumSteps = 0;
+  double MaximumLength = 0.0;
+  int Frames = 1;
+  int Bundle = 0;
+  std::string Reference;
+  double Threshold = 1.0;
+  std::string Output;
+};
+
+/// "out.png", 3 -> "out_0003.png".
+std::string FramePath(const std::string& path, int frame)
+{
+  const size_t dot = path.find_last_of('.');
+  char number[16];
+  std::snprintf(number, sizeof(number), "_%04d", frame);
+  return path.substr(0, dot) + number + path.substr(dot);
+}
+
+/// The window's colour buffer as an image (row 0 at the top).
+Image Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkImageData* data = grab->GetOutput();
+  int dims[3];
+  data->GetDimensions(dims);
+  Image image;
+  image.Width = dims[0];
+  image.Height = dims[1];
+  image.Channels = 3;
+  image.ChannelNames = { "R", "G", "B" };
+  image.Pixels.resize(static_cast<size_t>(dims[0]) * dims[1] * 3);
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(data->GetPointData()->GetScalars());
+  for (int row = 0; row < dims[1]; ++row)
+  {
+    for (int column = 0; column < dims[0]; ++column)
+    {
+      const vtkIdType source = static_cast<vtkIdType>(row) * dims[0] + column;
+      const size_t target = (static_cast<size_t>(dims[1] - 1 - row) * dims[0] + column) * 3;
+      for (int c = 0; c < 3; ++c)
+      {
+        image.Pixels[target + c] = scalars->GetTypedComponent(source, c) / 255.0f;
+      }
+    }
+  }
+  return image;
+}
+
+/// Two pictures of the same height, side by side.
+Image SideBySide(const Image& left, const Image& right)
+{
+  Image both;
+  both.Width = left.Width + right.Width;
+  both.Height = left.Height;
+  both.Channels = 3;
+  both.ChannelNames = { "R", "G", "B" };
+  both.Pixels.resize(static_cast<size_t>(both.Width) * both.Height * 3);
+  for (int row = 0; row < both.Height; ++row)
+  {
+    std::copy_n(&left.Pixels[static_cast<size_t>(row) * left.Width * 3], left.Width * 3,
+      &both.Pixels[static_cast<size_t>(row) * both.Width * 3]);
+    std::copy_n(&right.Pixels[static_cast<size_t>(row) * right.Width * 3], right.Width * 3,
+      &both.Pixels[(static_cast<size_t>(row) * both.Width + left.Width) * 3]);
+  }
+  return both;
+}
+
+/// The outside view: the scene as ordinary geometry, the observer, and the
+/// bundle of its curved rays coloured by where they end.
+Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* inside,
+  vtkRiemannRayTracePass* pass, const RenderArguments& args, ErrorCollector* errors)
+{
+  vtkNew<vtkRiemannRayBundle> bundle;
+  errors->Observe(bundle);
+  bundle->SetMetric(metric);
+  bundle->SetScene(scene);
+  bundle->SetCamera(inside);
+  bundle->SetWidth(args.Width);
+  bundle->SetHeight(args.Height);
+  bundle->SetSubgridResolution(args.Bundle);
+  bundle->SetProjection(pass->GetProjection());
+  bundle->SetUseSceneSettings(pass->GetUseSceneSettings());
+  bundle->SetIntegratorType(pass->GetIntegratorType());
+  bundle->SetStepSize(pass->GetStepSize());
+  bundle->SetMaximumNumberOfSteps(pass->GetMaximumNumberOfSteps());
+  bundle->SetMaximumLength(pass->GetMaximumLength());
+  bundle->SetTolerance(pass->GetTolerance());
+  bundle->Update();
+  errors->ThrowIfAny("tracing the ray bundle failed:");
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.12, 0.13, 0.16);
+  renderer->SetBackground2(0.30, 0.32, 0.38);
+  renderer->GradientBackgroundOn();
+
+  vtkNew<vtkRiemannSceneSource> geometry;
+  geometry->SetScene(scene);
+  vtkNew<vtkPolyDataMapper> geometryMapper;
+  geometryMapper->SetInputConnection(geometry->GetOutputPort());
+  geometryMapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> geometryActor;
+  geometryActor->SetMapper(geometryMapper);
+  geometryActor->GetProperty()->SetOpacity(0.35);
+  renderer->AddActor(geometryActor);
+
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputConnection(bundle->GetOutputPort());
+  geometry->Update();
+  const double* bounds = geometry->GetOutput()->GetBounds();
+  const double size =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
+  tubes->SetRadius(0.0025 * size);
+  tubes->SetNumberOfSides(6);
+  vtkNew<vtkPolyDataMapper> rayMapper;
+  rayMapper->SetInputConnection(tubes->GetOutputPort());
+  rayMapper->SetScalarModeToUseCellFieldData();
+  rayMapper->SelectColorArray("EndColor");
+  rayMapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> rays;
+  rays->SetMapper(rayMapper);
+  renderer->AddActor(rays);
+
+  vtkNew<vtkSphereSource> eye;
+  eye->SetCenter(inside->GetPosition());
+  eye->SetRadius(0.015 * size);
+  vtkNew<vtkPolyDataMapper> eyeMapper;
+  eyeMapper->SetInputConnection(eye->GetOutputPort());
+  vtkNew<vtkActor> eyeActor;
+  eyeActor->SetMapper(eyeMapper);
+  eyeActor->GetProperty()->SetColor(1, 1, 1);
+  renderer->AddActor(eyeActor);
+
+  // Look at the scene and the observer from above and to the side of the
+  // observer's own view, so the bending of the rays shows.
+  vtkCamera* outside = renderer->GetActiveCamera();
+  const double* eyePosition = inside->GetPosition();
+  const double* focal = inside->GetFocalPoint();
+  double forward[3] = { focal[0] - eyePosition[0], focal[1] - eyePosition[1],
+    focal[2] - eyePosition[2] };
+  const double* up = inside->GetViewUp();
+  double side[3] = { forward[1] * up[2] - forward[2] * up[1],
+    forward[2] * up[0] - forward[0] * up[2], forward[0] * up[1] - forward[1] * up[0] };
+  outside->SetFocalPoint(focal);
+  outside->SetPosition(eyePosition[0] - forward[0] + 1.2 * side[0] + 0.8 * size * up[0],
+    eyePosition[1] - forward[1] + 1.2 * side[1] + 0.8 * size * up[1],
+    eyePosition[2] - forward[2] + 1.2 * side[2] + 0.8 * size * up[2]);
+  outside->SetViewUp(up);
+  renderer->ResetCamera();
+  outside->Zoom(1.3);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(4);
+  window->AddRenderer(renderer);
+  window->SetSize(args.Width, args.Height);
+  errors->Observe(window);
+  window->Render();
+  errors->ThrowIfAny("rendering the outside view failed:");
+  return Grab(window);
+}
+
+void ApplyCameraOptions(vtkCamera* camera, const RenderArguments& args)
+{
+  double v[3];
+  if (!args.CameraPosition.empty())
+  {
+    ParseVector3(args.CameraPosition, "--camera-position", v);
+    camera->SetPosition(v);
+  }
+  if (!args.LookAt.empty())
+  {
+    ParseVector3(args.LookAt, "--look-at", v);
+    camera->SetFocalPoint(v);
+  }
+  if (!args.ViewUp.empty())
+  {
+    ParseVector3(args.ViewUp, "--view-up", v);
+    camera->SetViewUp(v);
+  }
+  if (args.Fov > 0)
+  {
+    camera->SetViewAngle(args.Fov);
+  }
+}
+
+void RunRender(const RenderArguments& args)
+{
+  const std::string extension = Extension(args.Output);
+  if (extension != "png" && extension != "exr")
+  {
+    throw Failure("-o " + args.Output + ": the output must end in .png or .exr", 2);
+  }
+  if (args.Backend != "gpu")
+  {
+    throw Failure(
+      "--backend cpu: the CPU (Embree) tracer is not available yet; use --backend gpu", 2);
+  }
+  if (!args.Reference.empty() && args.Frames > 1)
+  {
+    throw Failure("--reference compares one picture: it cannot be used with --frames", 2);
+  }
+
+  // Scene, then metric: --metric, else the scene's metric, else the default.
+  vtkNew<vtkRiemannScene> scene;
+  if (!args.Scene.empty() && !scene->SetDefinitionFile(args.Scene.c_str()))
+  {
+    throw Failure(std::string("bad scene: ") + scene->GetLastError());
+  }
+  vtkSmartPointer<vtkRiemannMetric> metric;
+  if (!args.Metric.empty())
+  {
+    metric = LoadMetric(args.Metric);
+  }
+  else
+  {
+    metric = vtkSmartPointer<vtkRiemannMetric>::New();
+    const std::string text =
+      scene->HasMetricDefinition() ? scene->GetMetricDefinition() : DefaultMetric;
+    if (!metric->SetDefinition(text.c_str()))
+    {
+      throw Failure(std::string("bad metric in the scene: ") + metric->GetLastError());
+    }
+  }
+
+  vtkNew<ErrorCollector> errors;
+  vtkNew<vtkRiemannRayTracePass> pass;
+  errors->Observe(pass);
+  pass->SetMetric(metric);
+  pass->SetScene(scene);
+  const riemann::Scene& description = scene->GetScene();
+  const bool overrides =
+    !args.Integrator.empty() || args.Step > 0 || args.MaximumSteps > 0 || args.MaximumLength > 0;
+  if (overrides)
+  {
+    // Start from the scene's settings and replace what was given.
+    pass->SetUseSceneSettings(false);
+    static const std::map<std::string, int> integrators = {
+      { "euler", vtkRiemannRayTracePass::EULER }, { "rk4", vtkRiemannRayTracePass::RUNGE_KUTTA4 },
+      { "adaptive", vtkRiemannRayTracePass::ADAPTIVE }
+    };
+    pass->SetIntegratorType(args.Integrator.empty() ? static_cast<int>(description.Rays.Integrator)
+                                                    : integrators.at(args.Integrator));
+    pass->SetStepSize(args.Step > 0 ? args.Step : description.Rays.Step);
+    pass->SetMaximumNumberOfSteps(
+      args.MaximumSteps > 0 ? args.MaximumSteps : description.Rays.MaximumSteps);
+    pass->SetMaximumLength(
+      args.MaximumLength > 0 ? args.MaximumLength : description.Rays.MaximumLength);
+    pass->SetTolerance(description.Rays.Tolerance);
+  }
+  if (args.Equirectangular)
+  {
+    pass->SetUseSceneSettings(false);
+    pass->SetProjection(vtkRiemannRayTracePass::EQUIRECTANGULAR);
+  }
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetPass(pass);
+  errors->Observe(renderer);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  scene->ApplyCamera(camera);
+  ApplyCameraOptions(camera, args);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  window->SetSize(args.Width, args.Height);
+  errors->Observe(window);
+
+  const int frames = args.Frames;
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    const double t = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+    if (!metric->SetTime(t))
+    {
+      throw Failure(std::string("bad metric: ") + metric->GetLastError());
+    }
+    window->Render();
+    errors->ThrowIfAny("rendering failed:");
+    Image picture = Grab(window);
+    if (args.Bundle > 0)
+    {
+      picture = SideBySide(picture, RenderOutside(metric, scene, camera, pass, args, errors));
+    }
+    const std::string path = frames > 1 ? FramePath(args.Output, frame) : args.Output;
+    const std::string error = WriteImage(path, picture);
+    if (!error.empty())
+    {
+      throw Failure(error);
+    }
+    if (frames > 1)
+    {
+      std::cerr << "riemann render: frame " << frame + 1 << "/" << frames << " (t = " << t
+                << ") -> " << path << "\n";
+    }
+    if (!args.Reference.empty())
+    {
+      Image reference;
+      const std::string readError = ReadImage(args.Reference, reference);
+      if (!readError.empty())
+      {
+        throw Failure(readError);
+      }
+      const double difference = ImageDifference(picture, reference);
+      if (difference < 0)
+      {
+        throw Failure("the picture (" + std::to_string(picture.Width) + "x" +
+            std::to_string(picture.Height) + ") and the reference (" +
+            std::to_string(reference.Width) + "x" + std::to_string(reference.Height) +
+            ") differ in size",
+          3);
+      }
+      std::cerr << "riemann render: difference to " << args.Reference << ": " << difference
+                << " (threshold " << args.Threshold << ")\n";
+      if (difference > args.Threshold)
+      {
+        throw Failure("the picture differs from the reference: " + std::to_string(difference) +
+            " > threshold " + std::to_string(args.Threshold),
+          3);
+      }
+    }
+  }
+}
+} // namespace
+
+void RegisterRenderCommand(CLI::App& app)
+{
+  auto args = std::make_shared<RenderArguments>();
+  CLI::App* command = app.add_subcommand("render",
+    "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU).\n"
+    "Without --metric and --scene: the paper's grid with one Gaussian bump.");
+  command
+    ->add_option("--metric,-m", args->Metric,
+      "Metric definition (JSON file); default: the scene's metric, else the paper's bump")
+    ->check(CLI::ExistingFile);
+  command
+    ->add_option(
+      "--scene,-s", args->Scene, "Scene (JSON file, see Data/scenes); default: the paper's grid")
+    ->check(CLI::ExistingFile);
+  command->add_option("--width", args->Width, "Image width in pixels (default 640)")
+    ->check(CLI::Range(1, 16384));
+  command->add_option("--height", args->Height, "Image height in pixels (default 480)")
+    ->check(CLI::Range(1, 16384));
+  command->add_option("--backend", args->Backend, "gpu (default); cpu comes with the Embree tracer")
+    ->check(CLI::IsMember({ "gpu", "cpu" }));
+  command->add_option(
+    "--camera-position", args->CameraPosition, "Observer X,Y,Z (default: the scene's camera)");
+  command->add_option("--look-at", args->LookAt, "Focal point X,Y,Z");
+  command->add_option("--view-up", args->ViewUp, "View up X,Y,Z");
+  command->add_option("--fov", args->Fov, "Vertical field of view in degrees")
+    ->check(CLI::Range(1.0, 179.0));
+  command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
+  command
+    ->add_option("--integrator", args->Integrator, "euler, rk4 or adaptive (default: the scene's)")
+    ->check(CLI::IsMember({ "euler", "rk4", "adaptive" }));
+  command->add_option("--step", args->Step, "Step in arc length (default: the scene's)")
+    ->check(CLI::Range(1e-6, 100.0));
+  command
+    ->add_option("--max-steps", args->MaximumSteps, "Steps per ray at most (default: the scene's)")
+    ->check(CLI::Range(1, 1000000));
+  command
+    ->add_option(
+      "--max-length", args->MaximumLength, "Arc length per ray at most (default: the scene's)")
+    ->check(CLI::Range(1e-6, 1e6));
+  command
+    ->add_option("--frames", args->Frames,
+      "Animate the metric's time t from 0 to 1 over N frames, written as OUT_0000.png, ...")
+    ->check(CLI::Range(1, 100000));
+  command
+    ->add_option("--bundle", args->Bundle,
+      "Also draw an outside view with an N x N bundle of the rays, side by side")
+    ->check(CLI::Range(1, 256));
+  command
+    ->add_option("--reference", args->Reference, "Compare with this picture; exit 3 if it differs")
+    ->check(CLI::ExistingFile);
+  command
+    ->add_option("--threshold", args->Threshold,
+      "Largest accepted mean per-pixel difference to the reference, 0-255 (default 1)")
+    ->check(CLI::Range(0.0, 255.0));
+  command->add_option("--output,-o", args->Output, "Output picture: .png or .exr")->required();
+  command->callback([args]() { RunRender(*args); });
+}
+} // namespace cli
+} // namespace riemann

@@ -1,0 +1,110 @@
+"""vtkRiemannRayTracePass from Python: render a small inside view.
+
+Euclidean space and one solid sphere on a plain background: the centre pixel
+is the sphere's colour and a corner the background's (colours that are exact
+in 8 bits). Then the Gaussian bump of the paper with the same program
+(a new amplitude is a uniform), and a captured hit point read back as numbers.
+
+Run by ctest under xvfb-run with /usr/bin/python3 and PYTHONPATH set to the
+build tree's package folder (see cmake/RiemannTesting.cmake).
+"""
+
+import math
+import sys
+
+import riemann
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkWindowToImageFilter
+
+WIDTH, HEIGHT = 64, 48
+
+SCENE = """{
+  "background": [0.4, 0.2, 0.0],
+  "integrator": {"method": "rk4", "step": 0.25, "max_steps": 200, "max_length": 12},
+  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+               "material": {"type": "solid", "color": [0.2, 0.6, 1.0]}}]
+}"""
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+metric = riemann.vtkRiemannMetric()
+check(metric.SetDefinition('{"type": "euclidean"}'), metric.GetLastError())
+scene = riemann.vtkRiemannScene()
+check(scene.SetDefinition(SCENE), scene.GetLastError())
+check(scene.HasDefinition() and scene.GetNumberOfObjects() == 1, "the scene has one object")
+
+rt = riemann.vtkRiemannRayTracePass()
+rt.SetMetric(metric)
+rt.SetScene(scene)
+rt.CaptureHitsOn()
+
+errors = []
+rt.AddObserver(vtkCommand.ErrorEvent, lambda obj, event: errors.append(obj.GetLastError()))
+
+renderer = vtkRenderer()
+renderer.SetPass(rt)
+camera = renderer.GetActiveCamera()
+camera.SetPosition(0, 0, 5)
+camera.SetFocalPoint(0, 0, 0)
+camera.SetViewUp(0, 1, 0)
+camera.SetViewAngle(30)
+
+window = vtkRenderWindow()
+window.SetOffScreenRendering(1)
+window.SetMultiSamples(0)
+window.SetSize(WIDTH, HEIGHT)
+window.AddRenderer(renderer)
+
+
+def render():
+    """Render; the RGB pixels, row 0 at the bottom."""
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ShouldRerenderOff()
+    grab.Update()
+    return grab.GetOutput().GetPointData().GetScalars()
+
+
+def pixel(pixels, column, row):
+    i = row * WIDTH + column
+    return tuple(int(pixels.GetComponent(i, c)) for c in range(3))
+
+
+pixels = render()
+check(not errors, "no VTK error: %s" % errors)
+check(rt.GetLastError() == "", "GetLastError() is empty: %r" % rt.GetLastError())
+check(pixel(pixels, 32, 24) == (51, 153, 255), "centre pixel %s is the sphere's colour" % (pixel(pixels, 32, 24),))
+check(pixel(pixels, 0, 0) == (102, 51, 0), "corner pixel %s is the background" % (pixel(pixels, 0, 0),))
+
+# The hit of the centre pixel: on the unit sphere, about 4 from the eye.
+hits = rt.GetHitImage()
+check(rt.GetHitImageWidth() == WIDTH and rt.GetHitImageHeight() == HEIGHT, "hit image size")
+x, y, z, s = hits.GetTuple4(24 * WIDTH + 32)
+check(abs(math.sqrt(x * x + y * y + z * z) - 1.0) < 1e-4, "centre hit (%g, %g, %g) on the sphere" % (x, y, z))
+check(abs(s - (5.0 - z)) < 1e-3 and s > 3.9, "centre hit arc length %g" % s)
+x, y, z, s = hits.GetTuple4(0)
+check(s == -1.0, "corner ray has no hit (%g)" % s)
+
+# A Gaussian bump: new structure (one compile), then a new amplitude (none).
+bump = '{"type": "graph", "gaussians": [{"amplitude": %g, "center": [0, 0, 2], "sigma": 0.6}]}'
+check(metric.SetDefinition(bump % 0.5), metric.GetLastError())
+render()
+compilations = rt.GetNumberOfShaderCompilations()
+check(metric.SetDefinition(bump % 1.2), metric.GetLastError())
+render()
+check(rt.GetNumberOfShaderCompilations() == compilations, "a new amplitude does not recompile")
+check(not errors, "no VTK error: %s" % errors)
+
+if failures:
+    print("%d check(s) failed" % len(failures))
+    sys.exit(1)
+print("TestRayTracePass.py: all checks passed")
