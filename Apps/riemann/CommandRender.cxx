@@ -11,6 +11,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -167,21 +168,41 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   geometryMapper->SetColorModeToDirectScalars();
   vtkNew<vtkActor> geometryActor;
   geometryActor->SetMapper(geometryMapper);
-  geometryActor->GetProperty()->SetOpacity(0.35);
+  geometryActor->GetProperty()->SetOpacity(0.2);
   renderer->AddActor(geometryActor);
 
+  // Rays that hit are coloured by the surface where they end (the inside
+  // view's colour there); rays that escape are light grey, visible on the
+  // dark background.
+  vtkNew<vtkPolyData> rayLines;
+  rayLines->ShallowCopy(bundle->GetOutput());
+  vtkNew<vtkUnsignedCharArray> rayColors;
+  rayColors->DeepCopy(rayLines->GetCellData()->GetArray("EndColor"));
+  rayColors->SetName("RayColor");
+  vtkDataArray* hits = rayLines->GetCellData()->GetArray("Hit");
+  for (vtkIdType i = 0; i < rayColors->GetNumberOfTuples(); ++i)
+  {
+    if (hits->GetTuple1(i) == 0)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rayColors->SetTypedComponent(i, c, 200);
+      }
+    }
+  }
+  rayLines->GetCellData()->AddArray(rayColors);
   vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputConnection(bundle->GetOutputPort());
+  tubes->SetInputData(rayLines);
   geometry->Update();
   const double* bounds = geometry->GetOutput()->GetBounds();
   const double size =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-  tubes->SetRadius(0.0025 * size);
+  tubes->SetRadius(0.003 * size);
   tubes->SetNumberOfSides(6);
   vtkNew<vtkPolyDataMapper> rayMapper;
   rayMapper->SetInputConnection(tubes->GetOutputPort());
   rayMapper->SetScalarModeToUseCellFieldData();
-  rayMapper->SelectColorArray("EndColor");
+  rayMapper->SelectColorArray("RayColor");
   rayMapper->SetColorModeToDirectScalars();
   vtkNew<vtkActor> rays;
   rays->SetMapper(rayMapper);
@@ -212,8 +233,15 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
     eyePosition[1] - forward[1] + 1.2 * side[1] + 0.8 * size * up[1],
     eyePosition[2] - forward[2] + 1.2 * side[2] + 0.8 * size * up[2]);
   outside->SetViewUp(up);
-  renderer->ResetCamera();
-  outside->Zoom(1.3);
+  // Frame the scene and the observer, not the escaping rays' far ends.
+  double frame[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    frame[2 * axis] = std::min(frame[2 * axis], eyePosition[axis]);
+    frame[2 * axis + 1] = std::max(frame[2 * axis + 1], eyePosition[axis]);
+  }
+  renderer->ResetCamera(frame);
+  outside->Zoom(1.2);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);

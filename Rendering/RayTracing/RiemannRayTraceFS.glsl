@@ -11,8 +11,10 @@
 //   RT::Scene::Impl        RiemannRayTraceScene.glsl
 //   RT::Integrators::Impl  RiemannRayTraceIntegrators.glsl
 //   RT::Extra::Impl        vtkRiemannRayTracePass::ExtraShaderCode
-// Everything else (camera, integrator, step, scene objects, metric numbers) is
-// a uniform: changing it never recompiles the program.
+// Everything else (camera, step, scene objects, metric numbers, time) is a
+// uniform: changing it never recompiles the program. The integrator is the
+// one compile-time choice (RT_INTEGRATOR): with all three in one loop, Mesa's
+// llvmpipe paid for every branch at every step, so Euler cost as much as RK4.
 // ---------------------------------------------------------------------------
 
 //VTK::Output::Dec
@@ -45,8 +47,6 @@ uniform float rt_tan_half_angle;
 uniform int rt_projection;
 
 // ---- integration (riemann::RaySettings) ----
-// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).
-uniform int rt_integrator;
 uniform float rt_step;
 uniform int rt_max_steps;
 uniform float rt_max_length;
@@ -120,21 +120,16 @@ int rt_trace(vec3 x, vec3 v, out vec3 hitPosition, out vec3 hitNormal, out int h
     vec3 v0 = v;
     float taken = 0.0;
     int status = RT_ACCEPTED;
-    if (rt_integrator == 0)
-    {
-      taken = min(h, remaining);
-      status = rt_euler_step(x, v, taken) ? RT_ACCEPTED : RT_DEGENERATE;
-    }
-    else if (rt_integrator == 1)
-    {
-      taken = min(h, remaining);
-      status = rt_rk4_step(x, v, taken) ? RT_ACCEPTED : RT_DEGENERATE;
-    }
-    else
-    {
-      status = rt_dp45_step(
-        x, v, a1, cached, h, remaining, rt_min_step, rt_max_step, rt_tolerance, taken);
-    }
+#if RT_INTEGRATOR == 0
+    taken = min(h, remaining);
+    status = rt_euler_step(x, v, taken) ? RT_ACCEPTED : RT_DEGENERATE;
+#elif RT_INTEGRATOR == 1
+    taken = min(h, remaining);
+    status = rt_rk4_step(x, v, taken) ? RT_ACCEPTED : RT_DEGENERATE;
+#else
+    status =
+      rt_dp45_step(x, v, a1, cached, h, remaining, rt_min_step, rt_max_step, rt_tolerance, taken);
+#endif
     if (status != RT_ACCEPTED || any(isnan(x)) || any(isinf(x)) || any(isnan(v)) ||
       any(isinf(v)))
     {

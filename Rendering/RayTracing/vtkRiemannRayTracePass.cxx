@@ -452,7 +452,9 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
             << "#define RT_MAX_PLANES " << riemann::MaximumPlanes << "\n"
             << "#define RT_MAX_BOXES " << riemann::MaximumBoxes << "\n"
             << "#define RT_MAX_GRIDS " << riemann::MaximumGrids << "\n"
-            << "#define RT_MAX_OBJECTS " << maximumObjects << "\n";
+            << "#define RT_MAX_OBJECTS " << maximumObjects << "\n"
+            << "// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).\n"
+            << "#define RT_INTEGRATOR " << static_cast<int>(rays.Integrator) << "\n";
   std::string source = RiemannRayTraceFS;
   Replace(source, "//RT::Constants::Dec", constants.str());
   Replace(source, "//RT::Metric::Impl", metricGlsl.Source);
@@ -635,7 +637,6 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
     static_cast<float>(std::tan(0.5 * vtkMath::RadiansFromDegrees(cameraSettings.ViewAngle))));
   program->SetUniformi("rt_projection", projection);
 
-  program->SetUniformi("rt_integrator", static_cast<int>(rays.Integrator));
   program->SetUniformf("rt_step", static_cast<float>(rays.Step));
   program->SetUniformi("rt_max_steps", rays.MaximumSteps);
   program->SetUniformf("rt_max_length", static_cast<float>(rays.MaximumLength));

@@ -124,6 +124,69 @@ class TraceTests(unittest.TestCase):
         self.assertIn("volume form sqrt(det g): 2.236067977", out)
 
 
+def png_size_and_pixels(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    return width, height, vtk_to_numpy(image.GetPointData().GetScalars()).copy()
+
+
+class RenderTests(unittest.TestCase):
+    """riemann render: needs an X display (ctest runs under xvfb-run)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_bundle_side_by_side(self):
+        out = os.path.join(self.dir, "bundle.png")
+        status, _, err = run("render", "--width", "80", "--height", "60", "--bundle", "4", "-o", out)
+        self.assertEqual(status, 0, err)
+        width, height, pixels = png_size_and_pixels(out)
+        self.assertEqual((width, height), (160, 60))
+        # Both halves hold a picture (not a flat colour).
+        left = pixels.reshape(60, 160, -1)[:, :80]
+        right = pixels.reshape(60, 160, -1)[:, 80:]
+        self.assertGreater(left.std(), 10)
+        self.assertGreater(right.std(), 5)
+
+    def test_frames_follow_the_animated_metric(self):
+        metric = os.path.join(self.dir, "growing.json")
+        with open(metric, "w") as f:
+            f.write('{"type": "graph", "gaussians": [{"amplitude": {"from": 0, "to": 1.5}, '
+                    '"center": [0,0,0], "sigma": 0.5}]}')
+        out = os.path.join(self.dir, "frame.png")
+        status, _, err = run("render", "-m", metric, "--width", "64", "--height", "48",
+                             "--frames", "3", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertEqual(err.count("riemann render: frame"), 3)
+        frames = [png_size_and_pixels(os.path.join(self.dir, f"frame_{k:04d}.png"))[2] for k in range(3)]
+        self.assertFalse(os.path.exists(out), "a sequence writes numbered files only")
+        # t = 0 is flat space: different from the bumped frames, which differ from each other.
+        self.assertGreater(abs(frames[0].astype(int) - frames[2].astype(int)).mean(), 1.0)
+        self.assertGreater(abs(frames[1].astype(int) - frames[2].astype(int)).mean(), 0.5)
+
+    def test_reference_mismatch_fails(self):
+        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/RayTracing/Testing/Data/Baseline")
+        out = os.path.join(self.dir, "x.png")
+        status, _, err = run("render", "--scene", os.path.join(DATA, "scenes", "paper-grid.json"),
+                             "--width", "160", "--height", "120",
+                             "--reference", os.path.join(baseline, "paper-one-bump.png"), "-o", out)
+        self.assertEqual(status, 3, err)
+        self.assertIn("differs from the reference", err)
+        status, _, err = run("render", "--scene", os.path.join(DATA, "scenes", "paper-grid.json"),
+                             "--width", "160", "--height", "120",
+                             "--reference", os.path.join(baseline, "paper-grid.png"), "-o", out)
+        self.assertEqual(status, 0, err)
+
+
 class GlslTests(unittest.TestCase):
     def test_every_example_metric_emits_valid_glsl(self):
         """`riemann info --glsl` for each Data/metrics file compiles as GLSL 3.30 (glslangValidator)."""
@@ -180,6 +243,12 @@ BAD_INPUTS = [
     ("info at a bad point", ["info", "-m", "METRIC", "-p", "1,2,inf"], '{"type": "euclidean"}',
      "--point: expected three finite"),
     ("no subcommand", [], None, "A subcommand is required"),
+    ("render: CPU backend", ["render", "--backend", "cpu", "-o", "OUT.png"], None, "not available yet"),
+    ("render: wrong extension", ["render", "-o", "OUT.txt"], None, "must end in .png or .exr"),
+    ("render: bad scene", ["render", "--scene", "METRIC", "-o", "OUT.png"], '{"objects": [{"type": "sphere"}]}',
+     "bad scene"),
+    ("render: reference with frames", ["render", "--frames", "2", "--reference", "METRIC", "-o", "OUT.png"],
+     '{"type": "euclidean"}', "cannot be used with --frames"),
 ]
 
 
@@ -195,6 +264,7 @@ class BadInputTests(unittest.TestCase):
                 f.write("x,y,z,dx,dy,dz\n0,0,0,1,0,0\n1,abc,0,1,0,0\n")
             out = os.path.join(d, "out.csv")
             resolved = [a.replace("METRIC", metric).replace("OUT.csv", out).replace("OUT.txt", out[:-3] + "txt")
+                        .replace("OUT.png", out[:-3] + "png")
                         .replace("SEEDS", seeds) for a in args]
             status, _, err = run(*resolved)
             leftovers = [n for n in os.listdir(d) if n not in ("metric.json", "seeds.csv")]

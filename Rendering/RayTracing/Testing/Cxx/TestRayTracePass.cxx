@@ -457,7 +457,11 @@ TEST(RayTracePass, TwistHitsEulerVersusRungeKutta)
       view.Pass->GetHitImage()->GetPointer(0) + 4 * width * height);
   }
   EXPECT_TRUE(errors.Messages.empty()) << errors.All();
-  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 1) << "the integrator is a uniform";
+  // The integrator is the one compile-time choice (one program each, cached).
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3);
+  view.Pass->SetIntegratorType(integrators[0]);
+  view.Render();
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3) << "switching back reuses the program";
 
   const riemann::Scene& scene = view.Scene->GetScene();
   const riemann::Metric& metric = *view.Metric->GetMetric();
