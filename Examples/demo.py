@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""RiemannVTK demo: a bundle of geodesics through the paper's Gaussian bump.
+"""RiemannVTK demo: the paper's Gaussian bump, from inside and from outside.
 
 An observer at (-2.5, 0, 0) looks along +x through the graph metric of
 f = exp(-|p|^2 / (2 * 0.5^2)) (Novello, da Silva, Velho, "Design and
@@ -7,6 +7,9 @@ visualization of Riemannian metrics"). Rays leave the observer on a grid of
 directions, unit speed in g, and are traced with RK4; the bump deflects the
 rays that pass near it. The demo writes
 
+  <output-dir>/inside.png   the inside view of the built-in default scene (the
+                            paper's grid of bars warped by the bump), ray traced
+                            per pixel on the GPU by vtkRiemannRayTracePass
   <output-dir>/bundle.vtp   the geodesics (ArcLength, Velocity, SpeedDrift, ...)
   <output-dir>/bundle.png   an offscreen VTK picture of the bundle
 
@@ -169,6 +172,35 @@ def render(lines, max_deflection, png_path, size):
     write_atomically(png_path, write_png)
 
 
+def render_inside_view(metric, png_path, size):
+    """The default scene (the paper's grid) seen through the metric, on the GPU."""
+    scene = riemann.vtkRiemannScene()          # no definition: the built-in default scene
+    trace = riemann.vtkRiemannRayTracePass()
+    trace.SetMetric(metric)
+    trace.SetScene(scene)
+    renderer = vtkRenderer()
+    renderer.SetPass(trace)
+    scene.ApplyCamera(renderer.GetActiveCamera())
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(*size)
+    window.Render()
+    if trace.GetLastError():
+        sys.exit("demo: " + trace.GetLastError())
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+
+    def write_png(path):
+        writer = vtkPNGWriter()
+        writer.SetFileName(path)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+    write_atomically(png_path, write_png)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--output-dir", default="demo-output")
@@ -207,10 +239,12 @@ def main():
             raise RuntimeError("could not write " + path)
     write_atomically(vtp, write_vtp)
     render(lines, max_deflection, png, size)
+    inside = os.path.join(args.output_dir, "inside.png")
+    render_inside_view(metric, inside, size)
     print(f"demo: {lines.GetNumberOfLines()} geodesics of the Gaussian-bump graph metric, "
           f"{lines.GetNumberOfPoints()} points, max deflection {max_deflection:.1f} deg, "
           f"max |g(v,v)-1| {drift:.1e}")
-    print(f"demo: wrote {vtp} and {png}")
+    print(f"demo: wrote {inside}, {vtp} and {png}")
 
 
 if __name__ == "__main__":

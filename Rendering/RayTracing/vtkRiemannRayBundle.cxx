@@ -77,7 +77,11 @@ int vtkRiemannRayBundle::RequestData(
     ? this->Scene->GetSceneSnapshot()
     : std::make_shared<const riemann::Scene>(riemann::DefaultScene());
 
-  riemann::CameraSettings settings = scene->Camera;
+  // The camera and projection follow the same rules as vtkRiemannRayTracePass:
+  // the vtkCamera if given, else the scene's camera (else the default scene's);
+  // the projection from the scene's camera when UseSceneSettings.
+  riemann::CameraSettings settings =
+    scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera;
   if (this->Camera)
   {
     const double* p = this->Camera->GetPosition();
@@ -88,8 +92,11 @@ int vtkRiemannRayBundle::RequestData(
     settings.ViewUp = riemann::Vec3(u[0], u[1], u[2]);
     settings.ViewAngle = this->Camera->GetViewAngle();
   }
-  settings.Mode = this->Projection == EQUIRECTANGULAR ? riemann::Projection::Equirectangular
-                                                      : riemann::Projection::Perspective;
+  if (!(this->UseSceneSettings && scene->HasCamera))
+  {
+    settings.Mode = this->Projection == EQUIRECTANGULAR ? riemann::Projection::Equirectangular
+                                                        : riemann::Projection::Perspective;
+  }
   std::unique_ptr<riemann::ObserverCamera> camera;
   try
   {

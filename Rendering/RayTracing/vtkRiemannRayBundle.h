@@ -20,8 +20,9 @@
  * `ReasonForTermination` (vtkRiemannGeodesicTracer's codes; 9 = hit).
  *
  * The camera is a vtkCamera (SetCamera); without one, the scene's camera,
- * else the default scene's. Integration settings come from the scene unless
- * UseSceneSettings is off, exactly as for vtkRiemannRayTracePass.
+ * else the default scene's. Integration settings, and the projection of the
+ * scene's camera, come from the scene unless UseSceneSettings is off, exactly
+ * as for vtkRiemannRayTracePass.
  */
 #ifndef vtkRiemannRayBundle_h
 #define vtkRiemannRayBundle_h

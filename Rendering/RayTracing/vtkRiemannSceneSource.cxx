@@ -94,15 +94,20 @@ int vtkRiemannSceneSource::RequestData(
         {
           const int b = (a + 1) % 3;
           const int c = (a + 2) % 3;
-          const auto first = [&](int axis) { return std::ceil(e[2 * axis] / o.Spacing); };
-          const auto last = [&](int axis) { return std::floor(e[2 * axis + 1] / o.Spacing); };
+          // The lattice lines inside the extent, with the ray tracers' 1e-9
+          // slack so that rounding (-0.3 / 0.1 = -2.9999999999999996) keeps
+          // the boundary lines.
+          const auto first = [&](int axis) { return std::ceil(e[2 * axis] / o.Spacing - 1e-9); };
+          const auto last = [&](int axis)
+          { return std::floor(e[2 * axis + 1] / o.Spacing + 1e-9); };
           for (double i = first(b); i <= last(b); ++i)
           {
             for (double j = first(c); j <= last(c); ++j)
             {
               double bounds[6];
-              bounds[2 * a] = e[2 * a];
-              bounds[2 * a + 1] = e[2 * a + 1];
+              // Bars run the extent plus half the thickness (RiemannScene.h).
+              bounds[2 * a] = e[2 * a] - 0.5 * o.Thickness;
+              bounds[2 * a + 1] = e[2 * a + 1] + 0.5 * o.Thickness;
               bounds[2 * b] = i * o.Spacing - 0.5 * o.Thickness;
               bounds[2 * b + 1] = i * o.Spacing + 0.5 * o.Thickness;
               bounds[2 * c] = j * o.Spacing - 0.5 * o.Thickness;
