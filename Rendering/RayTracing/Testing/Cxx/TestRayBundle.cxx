@@ -382,6 +382,44 @@ TEST(RayBundle, IsThePassRaysForThePaperBump)
   ExpectBundleIsThePassRays("one bump", metric, scene, view);
 }
 
+/// Every family's GLSL (graph sums and quadratics, twist, bumps with a
+/// direction or an affine field, compositions, conformal, constant tensor,
+/// Euclidean), run on the GPU, gives the CPU's rays: each example metric in
+/// Data/metrics, seen through a sphere-and-wall scene.
+TEST(RayBundle, IsThePassRaysForEveryExampleMetric)
+{
+  const std::filesystem::path data = DataDirectory();
+  vtkNew<vtkRiemannScene> scene;
+  ASSERT_TRUE(scene->SetDefinition(R"({
+    "integrator": {"method": "rk4", "step": 0.02, "max_steps": 1500, "max_length": 12},
+    "objects": [
+      {"type": "sphere", "center": [0.1, 0.05, 0], "radius": 0.3},
+      {"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1]}]})"))
+    << scene->GetLastError();
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(data / "metrics"))
+  {
+    files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 10u);
+  for (const std::filesystem::path& file : files)
+  {
+    vtkNew<vtkRiemannMetric> metric;
+    ASSERT_TRUE(metric->SetDefinitionFile(file.c_str())) << metric->GetLastError();
+    View view(40, 30, metric, scene);
+    vtkCamera* camera = view.Camera();
+    // Off every axis, so that no symmetry hides a wrong term; close, so that
+    // even the steep quadratics (|grad f| grows like 2|p|) let rays hit.
+    camera->SetPosition(0.35, 0.2, 1.4);
+    camera->SetFocalPoint(0.05, 0.0, -0.25);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetViewAngle(45);
+    const std::string name = file.filename().string();
+    ExpectBundleIsThePassRays(name.c_str(), metric, scene, view);
+  }
+}
+
 /// The paper's bump seen from inside the grid, all around (equirectangular).
 constexpr const char* EquirectangularSceneJson = R"({
   "camera": {"position": [0.4, 0.3, 1.6], "look_at": [0, 0, 0], "view_up": [0, 1, 0],
