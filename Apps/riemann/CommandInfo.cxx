@@ -73,8 +73,32 @@ void RunInfo(const InfoArguments& args)
   if (!metric->Tensor(point, g) || !metric->InverseTensor(point, inverse) ||
     !metric->Christoffel(point, gamma))
   {
+    // Say what is wrong: the values of g when they are finite, else that
+    // they are not; geodesics and rays stop at such points.
+    std::ostringstream why;
+    why << std::setprecision(args.Precision);
+    if (g.allFinite())
+    {
+      PrintMatrix(out, "g_ij:", g);
+      const Eigen::SelfAdjointEigenSolver<Mat3> eigen(g, Eigen::EigenvaluesOnly);
+      if (eigen.eigenvalues().minCoeff() <= 0)
+      {
+        why << "the metric is not positive definite at this point (eigenvalues of g: "
+            << eigen.eigenvalues().transpose() << ")";
+      }
+      else
+      {
+        why << "the metric is degenerate at this point (its family refuses it here: e.g. a "
+               "refractive index n <= 0, or det J = 0 for a diffeomorphism)";
+      }
+    }
+    else
+    {
+      why << "the metric is not defined at this point (g is not finite)";
+    }
+    why << "; geodesics and rays stop here (ReasonForTermination 8, degenerate metric)";
     std::cout << out.str();
-    throw Failure("the metric is degenerate at this point (not positive definite or not finite)");
+    throw Failure(why.str());
   }
   PrintMatrix(out, "g_ij:", g);
   PrintMatrix(out, "g^ij:", inverse);

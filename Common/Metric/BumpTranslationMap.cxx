@@ -142,9 +142,15 @@ std::string BumpTranslationMap::EmitGlsl(GlslBuilder& builder) const
     "  float f = 0.0;\n"
     "  vec3 gf = vec3(0.0);\n"
     "  mat3 hf = mat3(0.0);\n"
-    "  " + field + "(p, f, gf, hf);\n"
-    "  mat3 A = " + a + ";\n"
-    "  vec3 v = A * (p - " + c + ") + " + b + ";\n"
+    "  " +
+    field +
+    "(p, f, gf, hf);\n"
+    "  mat3 A = " +
+    a +
+    ";\n"
+    "  vec3 v = A * (p - " +
+    c + ") + " + b +
+    ";\n"
     "  y = p + f * v;\n"
     "  J = mat3(1.0) + outerProduct(v, gf) + f * A;\n"
     "  // H_s = v_s hf + gf a_s^T + a_s gf^T with a_s the row s of A.\n"

@@ -116,25 +116,29 @@ void ConformalMetric::EmitGlsl(GlslBuilder& builder) const
                       "  float n = 0.0;\n"
                       "  vec3 gn = vec3(0.0);\n"
                       "  mat3 hn = mat3(0.0);\n"
-                      "  " + n + "(p, n, gn, hn);\n"
-                      "  g = (n * n) * mat3(1.0);\n"
-                      "  return n > 0.0;\n"
-                      "}\n");
+                      "  " +
+    n +
+    "(p, n, gn, hn);\n"
+    "  g = (n * n) * mat3(1.0);\n"
+    "  return n > 0.0;\n"
+    "}\n");
   builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
                       "{\n"
                       "  float n = 0.0;\n"
                       "  vec3 gn = vec3(0.0);\n"
                       "  mat3 hn = mat3(0.0);\n"
-                      "  " + n + "(p, n, gn, hn);\n"
-                      "  if (!(n > 0.0))\n"
-                      "  {\n"
-                      "    a = vec3(0.0);\n"
-                      "    return false;\n"
-                      "  }\n"
-                      "  vec3 l = gn / n;\n"
-                      "  a = dot(v, v) * l - 2.0 * dot(l, v) * v;\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  " +
+    n +
+    "(p, n, gn, hn);\n"
+    "  if (!(n > 0.0))\n"
+    "  {\n"
+    "    a = vec3(0.0);\n"
+    "    return false;\n"
+    "  }\n"
+    "  vec3 l = gn / n;\n"
+    "  a = dot(v, v) * l - 2.0 * dot(l, v) * v;\n"
+    "  return true;\n"
+    "}\n");
 }
 
 } // namespace riemann

@@ -116,24 +116,28 @@ void DiffeoMetric::EmitGlsl(GlslBuilder& builder) const
                       "{\n"
                       "  vec3 y;\n"
                       "  mat3 J, H0, H1, H2;\n"
-                      "  " + phi + "(p, y, J, H0, H1, H2);\n"
-                      "  g = transpose(J) * J;\n"
-                      "  return abs(determinant(J)) > 1e-6;\n"
-                      "}\n");
+                      "  " +
+    phi +
+    "(p, y, J, H0, H1, H2);\n"
+    "  g = transpose(J) * J;\n"
+    "  return abs(determinant(J)) > 1e-6;\n"
+    "}\n");
   builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
                       "{\n"
                       "  vec3 y;\n"
                       "  mat3 J, H0, H1, H2;\n"
-                      "  " + phi + "(p, y, J, H0, H1, H2);\n"
-                      "  if (!(abs(determinant(J)) > 1e-6))\n"
-                      "  {\n"
-                      "    a = vec3(0.0);\n"
-                      "    return false;\n"
-                      "  }\n"
-                      "  vec3 w = vec3(dot(v, H0 * v), dot(v, H1 * v), dot(v, H2 * v));\n"
-                      "  a = -(inverse(J) * w);\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  " +
+    phi +
+    "(p, y, J, H0, H1, H2);\n"
+    "  if (!(abs(determinant(J)) > 1e-6))\n"
+    "  {\n"
+    "    a = vec3(0.0);\n"
+    "    return false;\n"
+    "  }\n"
+    "  vec3 w = vec3(dot(v, H0 * v), dot(v, H1 * v), dot(v, H2 * v));\n"
+    "  a = -(inverse(J) * w);\n"
+    "  return true;\n"
+    "}\n");
 }
 
 } // namespace riemann

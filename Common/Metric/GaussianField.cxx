@@ -89,20 +89,28 @@ void GaussianField::AppendSamplePoints(std::vector<Vec3>& points) const
 std::string GaussianField::EmitGlsl(GlslBuilder& builder) const
 {
   const std::string a = builder.AddUniform("amplitude", "float", { this->Amplitude });
-  const std::string c = builder.AddUniform(
-    "center", "vec3", { this->Center[0], this->Center[1], this->Center[2] });
+  const std::string c =
+    builder.AddUniform("center", "vec3", { this->Center[0], this->Center[1], this->Center[2] });
   const std::string w = builder.AddUniform("inverse_variance", "vec3",
     { this->InverseVariance[0], this->InverseVariance[1], this->InverseVariance[2] });
   const std::string name = builder.NewName("gaussian");
   builder.AddFunction("void " + name +
     "(vec3 p, inout float f, inout vec3 grad, inout mat3 hess)\n"
     "{\n"
-    "  vec3 d = p - " + c + ";\n"
-    "  vec3 u = " + w + " * d;\n"
-    "  float e = " + a + " * exp(-0.5 * dot(d, u));\n"
+    "  vec3 d = p - " +
+    c +
+    ";\n"
+    "  vec3 u = " +
+    w +
+    " * d;\n"
+    "  float e = " +
+    a +
+    " * exp(-0.5 * dot(d, u));\n"
     "  f += e;\n"
     "  grad -= e * u;\n"
-    "  vec3 ew = e * " + w + ";\n"
+    "  vec3 ew = e * " +
+    w +
+    ";\n"
     "  hess += e * outerProduct(u, u) - mat3(ew.x, 0.0, 0.0, 0.0, ew.y, 0.0, 0.0, 0.0, ew.z);\n"
     "}\n");
   return name;

@@ -96,8 +96,8 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
     return;
   }
 
-  GeodesicStepper stepper(options.Integrator, step, options.Tolerance,
-    options.MinimumStep / speed, options.MaximumStep / speed);
+  GeodesicStepper stepper(options.Integrator, step, options.Tolerance, options.MinimumStep / speed,
+    options.MaximumStep / speed);
   // Steps shorter than this (relative to the length) count as arriving.
   const double arrival = 1e-12 * std::max(1.0, parameterEnd);
   for (long long n = 0;; ++n)

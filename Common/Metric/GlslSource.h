@@ -59,7 +59,8 @@ public:
   /// A fresh identifier "rt_<stem><n>".
   std::string NewName(const std::string& stem);
   /// Declare a uniform (name from NewName) with its value; returns the name.
-  std::string AddUniform(const std::string& stem, const std::string& type, std::vector<double> values);
+  std::string AddUniform(
+    const std::string& stem, const std::string& type, std::vector<double> values);
   /// Append a function definition (callees must be added before callers).
   void AddFunction(const std::string& code);
 

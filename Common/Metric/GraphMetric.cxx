@@ -85,19 +85,23 @@ void GraphMetric::EmitGlsl(GlslBuilder& builder) const
                       "  float f = 0.0;\n"
                       "  vec3 gf = vec3(0.0);\n"
                       "  mat3 hf = mat3(0.0);\n"
-                      "  " + f + "(p, f, gf, hf);\n"
-                      "  g = mat3(1.0) + outerProduct(gf, gf);\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  " +
+    f +
+    "(p, f, gf, hf);\n"
+    "  g = mat3(1.0) + outerProduct(gf, gf);\n"
+    "  return true;\n"
+    "}\n");
   builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
                       "{\n"
                       "  float f = 0.0;\n"
                       "  vec3 gf = vec3(0.0);\n"
                       "  mat3 hf = mat3(0.0);\n"
-                      "  " + f + "(p, f, gf, hf);\n"
-                      "  a = -gf * (dot(v, hf * v) / (1.0 + dot(gf, gf)));\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  " +
+    f +
+    "(p, f, gf, hf);\n"
+    "  a = -gf * (dot(v, hf * v) / (1.0 + dot(gf, gf)));\n"
+    "  return true;\n"
+    "}\n");
 }
 
 } // namespace riemann

@@ -56,8 +56,8 @@ bool RungeKutta4Step(const Metric& metric, Vec6& y, double h)
   return true;
 }
 
-GeodesicStepper::GeodesicStepper(IntegratorType type, double step, double tolerance,
-  double minimumStep, double maximumStep)
+GeodesicStepper::GeodesicStepper(
+  IntegratorType type, double step, double tolerance, double minimumStep, double maximumStep)
   : Type(type)
   , InitialStep(step)
   , Step(step)

@@ -95,8 +95,8 @@ class RIEMANNCOMMONMETRIC_EXPORT GeodesicStepper
 {
 public:
   /// `step` is the fixed step, or the initial one for DormandPrince45.
-  GeodesicStepper(IntegratorType type, double step, double tolerance, double minimumStep,
-    double maximumStep);
+  GeodesicStepper(
+    IntegratorType type, double step, double tolerance, double minimumStep, double maximumStep);
 
   /// Start a new geodesic (forgets the adaptive step's cached state).
   void Reset();

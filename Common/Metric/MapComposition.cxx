@@ -164,7 +164,8 @@ std::string MapComposition::EmitGlsl(GlslBuilder& builder) const
   for (auto it = maps.rbegin(); it != maps.rend(); ++it)
   {
     // H'_s = J^T G_s J + sum_r Jo(s, r) H_r, with Jo(s, r) = Jo[r][s] in GLSL.
-    code += "  " + *it + "(y, yo, Jo, G0, G1, G2);\n"
+    code += "  " + *it +
+      "(y, yo, Jo, G0, G1, G2);\n"
       "  Jt = transpose(J);\n"
       "  N0 = Jt * G0 * J + Jo[0][0] * H0 + Jo[1][0] * H1 + Jo[2][0] * H2;\n"
       "  N1 = Jt * G1 * J + Jo[0][1] * H0 + Jo[1][1] * H1 + Jo[2][1] * H2;\n"

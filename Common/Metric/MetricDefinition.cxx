@@ -4,6 +4,8 @@
 #include "ConformalMetric.h"
 #include "DiffeoMetric.h"
 #include "EuclideanMetric.h"
+#include "Expression.h"
+#include "ExpressionFields.h"
 #include "GaussianField.h"
 #include "GraphMetric.h"
 #include "MapComposition.h"
@@ -14,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -53,11 +56,6 @@ std::string Describe(const Json& value)
   }
 }
 
-bool IsExpressionKey(const std::string& key)
-{
-  return key == "f" || key == "phi" || key == "n" || key == "g" || key == "parameters";
-}
-
 /// Refuse keys outside `allowed` (plus "name" and "description").
 void CheckKeys(
   const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
@@ -86,12 +84,6 @@ void CheckKeys(
     {
       continue;
     }
-    if (IsExpressionKey(key))
-    {
-      Fail(path + "." + key,
-        "expressions (\"f\", \"phi\", \"n\", \"g\", \"parameters\") are not yet supported in this "
-        "version; use the built-in providers (gaussians, quadratic, presets)");
-    }
     std::string expected;
     for (const char* a : allowed)
     {
@@ -109,6 +101,14 @@ void CheckKeys(
  * threading a context through every helper of this file.
  */
 thread_local double ParseTime = 0.0;
+
+/**
+ * Set when the definition holds a typed expression. Such metrics are not
+ * refused for being degenerate somewhere (a Poincare ball is only defined
+ * inside the ball): a geodesic or ray reaching a degenerate point stops
+ * there with its own reason, and `riemann info` reports it at a point.
+ */
+thread_local bool ParseHasExpressions = false;
 
 double Number(const Json& value, const std::string& path);
 
@@ -218,11 +218,114 @@ std::shared_ptr<const ScalarField> Quadratic(const Json& object, const std::stri
   return std::make_shared<QuadraticField>(matrix, linear, NumberOr(object, "constant", path, 0.0));
 }
 
-/// The sum of a family's scalar terms ("gaussians", "quadratic", "constant").
-std::shared_ptr<const ScalarField> ScalarTerms(
-  const Json& object, const std::string& path, double defaultConstant, const char* what)
+/**
+ * The named parameters visible in `object`: those inherited from enclosing
+ * objects, then its own "parameters" (numbers, possibly animated), which
+ * override inherited ones of the same name.
+ */
+ExpressionInputs Parameters(const Json& object, const std::string& path, ExpressionInputs inputs)
+{
+  if (object.contains("f") || object.contains("n") || object.contains("phi") ||
+    object.contains("g"))
+  {
+    ParseHasExpressions = true;
+  }
+  inputs.Time = ParseTime;
+  if (!object.contains("parameters"))
+  {
+    return inputs;
+  }
+  const Json& parameters = object.at("parameters");
+  if (!parameters.is_object())
+  {
+    Fail(path + ".parameters",
+      "expected an object of named numbers, e.g. {\"a\": 0.3}, got " + Describe(parameters));
+  }
+  if (parameters.size() > MaximumTerms)
+  {
+    Fail(path + ".parameters", "too many parameters");
+  }
+  for (const auto& item : parameters.items())
+  {
+    const double value = Number(item.value(), path + ".parameters." + item.key());
+    const auto at =
+      std::find(inputs.ParameterNames.begin(), inputs.ParameterNames.end(), item.key());
+    if (at != inputs.ParameterNames.end())
+    {
+      inputs.ParameterValues[at - inputs.ParameterNames.begin()] = value;
+    }
+    else
+    {
+      inputs.ParameterNames.push_back(item.key());
+      inputs.ParameterValues.push_back(value);
+    }
+  }
+  return inputs;
+}
+
+/// An expression string at `path` (a number is accepted as its text).
+std::string ExpressionText(const Json& value, const std::string& path)
+{
+  if (value.is_number())
+  {
+    return value.dump();
+  }
+  if (!value.is_string())
+  {
+    Fail(path, "expected an expression (a string such as \"x^2 + y^2\"), got " + Describe(value));
+  }
+  return value.get<std::string>();
+}
+
+/// `count` expressions at `path` (an array of strings); each is checked on
+/// its own first so that an error names its component.
+std::vector<std::string> ExpressionList(
+  const Json& value, const std::string& path, size_t count, const ExpressionInputs& inputs)
+{
+  if (!value.is_array() || value.size() != count)
+  {
+    Fail(path,
+      "expected an array of " + std::to_string(count) + " expressions, got " + Describe(value));
+  }
+  std::vector<std::string> sources;
+  for (size_t i = 0; i < count; ++i)
+  {
+    const std::string item = path + "[" + std::to_string(i) + "]";
+    sources.push_back(ExpressionText(value[i], item));
+    try
+    {
+      CompiledExpressions(std::vector<std::string>{ sources.back() }, inputs.ParameterNames, 0);
+    }
+    catch (const ExpressionError& e)
+    {
+      Fail(item, e.what());
+    }
+  }
+  return sources;
+}
+
+/// The sum of a family's scalar terms ("gaussians", "quadratic", "constant",
+/// and the expression under `expressionKey`: "f" or "n").
+std::shared_ptr<const ScalarField> ScalarTerms(const Json& object, const std::string& path,
+  double defaultConstant, const char* what, const char* expressionKey,
+  const ExpressionInputs& inputs)
 {
   std::vector<std::shared_ptr<const ScalarField>> terms;
+  if (object.contains(expressionKey))
+  {
+    const std::string expressionPath = path + "." + expressionKey;
+    const std::string source = ExpressionText(object.at(expressionKey), expressionPath);
+    try
+    {
+      terms.push_back(std::make_shared<ExpressionScalarField>(source, inputs));
+    }
+    catch (const ExpressionError& e)
+    {
+      Fail(expressionPath, e.what());
+    }
+    // A typed expression is the whole field unless a constant is added explicitly.
+    defaultConstant = 0.0;
+  }
   if (object.contains("gaussians"))
   {
     const Json& list = object.at("gaussians");
@@ -259,15 +362,15 @@ std::shared_ptr<const ScalarField> ScalarTerms(
   if (terms.empty() && !object.contains("constant"))
   {
     Fail(path,
-      std::string("the ") + what +
-        " needs at least one of \"gaussians\", \"quadratic\" or \"constant\"");
+      std::string("the ") + what + " needs at least one of \"" + expressionKey +
+        "\", \"gaussians\", \"quadratic\" or \"constant\"");
   }
   return std::make_shared<ScalarFieldSum>(
     NumberOr(object, "constant", path, defaultConstant), std::move(terms));
 }
 
 std::shared_ptr<const SpaceMap> Diffeomorphism(
-  const Json& object, const std::string& path, size_t depth)
+  const Json& object, const std::string& path, size_t depth, const ExpressionInputs& inherited)
 {
   if (depth > MaximumCompositionDepth)
   {
@@ -281,9 +384,10 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
   {
     Fail(path + ".type", "a composition may only hold diffeomorphisms (\"type\": \"diffeo\")");
   }
+  const ExpressionInputs inputs = Parameters(object, path, inherited);
   if (object.contains("compose"))
   {
-    CheckKeys(object, path, { "type", "compose" });
+    CheckKeys(object, path, { "type", "compose", "parameters" });
     const Json& list = object.at("compose");
     if (!list.is_array() || list.empty())
     {
@@ -298,17 +402,29 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
     for (size_t i = 0; i < list.size(); ++i)
     {
       maps.push_back(
-        Diffeomorphism(list[i], path + ".compose[" + std::to_string(i) + "]", depth + 1));
+        Diffeomorphism(list[i], path + ".compose[" + std::to_string(i) + "]", depth + 1, inputs));
     }
     return std::make_shared<MapComposition>(std::move(maps));
   }
+  if (object.contains("phi"))
+  {
+    CheckKeys(object, path, { "type", "phi", "parameters" });
+    const std::vector<std::string> sources =
+      ExpressionList(object.at("phi"), path + ".phi", 3, inputs);
+    try
+    {
+      return std::make_shared<ExpressionMap>(sources, inputs);
+    }
+    catch (const ExpressionError& e)
+    {
+      Fail(path + ".phi", e.what());
+    }
+  }
   if (!object.contains("preset"))
   {
-    if (object.contains("phi"))
-    {
-      CheckKeys(object, path, { "type" }); // reports "not yet supported"
-    }
-    Fail(path, "a diffeomorphism needs \"preset\" (twist, bump, identity) or \"compose\"");
+    Fail(path,
+      "a diffeomorphism needs \"phi\" (three expressions), \"preset\" (twist, bump, "
+      "identity) or \"compose\"");
   }
   const Json& preset = object.at("preset");
   if (preset == "twist")
@@ -351,6 +467,57 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
       "; expected \"twist\", \"bump\" or \"identity\"");
 }
 
+/**
+ * g_ij as a 3x3 array of expressions. g must be symmetric: g_ji is compared
+ * with g_ij at sample points (texts may differ, e.g. "x*y" and "y*x").
+ */
+std::shared_ptr<const TensorField> TensorExpressions(
+  const Json& value, const std::string& path, const ExpressionInputs& inputs)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(path, "expected a 3x3 array of expressions, got " + Describe(value));
+  }
+  std::vector<std::string> components;
+  for (int r = 0; r < 3; ++r)
+  {
+    const std::vector<std::string> row =
+      ExpressionList(value[r], path + "[" + std::to_string(r) + "]", 3, inputs);
+    components.insert(components.end(), row.begin(), row.end());
+  }
+  const CompiledExpressions all(components, inputs.ParameterNames, 0);
+  std::vector<double> values(9);
+  for (const Vec3& p : { Vec3(0.3, -0.7, 0.45), Vec3(-1.3, 0.2, 0.9), Vec3(2.1, 1.7, -0.6) })
+  {
+    all.Evaluate(p.data(), inputs.Time, inputs.ParameterValues.data(), values.data());
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = i + 1; j < 3; ++j)
+      {
+        const double a = values[3 * i + j];
+        const double b = values[3 * j + i];
+        if (!(std::abs(a - b) <= 1e-12 * (1.0 + std::abs(a))) &&
+          (std::isfinite(a) || std::isfinite(b)))
+        {
+          std::ostringstream s;
+          s << "g must be symmetric: g[" << i << "][" << j << "] = \"" << components[3 * i + j]
+            << "\" but g[" << j << "][" << i << "] = \"" << components[3 * j + i] << "\" (" << a
+            << " and " << b << " at (" << p.transpose() << "))";
+          Fail(path, s.str());
+        }
+      }
+    }
+  }
+  try
+  {
+    return std::make_shared<ExpressionTensorField>(components, inputs);
+  }
+  catch (const ExpressionError& e)
+  {
+    Fail(path, e.what());
+  }
+}
+
 std::shared_ptr<const Metric> Build(const Json& root)
 {
   const std::string path = "metric";
@@ -369,23 +536,31 @@ std::shared_ptr<const Metric> Build(const Json& root)
     CheckKeys(root, path, { "type" });
     return std::make_shared<EuclideanMetric>();
   }
+  const ExpressionInputs inputs = Parameters(root, path, ExpressionInputs());
   if (type == "graph")
   {
-    CheckKeys(root, path, { "type", "gaussians", "quadratic", "constant" });
-    return std::make_shared<GraphMetric>(ScalarTerms(root, path, 0.0, "graph's function f"));
+    CheckKeys(root, path, { "type", "f", "gaussians", "quadratic", "constant", "parameters" });
+    return std::make_shared<GraphMetric>(
+      ScalarTerms(root, path, 0.0, "graph's function f", "f", inputs));
   }
   if (type == "conformal")
   {
-    CheckKeys(root, path, { "type", "gaussians", "quadratic", "constant" });
-    return std::make_shared<ConformalMetric>(ScalarTerms(root, path, 1.0, "refractive index n"));
+    CheckKeys(root, path, { "type", "n", "gaussians", "quadratic", "constant", "parameters" });
+    return std::make_shared<ConformalMetric>(
+      ScalarTerms(root, path, 1.0, "refractive index n", "n", inputs));
   }
   if (type == "diffeo")
   {
-    return std::make_shared<DiffeoMetric>(Diffeomorphism(root, path, 0));
+    return std::make_shared<DiffeoMetric>(Diffeomorphism(root, path, 0, ExpressionInputs()));
+  }
+  if (type == "tensor" && root.contains("g"))
+  {
+    CheckKeys(root, path, { "type", "g", "parameters" });
+    return std::make_shared<TensorMetric>(TensorExpressions(root.at("g"), path + ".g", inputs));
   }
   if (type == "tensor")
   {
-    CheckKeys(root, path, { "type", "matrix" });
+    CheckKeys(root, path, { "type", "matrix", "g", "parameters" });
     const Mat3 matrix = Matrix(Required(root, "matrix", path), path + ".matrix");
     if (!matrix.isApprox(matrix.transpose(), 1e-12))
     {
@@ -408,12 +583,19 @@ std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json, dou
   struct TimeScope
   {
     double Saved;
+    bool SavedExpressions;
     explicit TimeScope(double t)
       : Saved(ParseTime)
+      , SavedExpressions(ParseHasExpressions)
     {
       ParseTime = t;
+      ParseHasExpressions = false;
     }
-    ~TimeScope() { ParseTime = this->Saved; }
+    ~TimeScope()
+    {
+      ParseTime = this->Saved;
+      ParseHasExpressions = this->SavedExpressions;
+    }
   } scope(time);
   Json root;
   try
@@ -433,7 +615,7 @@ std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json, dou
     throw MetricDefinitionError("invalid JSON: " + message);
   }
   std::shared_ptr<const Metric> metric = Build(root);
-  const std::string why = metric->Validate();
+  const std::string why = ParseHasExpressions ? std::string() : metric->Validate();
   if (!why.empty())
   {
     throw MetricDefinitionError("metric: " + why);

@@ -3,13 +3,13 @@
  * @brief Build a Metric from its JSON definition (ARCHITECTURE.md), the same
  * text in the CLI, the app and Python.
  *
- * Supported now (expressions `f`, `phi`, `n`, `g` and `parameters` come with
- * the expression issue and are refused with a clear "not yet supported"):
+ * Built-in providers:
  *
  *   {"type": "euclidean"}
  *   {"type": "graph", <scalar terms>}                      f = sum of the terms
  *   {"type": "conformal", <scalar terms>}                  n = sum of the terms
- *                                                          ("constant" defaults to 1)
+ *                                                          ("constant" defaults to 1,
+ *                                                          or 0 with an "n" expression)
  *   {"type": "diffeo", "preset": "twist", "rate": 1.0}
  *   {"type": "diffeo", "preset": "bump", "gaussian": {...}, "direction": [vx,vy,vz]}
  *   {"type": "diffeo", "preset": "bump", "gaussian": {...},
@@ -27,6 +27,17 @@
  * time t in [0, 1] is a + t (b - a) (`riemann render --frames`, vtkRiemannMetric::SetTime).
  * The metric's structure never depends on t, so a shader compiled for one
  * frame serves them all with new uniform values.
+ *
+ * Expressions (x, y, z, t, named "parameters", + - * / ^ and exp, log, sqrt,
+ * sin, cos, tan, sinh, cosh, tanh, atan2, abs, pow):
+ *   {"type": "graph", "f": "x^2 + y^2 - z^2"}                  (added to any other terms)
+ *   {"type": "conformal", "n": "2 / (1 + x^2 + y^2 + z^2)"}
+ *   {"type": "diffeo", "phi": ["x + a*exp(-(x^2+y^2+z^2))", "y", "z"], "parameters": {"a": 0.3}}
+ *   {"type": "tensor", "g": [["1","0","0"],["0","1+x^2","0"],["0","0","1"]]}
+ * "parameters" may appear at the root and in any composed map (inner ones
+ * override outer ones); values may be animated. A definition with
+ * expressions is not refused for being degenerate somewhere: geodesics and
+ * rays stop where it degenerates (ReasonForTermination 8).
  *
  * Every object also accepts "name" and "description" (free text). Unknown keys,
  * wrong sizes and wrong types are errors that name the offending key's path,

@@ -53,8 +53,8 @@ void QuadraticField::AppendSamplePoints(std::vector<Vec3>& points) const
 std::string QuadraticField::EmitGlsl(GlslBuilder& builder) const
 {
   const Mat3& m = this->Matrix; // symmetric: row- and column-major agree
-  const std::string a = builder.AddUniform(
-    "matrix", "mat3", std::vector<double>(m.data(), m.data() + 9));
+  const std::string a =
+    builder.AddUniform("matrix", "mat3", std::vector<double>(m.data(), m.data() + 9));
   const std::string b =
     builder.AddUniform("linear", "vec3", { this->Linear[0], this->Linear[1], this->Linear[2] });
   const std::string c = builder.AddUniform("constant", "float", { this->Constant });
@@ -62,10 +62,18 @@ std::string QuadraticField::EmitGlsl(GlslBuilder& builder) const
   builder.AddFunction("void " + name +
     "(vec3 p, inout float f, inout vec3 grad, inout mat3 hess)\n"
     "{\n"
-    "  vec3 ap = " + a + " * p;\n"
-    "  f += dot(p, ap) + dot(" + b + ", p) + " + c + ";\n"
-    "  grad += 2.0 * ap + " + b + ";\n"
-    "  hess += 2.0 * " + a + ";\n"
+    "  vec3 ap = " +
+    a +
+    " * p;\n"
+    "  f += dot(p, ap) + dot(" +
+    b + ", p) + " + c +
+    ";\n"
+    "  grad += 2.0 * ap + " +
+    b +
+    ";\n"
+    "  hess += 2.0 * " +
+    a +
+    ";\n"
     "}\n");
   return name;
 }

@@ -76,26 +76,47 @@ void TensorMetric::AppendSamplePoints(std::vector<Vec3>& points) const
   this->Field->AppendSamplePoints(points);
 }
 
-std::string ConstantTensorField::EmitConstantGlsl(GlslBuilder& builder) const
+std::string ConstantTensorField::EmitGlsl(GlslBuilder& builder) const
 {
-  return builder.AddUniform(
+  const std::string value = builder.AddUniform(
     "tensor", "mat3", std::vector<double>(this->Value.data(), this->Value.data() + 9));
+  const std::string name = builder.NewName("constant_tensor");
+  builder.AddFunction("void " + name +
+    "(vec3 p, out mat3 g, out mat3 dg0, out mat3 dg1, out mat3 dg2)\n"
+    "{\n"
+    "  g = " +
+    value +
+    ";\n"
+    "  dg0 = mat3(0.0);\n"
+    "  dg1 = mat3(0.0);\n"
+    "  dg2 = mat3(0.0);\n"
+    "}\n");
+  return name;
 }
 
 void TensorMetric::EmitGlsl(GlslBuilder& builder) const
 {
-  // A constant g is flat: straight rays, only the camera frame feels g.
-  const std::string g = this->Field->EmitConstantGlsl(builder);
+  // The general formula contracted with v twice:
+  //   Gamma_kij v^i v^j = ((sum_i v^i d_i g) v)_k - 1/2 v^T (d_k g) v,
+  //   a = -g^-1 of that. Positive definiteness by Sylvester's criterion.
+  const std::string field = this->Field->EmitGlsl(builder);
+  const std::string positive =
+    "  return g[0][0] > 0.0 && g[0][0] * g[1][1] - g[0][1] * g[1][0] > 0.0 &&\n"
+    "    determinant(g) > 0.0;\n";
   builder.AddFunction("bool rt_metric_tensor(vec3 p, out mat3 g)\n"
                       "{\n"
-                      "  g = " + g + ";\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  mat3 dg0, dg1, dg2;\n"
+                      "  " +
+    field + "(p, g, dg0, dg1, dg2);\n" + positive + "}\n");
   builder.AddFunction("bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a)\n"
                       "{\n"
-                      "  a = vec3(0.0);\n"
-                      "  return true;\n"
-                      "}\n");
+                      "  mat3 g, dg0, dg1, dg2;\n"
+                      "  " +
+    field +
+    "(p, g, dg0, dg1, dg2);\n"
+    "  vec3 w = ((v.x * dg0 + v.y * dg1 + v.z * dg2) * v) -\n"
+    "    0.5 * vec3(dot(v, dg0 * v), dot(v, dg1 * v), dot(v, dg2 * v));\n"
+    "  a = -(inverse(g) * w);\n" +
+    positive + "}\n");
 }
-
 } // namespace riemann

@@ -26,11 +26,11 @@ public:
   virtual std::string Describe() const = 0;
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
   /**
-   * For the shader: only constant fields have a GLSL form so far (component
-   * expressions come later). Declares a uniform mat3 holding g and returns
-   * its name, or throws GlslUnsupportedError.
+   * Emit a GLSL function
+   *   void NAME(vec3 p, out mat3 g, out mat3 dg0, out mat3 dg1, out mat3 dg2)
+   * giving g and its derivatives dg_k = d_k g; returns NAME. The default refuses.
    */
-  virtual std::string EmitConstantGlsl(GlslBuilder& builder) const
+  virtual std::string EmitGlsl(GlslBuilder& builder) const
   {
     (void)builder;
     throw GlslUnsupportedError("the tensor field " + this->Describe() + " has no GLSL form");
@@ -44,7 +44,7 @@ public:
   explicit ConstantTensorField(const Mat3& value);
   void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
   std::string Describe() const override;
-  std::string EmitConstantGlsl(GlslBuilder& builder) const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
 
 private:
   Mat3 Value;

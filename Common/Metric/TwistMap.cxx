@@ -131,7 +131,9 @@ std::string TwistMap::EmitGlsl(GlslBuilder& builder) const
   builder.AddFunction("void " + name +
     "(vec3 p, out vec3 y, out mat3 J, out mat3 H0, out mat3 H1, out mat3 H2)\n"
     "{\n"
-    "  float k = " + k + ";\n"
+    "  float k = " +
+    k +
+    ";\n"
     "  float c = cos(k * p.z);\n"
     "  float s = sin(k * p.z);\n"
     "  y = vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);\n"

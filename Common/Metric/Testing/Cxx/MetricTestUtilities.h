@@ -10,6 +10,7 @@
 #include "GaussianField.h"
 #include "GraphMetric.h"
 #include "MapComposition.h"
+#include "MetricDefinition.h"
 #include "QuadraticField.h"
 #include "ScalarFieldSum.h"
 #include "TensorMetric.h"
@@ -156,6 +157,18 @@ inline std::vector<std::pair<std::string, std::shared_ptr<const Metric>>> Metric
   constant << 2.0, 0.3, 0.1, 0.3, 1.5, -0.2, 0.1, -0.2, 1.0;
   metrics.emplace_back("tensor constant",
     std::make_shared<TensorMetric>(std::make_shared<ConstantTensorField>(constant)));
+  // Typed expressions, one per family.
+  metrics.emplace_back(
+    "graph of typed f", ParseMetricDefinition(R"json({"type": "graph", "parameters": {"a": 0.7},
+      "f": "a*exp(-(x^2 + 2*y^2 + z^2)/2) + 0.2*sin(x)*cos(y + z) + 0.1*x^3"})json"));
+  metrics.emplace_back("conformal typed n (round sphere)",
+    ParseMetricDefinition(R"json({"type": "conformal", "n": "2/(1 + x^2 + y^2 + z^2)"})json"));
+  metrics.emplace_back("diffeo typed phi",
+    ParseMetricDefinition(R"json({"type": "diffeo", "phi": ["x + 0.3*exp(-(x^2+y^2+z^2))",
+      "y + 0.2*sin(z)", "z + 0.1*tanh(x)"]})json"));
+  metrics.emplace_back("tensor typed g (Nil)",
+    ParseMetricDefinition(R"json({"type": "tensor", "g": [["1", "0", "0"], ["0", "1 + x^2", "-x"],
+      ["0", "-x", "1"]]})json"));
   metrics.emplace_back("tensor forwarding graph",
     std::make_shared<TensorMetric>(
       std::make_shared<ForwardingTensorField>(std::make_shared<GraphMetric>(MixedSum()))));

@@ -67,8 +67,10 @@ TEST(Glsl, NumbersAreUniformsAndStructureIsSource)
       "field": {"matrix": [[0,-1,0],[1,0,0],[0,0,0]]}})");
   EXPECT_EQ(EmitMetricGlsl(*direction).Source, EmitMetricGlsl(*field).Source);
   // Twist rates differ only in a uniform.
-  EXPECT_EQ(EmitMetricGlsl(*ParseMetricDefinition(R"({"type":"diffeo","preset":"twist","rate":1})")).Source,
-    EmitMetricGlsl(*ParseMetricDefinition(R"({"type":"diffeo","preset":"twist","rate":-2})")).Source);
+  EXPECT_EQ(
+    EmitMetricGlsl(*ParseMetricDefinition(R"({"type":"diffeo","preset":"twist","rate":1})")).Source,
+    EmitMetricGlsl(*ParseMetricDefinition(R"({"type":"diffeo","preset":"twist","rate":-2})"))
+      .Source);
 }
 
 TEST(Glsl, MatricesAreColumnMajor)

@@ -407,6 +407,15 @@ TEST(RayBundle, IsThePassRaysForEveryExampleMetric)
   {
     vtkNew<vtkRiemannMetric> metric;
     ASSERT_TRUE(metric->SetDefinitionFile(file.c_str())) << metric->GetLastError();
+    const double eye[3] = { 0.35, 0.2, 1.4 };
+    double g[9];
+    if (!metric->EvaluateMetricTensor(eye, g))
+    {
+      // The Poincare ball is only a metric inside the unit ball: this
+      // observer is outside (the pass reports that, tested elsewhere).
+      std::printf("[ skipped  ] %s: not defined at the observer\n", file.filename().c_str());
+      continue;
+    }
     View view(40, 30, metric, scene);
     vtkCamera* camera = view.Camera();
     // Off every axis, so that no symmetry hides a wrong term; close, so that

@@ -1,0 +1,93 @@
+/**
+ * @file ExpressionFields.h
+ * @brief Field providers from typed expressions: f (graph), n (conformal),
+ * Phi (diffeomorphism) and g_ij (tensor), compiled by CompiledExpressions.
+ *
+ * The expressions are differentiated symbolically once; evaluation runs the
+ * compiled tape (no GiNaC, no allocation, thread-safe). Named parameters and
+ * the time t are inputs of the tape on the CPU and uniforms in the GLSL, so
+ * new values never change the shader's source.
+ */
+#ifndef RiemannExpressionFields_h
+#define RiemannExpressionFields_h
+
+#include "ScalarField.h"
+#include "SpaceMap.h"
+#include "TensorMetric.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+class CompiledExpressions;
+
+/// Named parameter values of a definition (in the order the expressions were compiled with).
+struct ExpressionInputs
+{
+  std::vector<std::string> ParameterNames;
+  std::vector<double> ParameterValues;
+  double Time = 0.0;
+};
+
+/// f(x, y, z) typed as an expression; exact derivatives to third order.
+class RIEMANNCOMMONMETRIC_EXPORT ExpressionScalarField : public ScalarField
+{
+public:
+  /// Throws ExpressionError.
+  ExpressionScalarField(const std::string& source, const ExpressionInputs& inputs);
+  ~ExpressionScalarField() override;
+
+  void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
+  std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
+  /// A 9^3 grid over [-4, 4]^3: an expression may vary anywhere.
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::string Source;
+  ExpressionInputs Inputs;
+  std::shared_ptr<const CompiledExpressions> Compiled;
+};
+
+/// Phi = (Phi_x, Phi_y, Phi_z) typed as three expressions.
+class RIEMANNCOMMONMETRIC_EXPORT ExpressionMap : public SpaceMap
+{
+public:
+  /// Throws ExpressionError (the message says which component).
+  ExpressionMap(const std::vector<std::string>& sources, const ExpressionInputs& inputs);
+  ~ExpressionMap() override;
+
+  void Evaluate(const Vec3& p, int order, VectorJet& jet) const override;
+  std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::vector<std::string> Sources;
+  ExpressionInputs Inputs;
+  std::shared_ptr<const CompiledExpressions> Compiled;
+};
+
+/// g_ij typed as a symmetric 3x3 array of expressions (the six of the upper triangle are compiled).
+class RIEMANNCOMMONMETRIC_EXPORT ExpressionTensorField : public TensorField
+{
+public:
+  /// `components` row-major 3x3; throws ExpressionError. Symmetry is checked by the caller.
+  ExpressionTensorField(const std::vector<std::string>& components, const ExpressionInputs& inputs);
+  ~ExpressionTensorField() override;
+
+  void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
+  std::string Describe() const override;
+  std::string EmitGlsl(GlslBuilder& builder) const override;
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  std::vector<std::string> Components;
+  ExpressionInputs Inputs;
+  std::shared_ptr<const CompiledExpressions> Compiled;
+};
+} // namespace riemann
+
+#endif

@@ -1,0 +1,34 @@
+# cmake -DFUZZER=<FuzzExpression> -DCORPUS=<committed seeds> -DWORK=<scratch dir>
+#       -DDICTIONARY=<dict> -DSECONDS=<n> -P RunFuzzer.cmake
+#
+# Run by the ctest test Fuzz.Expressions: fuzz for SECONDS seconds, starting
+# from the committed seed corpus (read only; new inputs go to WORK/corpus).
+# A crash, a timeout (one input running over 10 s), a leak or a sanitizer
+# report stops libFuzzer with a non-zero status and leaves the input in
+# WORK/crash-*, timeout-*, leak-*: the test fails and prints how to replay it.
+foreach (var FUZZER CORPUS WORK DICTIONARY SECONDS)
+  if (NOT DEFINED ${var})
+    message(FATAL_ERROR "RunFuzzer.cmake: pass -D${var}=...")
+  endif ()
+endforeach ()
+
+file(MAKE_DIRECTORY "${WORK}/corpus")
+execute_process(
+  COMMAND "${FUZZER}"
+          "-max_total_time=${SECONDS}"
+          -max_len=256
+          -timeout=10
+          -rss_limit_mb=2048
+          -print_final_stats=1
+          "-dict=${DICTIONARY}"
+          "-artifact_prefix=${WORK}/"
+          "${WORK}/corpus"
+          "${CORPUS}"
+  RESULT_VARIABLE status)
+if (NOT status EQUAL 0)
+  file(GLOB artifacts "${WORK}/crash-*" "${WORK}/timeout-*" "${WORK}/leak-*" "${WORK}/oom-*"
+                      "${WORK}/slow-unit-*")
+  message(FATAL_ERROR
+    "The fuzzer found a failing input (status ${status}): ${artifacts}\n"
+    "Replay it with: ${FUZZER} <file>")
+endif ()
