@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace riemann
 {
@@ -15,15 +18,43 @@ namespace
 constexpr int MaximumOutputs = 128;
 using OutputBuffer = std::array<double, MaximumOutputs>;
 
+/**
+ * Compile, or reuse a compiled tape for the same sources, parameter names and
+ * order: parameter values and t are inputs of the tape, so a definition
+ * re-read with new values (an animation frame, an edited amplitude) costs no
+ * GiNaC work. Entries live as long as some field uses them.
+ */
 std::shared_ptr<const CompiledExpressions> Compile(
   const std::vector<std::string>& sources, const ExpressionInputs& inputs, int order)
 {
+  using Key = std::tuple<std::vector<std::string>, std::vector<std::string>, int>;
+  static std::mutex mutex;
+  static std::map<Key, std::weak_ptr<const CompiledExpressions>> cache;
+  const Key key(sources, inputs.ParameterNames, order);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto found = cache.find(key);
+    if (found != cache.end())
+    {
+      if (auto compiled = found->second.lock())
+      {
+        return compiled;
+      }
+      cache.erase(found);
+    }
+  }
   auto compiled =
     std::make_shared<const CompiledExpressions>(sources, inputs.ParameterNames, order);
   if (compiled->GetNumberOfOutputs() > MaximumOutputs)
   {
     throw std::logic_error("too many expression outputs for the field buffers");
   }
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (auto it = cache.begin(); it != cache.end();)
+  {
+    it = it->second.expired() ? cache.erase(it) : std::next(it);
+  }
+  cache[key] = compiled;
   return compiled;
 }
 
