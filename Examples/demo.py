@@ -81,6 +81,21 @@ def write_atomically(path, write):
     os.replace(temporary, path)
 
 
+def save_png(window, png_path):
+    """The window's picture as a PNG, written whole or not at all."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+
+    def write_png(path):
+        writer = vtkPNGWriter()
+        writer.SetFileName(path)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+    write_atomically(png_path, write_png)
+
+
 def render(lines, max_deflection, png_path, size):
     renderer = vtkRenderer()
     renderer.SetBackground(0.08, 0.09, 0.12)
@@ -159,17 +174,7 @@ def render(lines, max_deflection, png_path, size):
     window.AddRenderer(renderer)
     window.SetSize(*size)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-
-    def write_png(path):
-        writer = vtkPNGWriter()
-        writer.SetFileName(path)
-        writer.SetInputConnection(grab.GetOutputPort())
-        writer.Write()
-    write_atomically(png_path, write_png)
+    save_png(window, png_path)
 
 
 def render_inside_view(metric, png_path, size):
@@ -188,17 +193,7 @@ def render_inside_view(metric, png_path, size):
     window.Render()
     if trace.GetLastError():
         sys.exit("demo: " + trace.GetLastError())
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-
-    def write_png(path):
-        writer = vtkPNGWriter()
-        writer.SetFileName(path)
-        writer.SetInputConnection(grab.GetOutputPort())
-        writer.Write()
-    write_atomically(png_path, write_png)
+    save_png(window, png_path)
 
 
 def main():

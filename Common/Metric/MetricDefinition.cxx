@@ -14,7 +14,7 @@
 #include "TensorMetric.h"
 #include "TwistMap.h"
 
-#include <nlohmann/json.hpp>
+#include "JsonValidation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,74 +25,29 @@ namespace riemann
 {
 namespace
 {
-using Json = nlohmann::json;
+using json::Describe;
+using json::Json;
+
+[[noreturn]] void Fail(const std::string& path, const std::string& message)
+{
+  json::Fail<MetricDefinitionError>(path, message);
+}
+
+void CheckKeys(
+  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+{
+  json::CheckKeys<MetricDefinitionError>(object, path, allowed);
+}
+
+const Json& Required(const Json& object, const char* key, const std::string& path)
+{
+  return json::Required<MetricDefinitionError>(object, key, path);
+}
 
 /// Guards against absurd inputs (a definition is typed by a person).
 constexpr size_t MaximumTerms = 4096;
 constexpr size_t MaximumCompositionDepth = 64;
 constexpr std::streamoff MaximumFileSize = 64 << 20;
-
-[[noreturn]] void Fail(const std::string& path, const std::string& message)
-{
-  throw MetricDefinitionError(path + ": " + message);
-}
-
-std::string Describe(const Json& value)
-{
-  switch (value.type())
-  {
-    case Json::value_t::null:
-      return "null";
-    case Json::value_t::boolean:
-      return "a boolean";
-    case Json::value_t::string:
-      return "the string \"" + value.get<std::string>() + "\"";
-    case Json::value_t::array:
-      return "an array of " + std::to_string(value.size());
-    case Json::value_t::object:
-      return "an object";
-    default:
-      return value.dump();
-  }
-}
-
-/// Refuse keys outside `allowed` (plus "name" and "description").
-void CheckKeys(
-  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
-{
-  if (!object.is_object())
-  {
-    Fail(path, "expected an object, got " + Describe(object));
-  }
-  for (const auto& item : object.items())
-  {
-    const std::string& key = item.key();
-    if (key == "name" || key == "description")
-    {
-      if (!item.value().is_string())
-      {
-        Fail(path + "." + key, "expected a string, got " + Describe(item.value()));
-      }
-      continue;
-    }
-    bool known = false;
-    for (const char* a : allowed)
-    {
-      known = known || key == a;
-    }
-    if (known)
-    {
-      continue;
-    }
-    std::string expected;
-    for (const char* a : allowed)
-    {
-      expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
-    }
-    Fail(path,
-      "unknown key \"" + key + "\"; expected one of " + expected + ", \"name\", \"description\"");
-  }
-}
 
 /**
  * The time t in [0, 1] at which animated numbers are evaluated. A definition
@@ -171,15 +126,6 @@ Mat3 Matrix(const Json& value, const std::string& path)
     m.row(r) = Vector(value[r], path + "[" + std::to_string(r) + "]").transpose();
   }
   return m;
-}
-
-const Json& Required(const Json& object, const char* key, const std::string& path)
-{
-  if (!object.contains(key))
-  {
-    Fail(path, std::string("missing required key \"") + key + "\"");
-  }
-  return object.at(key);
 }
 
 std::shared_ptr<const ScalarField> Gaussian(const Json& object, const std::string& path)

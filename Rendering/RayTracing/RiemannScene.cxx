@@ -1,9 +1,9 @@
 #include "RiemannScene.h"
 
+#include "JsonValidation.h"
 #include "MetricDefinition.h"
 
 #include <Eigen/Geometry> // cross
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,92 +16,30 @@ namespace riemann
 {
 namespace
 {
-using Json = nlohmann::json;
+using json::Describe;
+using json::Json;
+
+[[noreturn]] void Fail(const std::string& path, const std::string& message)
+{
+  json::Fail<SceneDefinitionError>(path, message);
+}
+
+void CheckKeys(
+  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+{
+  json::CheckKeys<SceneDefinitionError>(object, path, allowed);
+}
+
+const Json& Required(const Json& object, const char* key, const std::string& path)
+{
+  return json::Required<SceneDefinitionError>(object, key, path);
+}
 
 /// Guards against absurd inputs (a scene is typed by a person).
 constexpr std::streamoff MaximumFileSize = 64 << 20;
 /// Lattice lines per axis of one grid (keeps the intersection loops bounded).
 constexpr double MaximumLatticeLines = 10000;
 constexpr int MaximumIntegratorSteps = 1000000;
-
-//------------------------------------------------------------------------------
-// JSON helpers: every error names the JSON path (MetricDefinition.cxx's style)
-//------------------------------------------------------------------------------
-[[noreturn]] void Fail(const std::string& path, const std::string& message)
-{
-  throw SceneDefinitionError(path + ": " + message);
-}
-
-std::string Describe(const Json& value)
-{
-  switch (value.type())
-  {
-    case Json::value_t::null:
-      return "null";
-    case Json::value_t::boolean:
-      return "a boolean";
-    case Json::value_t::string:
-      return "the string \"" + value.get<std::string>() + "\"";
-    case Json::value_t::array:
-      return "an array of " + std::to_string(value.size());
-    case Json::value_t::object:
-      return "an object";
-    default:
-      return value.dump();
-  }
-}
-
-std::string Quoted(std::initializer_list<const char*> names)
-{
-  std::string list;
-  for (const char* name : names)
-  {
-    list += std::string(list.empty() ? "" : ", ") + "\"" + name + "\"";
-  }
-  return list;
-}
-
-/// Refuse non-objects and keys outside `allowed` (plus "name" and "description").
-void CheckKeys(
-  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
-{
-  if (!object.is_object())
-  {
-    Fail(path, "expected an object, got " + Describe(object));
-  }
-  for (const auto& item : object.items())
-  {
-    const std::string& key = item.key();
-    if (key == "name" || key == "description")
-    {
-      if (!item.value().is_string())
-      {
-        Fail(path + "." + key, "expected a string, got " + Describe(item.value()));
-      }
-      continue;
-    }
-    bool known = false;
-    for (const char* a : allowed)
-    {
-      known = known || key == a;
-    }
-    if (!known)
-    {
-      Fail(path,
-        "unknown key \"" + key + "\"; expected one of " + Quoted(allowed) +
-          ", \"name\", \"description\"");
-    }
-  }
-}
-
-const Json& Required(const Json& object, const char* key, const std::string& path)
-{
-  if (!object.contains(key))
-  {
-    Fail(path, std::string("missing required key \"") + key + "\"");
-  }
-  return object.at(key);
-}
 
 double Number(const Json& value, const std::string& path)
 {

@@ -45,6 +45,8 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "RenderingTestUtilities.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,30 +64,8 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 namespace
 {
 using riemann::Vec3;
-
-// Mesa's llvmpipe may raise floating-point exceptions in the driver; VTK's
-// own test drivers disable them too.
-const bool FloatingPointExceptionsDisabled = []()
-{
-  vtkFloatingPointExceptions::Disable();
-  return true;
-}();
-
-// One window, opened by the first rendering test (not at start-up: listing
-// the tests needs no display) and never closed, keeps the X connection for
-// the process (Xvfb would otherwise reset between windows).
-void KeepXServerConnection()
-{
-  static const bool kept = []()
-  {
-    vtkRenderWindow* window = vtkRenderWindow::New(); // deliberately never deleted
-    window->SetOffScreenRendering(1);
-    window->SetSize(1, 1);
-    window->Render(); // opens the display
-    return true;
-  }();
-  (void)kept;
-}
+using riemann::testing::ErrorObserver;
+using riemann::testing::KeepXServerConnection;
 
 std::filesystem::path DataDirectory()
 {
@@ -97,34 +77,6 @@ std::filesystem::path DataDirectory()
 
 constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
 constexpr const char* TwistJson = R"({"type": "diffeo", "preset": "twist", "rate": 1})";
-
-/// Collects the ErrorEvents of an object.
-struct ErrorObserver
-{
-  vtkNew<vtkCallbackCommand> Command;
-  std::vector<std::string> Messages;
-
-  explicit ErrorObserver(vtkObject* object)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
-      {
-        auto* self = static_cast<ErrorObserver*>(clientData);
-        self->Messages.emplace_back(callData ? static_cast<const char*>(callData) : "");
-      });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-  std::string All() const
-  {
-    std::string all;
-    for (const std::string& m : this->Messages)
-    {
-      all += m + "\n";
-    }
-    return all;
-  }
-};
 
 /// One line of the bundle, read back from the output.
 struct Line

@@ -40,7 +40,9 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "RenderingTestUtilities.h"
 #include <Eigen/LU> // inverse
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,32 +61,8 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 namespace
 {
 using riemann::Vec3;
-
-// Mesa's llvmpipe may raise floating-point exceptions in the driver; VTK's
-// own test drivers disable them too.
-const bool FloatingPointExceptionsDisabled = []()
-{
-  vtkFloatingPointExceptions::Disable();
-  return true;
-}();
-
-// Xvfb resets itself whenever its last client disconnects, and refuses
-// connections meanwhile: a test that closes one window and opens the next
-// could find no X server ("bad X server connection"). One window, opened by
-// the first rendering test (not at start-up: listing the tests needs no
-// display) and never closed, keeps a connection for the process.
-void KeepXServerConnection()
-{
-  static const bool kept = []()
-  {
-    vtkRenderWindow* window = vtkRenderWindow::New(); // deliberately never deleted
-    window->SetOffScreenRendering(1);
-    window->SetSize(1, 1);
-    window->Render(); // opens the display
-    return true;
-  }();
-  (void)kept;
-}
+using riemann::testing::ErrorObserver;
+using riemann::testing::KeepXServerConnection;
 
 constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
 constexpr const char* TwistJson = R"({"type": "diffeo", "preset": "twist", "rate": 1})";
@@ -96,34 +74,6 @@ constexpr const char* SphereSceneJson = R"({
   "integrator": {"method": "rk4", "step": 0.25, "max_steps": 200, "max_length": 12},
   "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
                "material": {"type": "solid", "color": [0.2, 0.6, 1.0]}}]})";
-
-/// Collects the ErrorEvents of an object.
-struct ErrorObserver
-{
-  vtkNew<vtkCallbackCommand> Command;
-  std::vector<std::string> Messages;
-
-  explicit ErrorObserver(vtkObject* object)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
-      {
-        auto* self = static_cast<ErrorObserver*>(clientData);
-        self->Messages.emplace_back(callData ? static_cast<const char*>(callData) : "");
-      });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-  std::string All() const
-  {
-    std::string all;
-    for (const std::string& m : this->Messages)
-    {
-      all += m + "\n";
-    }
-    return all;
-  }
-};
 
 /// An offscreen window whose renderer draws with the pass.
 struct View

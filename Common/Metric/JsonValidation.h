@@ -1,0 +1,101 @@
+/**
+ * @file JsonValidation.h
+ * @brief Checks shared by the JSON readers (metric and scene definitions):
+ * each failure throws `Error` with a message that names the JSON path, e.g.
+ * `scene.objects[2]: unknown key "radus"; expected one of ...`.
+ *
+ * Internal (not installed): it exposes nlohmann::json, which the public API
+ * of the toolkit does not.
+ */
+#ifndef RiemannJsonValidation_h
+#define RiemannJsonValidation_h
+
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <string>
+
+namespace riemann
+{
+namespace json
+{
+using Json = nlohmann::json;
+
+/// "the string \"x\"", "an array of 2", "an object", ... for messages.
+inline std::string Describe(const Json& value)
+{
+  switch (value.type())
+  {
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return "a boolean";
+    case Json::value_t::string:
+      return "the string \"" + value.get<std::string>() + "\"";
+    case Json::value_t::array:
+      return "an array of " + std::to_string(value.size());
+    case Json::value_t::object:
+      return "an object";
+    default:
+      return value.dump();
+  }
+}
+
+template <class Error>
+[[noreturn]] void Fail(const std::string& path, const std::string& message)
+{
+  throw Error(path + ": " + message);
+}
+
+/// Refuse non-objects and keys outside `allowed` (plus "name" and
+/// "description", free text on every object).
+template <class Error>
+void CheckKeys(
+  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+{
+  if (!object.is_object())
+  {
+    Fail<Error>(path, "expected an object, got " + Describe(object));
+  }
+  for (const auto& item : object.items())
+  {
+    const std::string& key = item.key();
+    if (key == "name" || key == "description")
+    {
+      if (!item.value().is_string())
+      {
+        Fail<Error>(path + "." + key, "expected a string, got " + Describe(item.value()));
+      }
+      continue;
+    }
+    bool known = false;
+    for (const char* a : allowed)
+    {
+      known = known || key == a;
+    }
+    if (!known)
+    {
+      std::string expected;
+      for (const char* a : allowed)
+      {
+        expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
+      }
+      Fail<Error>(path,
+        "unknown key \"" + key + "\"; expected one of " + expected + ", \"name\", \"description\"");
+    }
+  }
+}
+
+template <class Error>
+const Json& Required(const Json& object, const char* key, const std::string& path)
+{
+  if (!object.contains(key))
+  {
+    Fail<Error>(path, std::string("missing required key \"") + key + "\"");
+  }
+  return object.at(key);
+}
+} // namespace json
+} // namespace riemann
+
+#endif
