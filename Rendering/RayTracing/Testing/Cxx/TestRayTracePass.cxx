@@ -738,7 +738,8 @@ TEST(RayTracePass, EnvironmentImageByDirection)
   // (the right half of the image).
   const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
   const std::filesystem::path file =
-    std::filesystem::path(output && *output ? output : ".") / "TestRayTracePassEnvironment.ppm";
+    std::filesystem::path(output && *output ? output : std::filesystem::temp_directory_path()) /
+    "TestRayTracePassEnvironment.ppm";
   {
     std::ofstream ppm(file, std::ios::binary);
     ppm << "P6\n8 4\n255\n";
