@@ -36,6 +36,25 @@ bool ConformalMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) c
   return n.Value > 0 && std::isfinite(n.Value) && n.Gradient.allFinite();
 }
 
+bool ConformalMetric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  // d_k d_l g = 2 (n_k n_l + n n_kl) I.
+  ScalarJet n;
+  this->Index->Evaluate(p, SecondDerivatives, n);
+  g = (n.Value * n.Value) * Mat3::Identity();
+  for (int k = 0; k < 3; ++k)
+  {
+    dg[k] = (2.0 * n.Value * n.Gradient[k]) * Mat3::Identity();
+    for (int l = 0; l < 3; ++l)
+    {
+      d2g[k][l] =
+        (2.0 * (n.Gradient[k] * n.Gradient[l] + n.Value * n.Hessian(k, l))) * Mat3::Identity();
+    }
+  }
+  return n.Value > 0 && std::isfinite(n.Value) && n.Gradient.allFinite() && n.Hessian.allFinite();
+}
+
 bool ConformalMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
 {
   ScalarJet n;

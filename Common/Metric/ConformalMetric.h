@@ -25,6 +25,8 @@ public:
   std::string Describe() const override;
   bool Tensor(const Vec3& p, Mat3& g) const override;
   bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
+  bool TensorSecondDerivatives(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
   void EmitGlsl(GlslBuilder& builder) const override;
   bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const override;

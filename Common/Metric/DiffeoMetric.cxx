@@ -50,6 +50,46 @@ bool DiffeoMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) cons
   return g.allFinite() && std::abs(J.determinant()) > DegenerateDeterminant;
 }
 
+bool DiffeoMetric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  // With B_k(s, i) = H_s(i, k) = d_k J(s, i) and C_kl(s, i) = T_s(i, k, l):
+  // d_k g = B_k^T J + J^T B_k, d_l d_k g = C_kl^T J + B_k^T B_l + B_l^T B_k + J^T C_kl.
+  VectorJet jet;
+  this->Map->Evaluate(p, ThirdDerivatives, jet);
+  const Mat3& J = jet.Jacobian;
+  g = J.transpose() * J;
+  Mat3Stack b;
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int s = 0; s < 3; ++s)
+    {
+      b[k].row(s) = jet.Hessian[s].col(k).transpose();
+    }
+    dg[k] = b[k].transpose() * J + J.transpose() * b[k];
+  }
+  bool finite = g.allFinite();
+  for (int k = 0; k < 3; ++k)
+  {
+    finite = finite && dg[k].allFinite();
+    for (int l = 0; l < 3; ++l)
+    {
+      Mat3 c;
+      for (int s = 0; s < 3; ++s)
+      {
+        for (int i = 0; i < 3; ++i)
+        {
+          c(s, i) = jet.Third[s][i](k, l);
+        }
+      }
+      d2g[k][l] =
+        c.transpose() * J + b[k].transpose() * b[l] + b[l].transpose() * b[k] + J.transpose() * c;
+      finite = finite && d2g[k][l].allFinite();
+    }
+  }
+  return finite && std::abs(J.determinant()) > DegenerateDeterminant;
+}
+
 bool DiffeoMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
 {
   VectorJet jet;

@@ -18,6 +18,21 @@ bool EuclideanMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) c
   return p.allFinite();
 }
 
+bool EuclideanMetric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  g.setIdentity();
+  for (int k = 0; k < 3; ++k)
+  {
+    dg[k].setZero();
+    for (Mat3& m : d2g[k])
+    {
+      m.setZero();
+    }
+  }
+  return p.allFinite();
+}
+
 bool EuclideanMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
 {
   for (Mat3& m : gamma)

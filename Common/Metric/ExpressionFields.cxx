@@ -282,7 +282,7 @@ ExpressionTensorField::ExpressionTensorField(
   const std::vector<std::string>& components, const ExpressionInputs& inputs)
   : Components(components)
   , Inputs(inputs)
-  , Compiled(Compile(UpperTriangle(components), inputs, FirstDerivatives))
+  , Compiled(Compile(UpperTriangle(components), inputs, SecondDerivatives))
 {
 }
 
@@ -305,6 +305,31 @@ void ExpressionTensorField::Evaluate(
       }
     }
   }
+}
+
+bool ExpressionTensorField::EvaluateSecond(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  OutputBuffer out;
+  Run(*this->Compiled, this->Inputs, p, SecondDerivatives, out);
+  const CompiledExpressions& c = *this->Compiled;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const int source = Upper(i, j);
+      g(i, j) = out[c.OutputIndex(source, 0)];
+      for (int k = 0; k < 3; ++k)
+      {
+        dg[k](i, j) = out[c.OutputIndex(source, 1, k)];
+        for (int l = 0; l < 3; ++l)
+        {
+          d2g[k][l](i, j) = out[c.OutputIndex(source, 2, k, l)];
+        }
+      }
+    }
+  }
+  return true;
 }
 
 std::string ExpressionTensorField::Describe() const

@@ -78,7 +78,11 @@ public:
   ExpressionTensorField(const std::vector<std::string>& components, const ExpressionInputs& inputs);
   ~ExpressionTensorField() override;
 
+  /// Runs the tape to first order only (the geodesic hot path).
   void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
+  /// The full tape (compiled to second order): g, dg and d2g.
+  bool EvaluateSecond(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   std::string Describe() const override;
   std::string EmitGlsl(GlslBuilder& builder) const override;
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

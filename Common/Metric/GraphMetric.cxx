@@ -36,6 +36,31 @@ bool GraphMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const
   return g.allFinite() && dg[0].allFinite() && dg[1].allFinite() && dg[2].allFinite();
 }
 
+bool GraphMetric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  // d_k d_l g_ij = f_ikl f_j + f_ik f_jl + f_il f_jk + f_i f_jkl.
+  ScalarJet f;
+  this->Field->Evaluate(p, ThirdDerivatives, f);
+  g = Mat3::Identity() + f.Gradient * f.Gradient.transpose();
+  bool finite = g.allFinite();
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 hk = f.Hessian.col(k);
+    dg[k] = hk * f.Gradient.transpose() + f.Gradient * hk.transpose();
+    finite = finite && dg[k].allFinite();
+    for (int l = 0; l < 3; ++l)
+    {
+      const Vec3 hl = f.Hessian.col(l);
+      const Vec3 t = f.Third[k].col(l); // t_i = f_kli
+      d2g[k][l] = t * f.Gradient.transpose() + f.Gradient * t.transpose() + hk * hl.transpose() +
+        hl * hk.transpose();
+      finite = finite && d2g[k][l].allFinite();
+    }
+  }
+  return finite;
+}
+
 bool GraphMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const
 {
   ScalarJet f;

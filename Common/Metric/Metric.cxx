@@ -23,6 +23,16 @@ bool Metric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
   return a.allFinite();
 }
 
+bool Metric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  (void)p;
+  (void)g;
+  (void)dg;
+  (void)d2g;
+  return false;
+}
+
 bool Metric::InverseTensor(const Vec3& p, Mat3& inverse) const
 {
   Mat3 g;

@@ -38,6 +38,14 @@ public:
   virtual bool Tensor(const Vec3& p, Mat3& g) const = 0;
   /// g_ij and dg[k](i, j) = d_k g_ij at p.
   virtual bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const = 0;
+  /**
+   * g_ij, dg[k](i, j) = d_k g_ij and d2g[k][l](i, j) = d_k d_l g_ij at p,
+   * exact (from the providers' third derivatives): what curvature needs
+   * (Curvature.h). The default refuses (returns false); every family of
+   * the metric core overrides it.
+   */
+  virtual bool TensorSecondDerivatives(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const;
   /// gamma[m](i, j) = Gamma^m_ij at p, by the family's specialised formula.
   virtual bool Christoffel(const Vec3& p, Mat3Stack& gamma) const = 0;
   /**

@@ -26,6 +26,21 @@ void ConstantTensorField::Evaluate(
   }
 }
 
+bool ConstantTensorField::EvaluateSecond(
+  const Vec3& /*p*/, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  g = this->Value;
+  for (int k = 0; k < 3; ++k)
+  {
+    dg[k].setZero();
+    for (Mat3& m : d2g[k])
+    {
+      m.setZero();
+    }
+  }
+  return true;
+}
+
 std::string ConstantTensorField::Describe() const
 {
   std::ostringstream s;
@@ -55,6 +70,25 @@ bool TensorMetric::TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) cons
 {
   this->Field->Evaluate(p, true, g, dg);
   return g.allFinite() && Eigen::LLT<Mat3>(g).info() == Eigen::Success;
+}
+
+bool TensorMetric::TensorSecondDerivatives(
+  const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+{
+  if (!this->Field->EvaluateSecond(p, g, dg, d2g))
+  {
+    return false;
+  }
+  bool finite = g.allFinite();
+  for (int k = 0; k < 3; ++k)
+  {
+    finite = finite && dg[k].allFinite();
+    for (const Mat3& m : d2g[k])
+    {
+      finite = finite && m.allFinite();
+    }
+  }
+  return finite && Eigen::LLT<Mat3>(g).info() == Eigen::Success;
 }
 
 bool TensorMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const

@@ -16,13 +16,27 @@
 
 namespace riemann
 {
-/// A symmetric tensor field and its first derivatives dg[k](i, j) = d_k g_ij.
+/// A symmetric tensor field and its derivatives dg[k](i, j) = d_k g_ij (and, optionally, second
+/// ones).
 class RIEMANNCOMMONMETRIC_EXPORT TensorField
 {
 public:
   virtual ~TensorField() = default;
   /// Fill g, and dg when `withDerivatives`.
   virtual void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const = 0;
+  /**
+   * Fill g, dg and d2g[k][l](i, j) = d_k d_l g_ij. Returns false where the
+   * field has no second derivatives: the default refuses.
+   */
+  virtual bool EvaluateSecond(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
+  {
+    (void)p;
+    (void)g;
+    (void)dg;
+    (void)d2g;
+    return false;
+  }
   virtual std::string Describe() const = 0;
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
   /**
@@ -43,6 +57,8 @@ class RIEMANNCOMMONMETRIC_EXPORT ConstantTensorField : public TensorField
 public:
   explicit ConstantTensorField(const Mat3& value);
   void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
+  bool EvaluateSecond(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   std::string Describe() const override;
   std::string EmitGlsl(GlslBuilder& builder) const override;
 
@@ -60,6 +76,9 @@ public:
   /// False where g is not finite or not positive definite (Cholesky fails).
   bool Tensor(const Vec3& p, Mat3& g) const override;
   bool TensorDerivatives(const Vec3& p, Mat3& g, Mat3Stack& dg) const override;
+  /// False where the field has no second derivatives (TensorField::EvaluateSecond refuses).
+  bool TensorSecondDerivatives(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
   void EmitGlsl(GlslBuilder& builder) const override;
 

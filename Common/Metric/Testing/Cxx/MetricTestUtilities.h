@@ -127,6 +127,11 @@ public:
       this->Source->Tensor(p, g);
     }
   }
+  bool EvaluateSecond(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override
+  {
+    return this->Source->TensorSecondDerivatives(p, g, dg, d2g);
+  }
   std::string Describe() const override { return "forwarded " + this->Source->Describe(); }
 
 private:
