@@ -3,6 +3,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 
+#include "Curvature.h"
 #include "GlslSource.h"
 #include "Metric.h"
 #include "vtkRiemannMetric.h"
@@ -111,6 +112,22 @@ void RunInfo(const InfoArguments& args)
   {
     PrintMatrix(out, std::string("Gamma^") + axes[m] + "_ij:", gamma[m]);
   }
+  // Curvature (Curvature.h's convention: R(d_j, d_k) d_i = R^l_ijk d_l).
+  CurvatureSample curvature;
+  if (ComputeCurvature(*metric, point, curvature))
+  {
+    out << "scalar curvature: " << curvature.Scalar << "\n";
+    PrintMatrix(out, "Ricci_ij:", curvature.Ricci);
+    out << "sectional curvature: xy " << curvature.SectionalXY << ", xz "
+        << curvature.SectionalXZ << ", yz " << curvature.SectionalYZ << "\n";
+    out << "sectional curvature over all planes: min " << curvature.SectionalMin << ", max "
+        << curvature.SectionalMax << "\n";
+    out << "|Riemann|: " << curvature.RiemannNorm << "\n";
+  }
+  else
+  {
+    out << "curvature: unavailable here (this metric gives no second derivatives of g)\n";
+  }
   std::cout << out.str();
 }
 } // namespace
@@ -119,7 +136,7 @@ void RegisterInfoCommand(CLI::App& app)
 {
   auto args = std::make_shared<InfoArguments>();
   CLI::App* command = app.add_subcommand(
-    "info", "Print g, g^-1, the volume form and the Christoffel symbols at a point.");
+    "info", "Print g, g^-1, the volume form, the Christoffel symbols and the curvature at a point.");
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);

@@ -122,6 +122,16 @@ class TraceTests(unittest.TestCase):
         self.assertEqual(status, 0)
         # grad f = (2,0,0): g_xx = 5, volume form sqrt(5).
         self.assertIn("volume form sqrt(det g): 2.236067977", out)
+        # The paper's paraboloid at the origin: every sectional curvature 4, scalar 24.
+        status, out, _ = run("info", "-m", os.path.join(METRICS, "paraboloid.json"))
+        self.assertEqual(status, 0)
+        self.assertIn("scalar curvature: 24\n", out)
+        self.assertIn("sectional curvature over all planes: min 4, max 4", out)
+        # The round 3-sphere: sectional curvature +1 everywhere.
+        status, out, _ = run("info", "-m", os.path.join(METRICS, "round-sphere.json"), "-p", "0.3,0.2,-0.5")
+        self.assertEqual(status, 0)
+        self.assertIn("scalar curvature: 6\n", out)
+        self.assertIn("min 1, max 1", out)
 
 
 def png_size_and_pixels(path):
