@@ -118,8 +118,8 @@ void RunInfo(const InfoArguments& args)
   {
     out << "scalar curvature: " << curvature.Scalar << "\n";
     PrintMatrix(out, "Ricci_ij:", curvature.Ricci);
-    out << "sectional curvature: xy " << curvature.SectionalXY << ", xz "
-        << curvature.SectionalXZ << ", yz " << curvature.SectionalYZ << "\n";
+    out << "sectional curvature: xy " << curvature.SectionalXY << ", xz " << curvature.SectionalXZ
+        << ", yz " << curvature.SectionalYZ << "\n";
     out << "sectional curvature over all planes: min " << curvature.SectionalMin << ", max "
         << curvature.SectionalMax << "\n";
     out << "|Riemann|: " << curvature.RiemannNorm << "\n";
@@ -135,8 +135,8 @@ void RunInfo(const InfoArguments& args)
 void RegisterInfoCommand(CLI::App& app)
 {
   auto args = std::make_shared<InfoArguments>();
-  CLI::App* command = app.add_subcommand(
-    "info", "Print g, g^-1, the volume form, the Christoffel symbols and the curvature at a point.");
+  CLI::App* command = app.add_subcommand("info",
+    "Print g, g^-1, the volume form, the Christoffel symbols and the curvature at a point.");
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);

@@ -16,6 +16,7 @@ namespace cli
 void RegisterTraceCommand(CLI::App& app);
 void RegisterInfoCommand(CLI::App& app);
 void RegisterRenderCommand(CLI::App& app);
+void RegisterFieldsCommand(CLI::App& app);
 }
 }
 

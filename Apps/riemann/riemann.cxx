@@ -18,6 +18,7 @@ int main(int argc, char** argv)
   riemann::cli::RegisterTraceCommand(app);
   riemann::cli::RegisterInfoCommand(app);
   riemann::cli::RegisterRenderCommand(app);
+  riemann::cli::RegisterFieldsCommand(app);
   // Warnings and errors of VTK objects without an explicit observer still reach
   // stderr through VTK's output window; no global switch is changed here.
   try

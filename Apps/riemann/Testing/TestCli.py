@@ -221,6 +221,91 @@ class GlslTests(unittest.TestCase):
 
 
 # (description, arguments, metric text or None, expected substring of stderr)
+SPHERE_JSON = '{"type": "conformal", "n": "2/(1+x^2+y^2+z^2)"}'
+
+
+class FieldsTests(unittest.TestCase):
+    """riemann fields: the round 3-sphere (ScalarCurvature 6) as CSV and .vti."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.metric = os.path.join(self.dir, "sphere.json")
+        with open(self.metric, "w") as f:
+            f.write(SPHERE_JSON)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_csv_header_and_sphere_values(self):
+        out = os.path.join(self.dir, "fields.csv")
+        status, _, err = run("fields", "--metric", self.metric, "--bounds", "-1,1,-1,1,-0.5,0.5",
+                             "--dims", "3,4,2", "-o", out)
+        self.assertEqual(status, 0, err)
+        with open(out, newline="") as f:
+            rows = list(csv.reader(f))
+        header = rows[0]
+        self.assertEqual(header[:4], ["x", "y", "z", "ScalarCurvature"])
+        for name in ("Ricci_0", "Ricci_5", "SectionalMin", "SectionalMax", "RiemannNorm",
+                     "VolumeForm", "MetricTensor_0", "InverseMetricTensor_5",
+                     "MetricEigenvalues_2"):
+            self.assertIn(name, header)
+        self.assertEqual(len(rows) - 1, 3 * 4 * 2)
+        col = {name: k for k, name in enumerate(header)}
+        for row in rows[1:]:
+            x, y, z = (float(row[k]) for k in range(3))
+            n = 2.0 / (1.0 + x * x + y * y + z * z)
+            self.assertAlmostEqual(float(row[col["ScalarCurvature"]]), 6.0, places=9)
+            self.assertAlmostEqual(float(row[col["Ricci_0"]]), 2 * n * n, places=9)
+            self.assertAlmostEqual(float(row[col["VolumeForm"]]), n ** 3, places=12)
+            self.assertAlmostEqual(float(row[col["MetricTensor_1"]]), n * n, places=12)
+        self.assertEqual(sorted(os.listdir(self.dir)), ["fields.csv", "sphere.json"])
+
+    def test_vti_readable_with_arrays(self):
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        out = os.path.join(self.dir, "fields.vti")
+        status, _, err = run("fields", "--metric", self.metric, "--dims", "5,5,5", "-o", out)
+        self.assertEqual(status, 0, err)
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        image = reader.GetOutput()
+        self.assertEqual(image.GetDimensions(), (5, 5, 5))
+        self.assertEqual(image.GetBounds(), (-2.0, 2.0, -2.0, 2.0, -2.0, 2.0))
+        pd = image.GetPointData()
+        for name, components in (("ScalarCurvature", 1), ("Ricci", 6), ("VolumeForm", 1),
+                                 ("MetricTensor", 6), ("InverseMetricTensor", 6),
+                                 ("MetricEigenvalues", 3), ("SectionalYZ", 1)):
+            array = pd.GetArray(name)
+            self.assertIsNotNone(array, name)
+            self.assertEqual(array.GetNumberOfComponents(), components, name)
+        lo, hi = pd.GetArray("ScalarCurvature").GetRange()
+        self.assertAlmostEqual(lo, 6.0, places=9)
+        self.assertAlmostEqual(hi, 6.0, places=9)
+        self.assertIsNotNone(image.GetFieldData().GetArray("VolumeIntegral"))
+
+    def test_bad_bounds_and_dims(self):
+        cases = [
+            (["--bounds", "-1,1,-1,1"], "--bounds: expected 6 comma-separated numbers"),
+            (["--bounds", "-1,1,-1,1,-1,inf"], "is not finite"),
+            (["--bounds", "-1,abc,-1,1,-1,1"], "is not a number"),
+            (["--bounds", "1,-1,-1,1,-1,1"], "the x range needs x0 < x1"),
+            (["--bounds", "-1,1,-1,1,2,2"], "the z range needs z0 < z1"),
+            (["--dims", "3,3"], "--dims: expected 3 comma-separated numbers"),
+            (["--dims", "0,3,3"], "each must be between 1 and 512"),
+            (["--dims", "3,513,3"], "each must be between 1 and 512"),
+            (["--dims", "300,300,300"], "at most 20000000"),
+            (["--dims", "3.5,3,3"], "whole numbers"),
+        ]
+        for args, expected in cases:
+            with self.subTest(args=args):
+                out = os.path.join(self.dir, "bad.csv")
+                status, _, err = run("fields", "--metric", self.metric, *args, "-o", out)
+                self.assertEqual(status, 2, err)
+                self.assertIn(expected, err)
+                self.assertEqual(sorted(os.listdir(self.dir)), ["sphere.json"])
+
+
 BAD_INPUTS = [
     ("missing metric file", ["trace", "-m", "/nonexistent.json", "-o", "OUT.csv"], None, "File does not exist"),
     ("malformed JSON", ["trace", "-m", "METRIC", "-o", "OUT.csv"], '{"type": "graph",\n "gaussians": [}',

@@ -1,0 +1,226 @@
+#include "vtkRiemannFieldAlgorithm.h"
+
+#include "Metric.h"
+#include "vtkDataSet.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkRiemannMetric.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkCxxSetObjectMacro(vtkRiemannFieldAlgorithm, Metric, vtkRiemannMetric);
+
+namespace
+{
+// The CLI refuses more; the filter allows the same so that a typo in a
+// script cannot ask for terabytes.
+constexpr double MaximumGridPoints = 2e9;
+}
+
+vtkRiemannFieldAlgorithm::vtkRiemannFieldAlgorithm() = default;
+
+vtkRiemannFieldAlgorithm::~vtkRiemannFieldAlgorithm()
+{
+  this->SetMetric(nullptr);
+}
+
+vtkMTimeType vtkRiemannFieldAlgorithm::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Metric)
+  {
+    time = std::max(time, this->Metric->GetMTime());
+  }
+  return time;
+}
+
+int vtkRiemannFieldAlgorithm::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkRiemannFieldAlgorithm::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataSet* input =
+    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  vtkDataSet* output = vtkDataSet::GetData(outInfo);
+  if (input)
+  {
+    if (!output || !output->IsA(input->GetClassName()))
+    {
+      vtkDataSet* instance = input->NewInstance();
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), instance);
+      instance->FastDelete();
+    }
+  }
+  else if (!output || !vtkImageData::SafeDownCast(output))
+  {
+    vtkImageData* instance = vtkImageData::New();
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), instance);
+    instance->FastDelete();
+  }
+  return 1;
+}
+
+std::string vtkRiemannFieldAlgorithm::CheckGrid() const
+{
+  std::ostringstream why;
+  double points = 1.0;
+  const char* axes = "xyz";
+  for (int a = 0; a < 3; ++a)
+  {
+    const double lo = this->Bounds[2 * a], hi = this->Bounds[2 * a + 1];
+    const int n = this->Dimensions[a];
+    if (!std::isfinite(lo) || !std::isfinite(hi))
+    {
+      why << "the " << axes[a] << " bounds are not finite";
+      return why.str();
+    }
+    if (n < 1)
+    {
+      why << "Dimensions[" << a << "] = " << n << " (at least 1 point per axis)";
+      return why.str();
+    }
+    if (!(lo < hi) && !(lo == hi && n == 1))
+    {
+      why << "the " << axes[a] << " bounds " << lo << ", " << hi
+          << " need min < max (or min == max with one point)";
+      return why.str();
+    }
+    points *= n;
+  }
+  if (points > MaximumGridPoints)
+  {
+    why << "the grid has " << points << " points (at most " << MaximumGridPoints << ")";
+    return why.str();
+  }
+  return {};
+}
+
+void vtkRiemannFieldAlgorithm::GridGeometry(double origin[3], double spacing[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const double lo = this->Bounds[2 * a], hi = this->Bounds[2 * a + 1];
+    const int n = this->Dimensions[a];
+    if (n == 1)
+    {
+      origin[a] = 0.5 * (lo + hi);
+      spacing[a] = hi > lo ? hi - lo : 1.0;
+    }
+    else
+    {
+      origin[a] = lo;
+      spacing[a] = (hi - lo) / (n - 1);
+    }
+  }
+}
+
+int vtkRiemannFieldAlgorithm::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // With an input the pipeline copies its information; alone, describe the grid.
+  if (this->GetNumberOfInputConnections(0) > 0 || !this->CheckGrid().empty())
+  {
+    return 1;
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  double origin[3], spacing[3];
+  this->GridGeometry(origin, spacing);
+  const int extent[6] = { 0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0,
+    this->Dimensions[2] - 1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  return 1;
+}
+
+int vtkRiemannFieldAlgorithm::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
+  vtkDataSet* input =
+    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  output->Initialize();
+  if (!this->Metric || !this->Metric->HasDefinition())
+  {
+    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
+                     "definition.");
+    return 1;
+  }
+  // Hold the metric for the whole computation (SetDefinition may replace it).
+  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
+
+  if (input)
+  {
+    output->ShallowCopy(input);
+  }
+  else
+  {
+    const std::string why = this->CheckGrid();
+    if (!why.empty())
+    {
+      vtkErrorMacro(<< "Invalid grid: " << why << ".");
+      return 1;
+    }
+    vtkImageData* image = vtkImageData::SafeDownCast(output);
+    double origin[3], spacing[3];
+    this->GridGeometry(origin, spacing);
+    image->SetExtent(
+      0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0, this->Dimensions[2] - 1);
+    image->SetOrigin(origin);
+    image->SetSpacing(spacing);
+  }
+  // vtkDataSet::GetPoint(id, x) is thread-safe once called from one thread.
+  if (output->GetNumberOfPoints() > 0)
+  {
+    double x[3];
+    output->GetPoint(0, x);
+  }
+  if (!this->ComputeFields(*metric, output))
+  {
+    output->Initialize();
+  }
+  return 1;
+}
+
+bool vtkRiemannFieldAlgorithm::ForEachPointInBatches(
+  vtkIdType count, const std::function<void(vtkIdType, vtkIdType)>& work)
+{
+  // VTK events (progress) must not fire from worker threads: batches here.
+  const vtkIdType batch = std::max<vtkIdType>(1024, count / 50);
+  vtkIdType done = 0;
+  this->UpdateProgress(0.0);
+  while (done < count)
+  {
+    if (this->GetAbortExecute())
+    {
+      return false;
+    }
+    const vtkIdType end = std::min(count, done + batch);
+    vtkSMPTools::For(done, end, [&](vtkIdType first, vtkIdType last) { work(first, last); });
+    done = end;
+    this->UpdateProgress(static_cast<double>(done) / count);
+  }
+  return !this->GetAbortExecute();
+}
+
+void vtkRiemannFieldAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "Bounds: " << this->Bounds[0] << " " << this->Bounds[1] << " " << this->Bounds[2]
+     << " " << this->Bounds[3] << " " << this->Bounds[4] << " " << this->Bounds[5] << "\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
+     << this->Dimensions[2] << "\n";
+}
