@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -541,7 +542,9 @@ TEST(ExpressionCompiler, ConcurrentEvaluationAndConstruction)
 std::string CompileGlsl(
   const std::string& functions, const std::string& call, const std::string& name)
 {
-  const std::string path = "TestExpressionCompiler_" + name + ".frag";
+  const std::string path =
+    (std::filesystem::temp_directory_path() / ("TestExpressionCompiler_" + name + ".frag"))
+      .string();
   {
     std::ofstream file(path);
     file << "#version 150\n" << functions << "\nout vec4 color;\nvoid main()\n{\n" << call << "}\n";

@@ -144,11 +144,9 @@ TEST(ExpressionPerformance, EightGaussiansAgainstTheBuiltInProvider)
     }
     std::printf("%s\n", sink == 12345.678 ? " " : "");
   }
-#ifdef NDEBUG
-  EXPECT_LT(ratioAtOrder2, 4.0) << "the tape became much slower than the built-in provider";
-#else
+  // Speed is reported, never asserted (shared, noisy machines): the
+  // benchmarks in Testing/Benchmarks measure it.
   (void)ratioAtOrder2;
-#endif
 }
 } // namespace
 } // namespace riemann
