@@ -10,9 +10,9 @@
 
 namespace riemann
 {
-bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& sample)
+bool ChristoffelAndDerivatives(const Metric& metric, const Vec3& p, Mat3& g, Mat3& ginv,
+  Mat3Stack& gamma, std::array<Mat3Stack, 3>& dGamma)
 {
-  Mat3 g;
   Mat3Stack dg;
   std::array<Mat3Stack, 3> d2g;
   if (!metric.TensorSecondDerivatives(p, g, dg, d2g))
@@ -24,17 +24,13 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
   {
     return false;
   }
-  const Mat3 ginv = llt.solve(Mat3::Identity());
-  sample.g = g;
-  sample.ginv = ginv;
+  ginv = llt.solve(Mat3::Identity());
 
   // gamma[m](i, j) = Gamma^m_ij.
-  Mat3Stack gamma;
   ChristoffelFromMetricDerivatives(ginv, dg, gamma);
 
   // dGamma[l][m](i, j) = d_l Gamma^m_ij
   //   = -g^ma (d_l g_ab) Gamma^b_ij + g^mk 1/2 (d_l d_i g_jk + d_l d_j g_ik - d_l d_k g_ij).
-  double dGamma[3][3][3][3];
   for (int l = 0; l < 3; ++l)
   {
     // first[k](i, j) = 1/2 (d_l d_i g_jk + d_l d_j g_ik - d_l d_k g_ij): d_l Gamma_kij.
@@ -62,11 +58,27 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
           {
             value += -a(m, b) * gamma[b](i, j) + ginv(m, b) * first[b][i][j];
           }
-          dGamma[l][m][i][j] = value;
+          dGamma[l][m](i, j) = value;
         }
       }
     }
   }
+  return true;
+}
+
+bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& sample)
+{
+  Mat3 g;
+  Mat3 ginv;
+  Mat3Stack gamma;
+  std::array<Mat3Stack, 3> dGamma;
+  if (!ChristoffelAndDerivatives(metric, p, g, ginv, gamma, dGamma))
+  {
+    return false;
+  }
+  const Eigen::LLT<Mat3> llt(g);
+  sample.g = g;
+  sample.ginv = ginv;
 
   // R^l_ijk = d_j Gamma^l_ik - d_k Gamma^l_ij + Gamma^l_jm Gamma^m_ik - Gamma^l_km Gamma^m_ij.
   for (int l = 0; l < 3; ++l)
@@ -77,7 +89,7 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
       {
         for (int k = 0; k < 3; ++k)
         {
-          double value = dGamma[j][l][i][k] - dGamma[k][l][i][j];
+          double value = dGamma[j][l](i, k) - dGamma[k][l](i, j);
           for (int m = 0; m < 3; ++m)
           {
             value += gamma[l](j, m) * gamma[m](i, k) - gamma[l](k, m) * gamma[m](i, j);

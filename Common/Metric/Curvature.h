@@ -55,6 +55,19 @@ struct CurvatureSample
  */
 RIEMANNCOMMONMETRIC_EXPORT bool ComputeCurvature(
   const Metric& metric, const Vec3& p, CurvatureSample& sample);
+
+/**
+ * g, g^-1, the Christoffel symbols gamma[m](i, j) = Gamma^m_ij and their exact
+ * derivatives dGamma[l][m](i, j) = d_l Gamma^m_ij at p, from
+ * Metric::TensorSecondDerivatives:
+ *   d_l Gamma^m_ij = -g^ma (d_l g_ab) Gamma^b_ij
+ *                    + g^mk 1/2 (d_l d_i g_jk + d_l d_j g_ik - d_l d_k g_ij).
+ * Shared by ComputeCurvature and the Jacobi-field equations (JacobiField.h).
+ * Returns false where the metric refuses second derivatives or g is not
+ * finite and positive definite.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool ChristoffelAndDerivatives(const Metric& metric, const Vec3& p,
+  Mat3& g, Mat3& ginv, Mat3Stack& gamma, std::array<Mat3Stack, 3>& dGamma);
 } // namespace riemann
 
 #endif

@@ -1,0 +1,106 @@
+/**
+ * @file JacobiField.h
+ * @brief Jacobi fields and conjugate points along a geodesic (MATH.md
+ * "Jacobi fields and conjugate points").
+ *
+ * The geodesic flow x' = v, v' = -Gamma(x)(v, v) is integrated together with
+ * its variational (linearised) equations for two Jacobi fields (J_a, DJ_a),
+ * a = 0, 1:
+ *   X' = V,   V' = -(d_X Gamma)(v, v) - 2 Gamma(x)(v, V),
+ * where (d_X Gamma)^m_ij = X^l d_l Gamma^m_ij uses the exact derivatives of
+ * the Christoffel symbols (ChristoffelAndDerivatives, Curvature.h). The
+ * 18-dimensional system (x, v, X_0, V_0, X_1, V_1) is advanced by classical
+ * RK4 with a fixed step in arc length (the seed velocity is g-unit, so the
+ * parameter is arc length). DJ_a = V_a is the coordinate derivative dJ_a/ds,
+ * not the covariant one.
+ *
+ * Seed: v0 = direction / |direction|_g, and (w_0, w_1) a g-orthonormal basis
+ * of the g-orthogonal complement of v0 with vol_g(w_0, w_1, v0) = +1;
+ * J_a(0) = 0, DJ_a(0) = w_a. Both fields stay g-orthogonal to the velocity
+ * (g(J, v) is affine in s and vanishes with its derivative at s = 0).
+ *
+ * Transverse frame at each sample: vhat = v / |v|_g; e_0 = the coordinate axis
+ * least aligned with vhat, projected g-orthogonally off vhat and g-normalised;
+ * e_1 = the g-cross product vhat x_g e_0 (e_1^m = sqrt(det g) g^mi
+ * eps_ijk vhat^j e_0^k), so that (e_0, e_1, vhat) is g-orthonormal and
+ * positively oriented. Transverse[a][b] = g(J_a, e_b) (= components of the
+ * part of J_a orthogonal to v). e_0 may jump between samples when a different
+ * axis becomes the least aligned one, which changes Transverse by a rotation
+ * only: its singular values and determinant do not depend on that choice.
+ *
+ * Determinant = sqrt(det g) det[J_0, J_1, v] / |v|_g (the g-volume of J_0, J_1
+ * and the unit velocity) = det Transverse: signed, continuous in s, > 0 just
+ * after the seed, and zero exactly where the transverse part of
+ * d exp_p / dv loses rank, i.e. at conjugate points. A conjugate point of
+ * multiplicity 1 is a sign change of the determinant; one of multiplicity 2
+ * (e.g. every first conjugate point of a round sphere) is a touching zero
+ * (det ~ (s - s0)^2), detected as a zero of the smallest singular value.
+ */
+#ifndef RiemannJacobiField_h
+#define RiemannJacobiField_h
+
+#include "Metric.h"
+
+#include <vector>
+
+namespace riemann
+{
+struct JacobiSample
+{
+  double ArcLength = 0.0;
+  Vec3 Point = Vec3::Zero();
+  Vec3 Velocity = Vec3::Zero();
+  /// The two transverse Jacobi fields J_a(s) (J_a(0) = 0) and dJ_a/ds.
+  Vec3 J[2] = { Vec3::Zero(), Vec3::Zero() };
+  Vec3 DJ[2] = { Vec3::Zero(), Vec3::Zero() };
+  /// Transverse[a][b] = g(J_a, e_b) in the g-orthonormal transverse frame
+  /// (e_0, e_1) of the file comment.
+  double Transverse[2][2] = { { 0.0, 0.0 }, { 0.0, 0.0 } };
+  /// sqrt(det g) det[J_0, J_1, v] / |v|_g = det Transverse (signed).
+  double Determinant = 0.0;
+  /// Singular values of Transverse, largest first.
+  double SingularValues[2] = { 0.0, 0.0 };
+};
+
+/**
+ * Integrate the geodesic from p in `direction` (any nonzero vector; it is
+ * g-normalised) with its two transverse Jacobi fields by classical RK4 with
+ * fixed step `step` in arc length up to `length` (the last step is shortened
+ * to land on it). `samples` receives s = 0 and every step. Returns false
+ * (samples holding what was reached) for invalid arguments, or where the
+ * metric refuses second derivatives or becomes degenerate before `length`.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool TraceJacobiFields(const Metric& metric, const Vec3& p,
+  const Vec3& direction, double step, double length, std::vector<JacobiSample>& samples);
+
+struct ConjugatePoint
+{
+  double ArcLength = 0.0;
+  Vec3 Point = Vec3::Zero();
+  /// 1 or 2: the rank drop of the transverse Jacobian at the point.
+  int Multiplicity = 1;
+  /// 1 for the first conjugate point along the geodesic, 2 for the next, ...
+  int Index = 0;
+};
+
+/**
+ * Conjugate points of p along the geodesic in `direction`, up to arc length
+ * `length` (TraceJacobiFields with `step`; a geodesic stopped early by a
+ * degenerate metric is searched as far as it got). Candidates:
+ *  - a sign change of the determinant between two samples, refined by
+ *    bisection on the determinant re-integrated from the earlier sample
+ *    (8 RK4 sub-steps), to `tolerance` in arc length;
+ *  - a local minimum of |determinant| at a sample without sign change (a
+ *    touching zero), refined by golden-section minimisation of the smallest
+ *    singular value over the two neighbouring steps, to `tolerance`, and
+ *    accepted when that minimum is below the rank threshold.
+ * Rank threshold: max(100 tolerance, 1e-6) (|DJ_0|_g + |DJ_1|_g) at the root.
+ * Multiplicity 2 when the largest singular value is below it too. At most
+ * `maximumCount` points (no limit when <= 0), in order of arc length.
+ */
+RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
+  const Vec3& p, const Vec3& direction, double step, double length, double tolerance,
+  int maximumCount);
+} // namespace riemann
+
+#endif

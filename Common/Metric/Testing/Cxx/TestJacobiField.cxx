@@ -1,0 +1,213 @@
+// Jacobi fields and conjugate points (JacobiField.h) against known answers:
+// round spheres (first conjugate point at pi / sqrt(K), multiplicity 2),
+// Hadamard manifolds (none), flat pull-backs (linear Jacobi fields).
+#include "Curvature.h"
+#include "JacobiField.h"
+#include "MetricTestUtilities.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+namespace riemann
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+struct Seed
+{
+  Vec3 Point;
+  Vec3 Direction;
+};
+
+/// Seeds for the stereographic spheres: directions not radial, so the great
+/// circle misses the point at infinity.
+std::vector<Seed> SphereSeeds()
+{
+  return { { Vec3(0.5, 0.0, 0.0), Vec3(0.0, 1.0, 0.0) },
+    { Vec3(0.5, 0.0, 0.0), Vec3(0.2, 1.0, 0.5) }, { Vec3(0.1, -0.2, 0.3), Vec3(1.0, 1.0, 0.0) },
+    { Vec3(-0.3, 0.4, 0.2), Vec3(0.0, -0.3, 1.0) } };
+}
+
+void ExpectRoundSphere(const Metric& metric, double curvature, double step)
+{
+  // The curvature first, from the metric's own derivatives.
+  CurvatureSample sample;
+  ASSERT_TRUE(ComputeCurvature(metric, Vec3(0.2, -0.1, 0.3), sample));
+  EXPECT_NEAR(sample.SectionalMin, curvature, 1e-9);
+  EXPECT_NEAR(sample.SectionalMax, curvature, 1e-9);
+
+  const double first = Pi / std::sqrt(curvature);
+  for (const Seed& seed : SphereSeeds())
+  {
+    const auto points =
+      FindConjugatePoints(metric, seed.Point, seed.Direction, step, 2.2 * first, 1e-10, 0);
+    ASSERT_EQ(points.size(), 2u) << "seed " << seed.Point.transpose();
+    for (int k = 0; k < 2; ++k)
+    {
+      const double expected = (k + 1) * first;
+      std::cout << "K = " << curvature << " seed " << seed.Point.transpose() << " dir "
+                << seed.Direction.transpose() << ": conjugate " << k + 1 << " at "
+                << points[k].ArcLength << " (error " << points[k].ArcLength - expected
+                << "), multiplicity " << points[k].Multiplicity << "\n";
+      EXPECT_NEAR(points[k].ArcLength, expected, 1e-6);
+      EXPECT_EQ(points[k].Multiplicity, 2);
+      EXPECT_EQ(points[k].Index, k + 1);
+    }
+    if (curvature == 1.0)
+    {
+      // The first conjugate point of p on the stereographic unit sphere is
+      // its antipode -p / |p|^2; the second is p itself.
+      const Vec3 antipode = -seed.Point / seed.Point.squaredNorm();
+      EXPECT_LT((points[0].Point - antipode).norm(), 1e-6);
+    }
+    EXPECT_LT((points[1].Point - seed.Point).norm(), 1e-6);
+  }
+}
+
+TEST(JacobiField, UnitSphereConjugatePointsAtPiAndTwoPi)
+{
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1+x^2+y^2+z^2)"})json");
+  ExpectRoundSphere(*metric, 1.0, 0.01);
+}
+
+TEST(JacobiField, SphereOfCurvatureFourConjugatePointsAtHalfPi)
+{
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"1/(1+x^2+y^2+z^2)"})json");
+  ExpectRoundSphere(*metric, 4.0, 0.005);
+}
+
+TEST(JacobiField, SphereTimesLineHasSimpleConjugatePoints)
+{
+  // S^2 x R (stereographic unit sphere in (x, y), flat z): along a geodesic
+  // whose S^2 part has speed c, one transverse field is sin(c s) and the other
+  // linear, so the conjugate points are simple (sign changes of the
+  // determinant) at s = k pi / c.
+  const auto metric = ParseMetricDefinition(R"json({"type":"tensor","g":[
+    ["4/(1+x^2+y^2)^2","0","0"],["0","4/(1+x^2+y^2)^2","0"],["0","0","1"]]})json");
+  for (const double slope : { 0.0, 0.5 })
+  {
+    // At (0.5, 0, 0) the S^2 factor of g is 4 / 1.25^2: direction (0, 1, slope)
+    // has S^2 part of g-length 2 / 1.25 and z part slope.
+    const double sphere = 2.0 / 1.25;
+    const double speed = std::sqrt(sphere * sphere + slope * slope);
+    const double sphereSpeed = sphere / speed;
+    const auto points = FindConjugatePoints(
+      *metric, Vec3(0.5, 0.0, 0.0), Vec3(0.0, 1.0, slope), 0.01, 2.2 * Pi / sphereSpeed, 1e-10, 0);
+    ASSERT_EQ(points.size(), 2u) << "slope " << slope;
+    for (int k = 0; k < 2; ++k)
+    {
+      const double expected = (k + 1) * Pi / sphereSpeed;
+      std::cout << "S^2 x R slope " << slope << ": conjugate " << k + 1 << " at "
+                << points[k].ArcLength << " (error " << points[k].ArcLength - expected
+                << "), multiplicity " << points[k].Multiplicity << "\n";
+      EXPECT_NEAR(points[k].ArcLength, expected, 1e-6);
+      EXPECT_EQ(points[k].Multiplicity, 1);
+    }
+  }
+}
+
+TEST(JacobiField, UnitSphereFieldsAreSines)
+{
+  // On the unit sphere J_a(s) = sin(s) E_a with E_a parallel and g-unit.
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1+x^2+y^2+z^2)"})json");
+  std::vector<JacobiSample> samples;
+  ASSERT_TRUE(
+    TraceJacobiFields(*metric, Vec3(0.5, 0.0, 0.0), Vec3(0.2, 1.0, 0.5), 0.005, 6.0, samples));
+  double worst = 0.0;
+  for (const JacobiSample& s : samples)
+  {
+    for (int a = 0; a < 2; ++a)
+    {
+      const double norm = std::sqrt(metric->InnerProduct(s.Point, s.J[a], s.J[a]));
+      worst = std::max(worst, std::abs(norm - std::abs(std::sin(s.ArcLength))));
+      EXPECT_NEAR(metric->InnerProduct(s.Point, s.J[a], s.Velocity), 0.0, 1e-9);
+    }
+    EXPECT_NEAR(s.Determinant, std::pow(std::sin(s.ArcLength), 2), 1e-7);
+  }
+  std::cout << "unit sphere: max | |J|_g - |sin s| | = " << worst << "\n";
+  EXPECT_LT(worst, 1e-7);
+}
+
+TEST(JacobiField, HadamardManifoldsHaveNoConjugatePoints)
+{
+  const auto ball =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1-x^2-y^2-z^2)"})json");
+  const std::vector<Seed> ballSeeds = { { Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0) },
+    { Vec3(0.2, -0.1, 0.1), Vec3(0.3, 1.0, -0.4) },
+    { Vec3(-0.15, 0.2, -0.1), Vec3(-1.0, 0.2, 0.7) } };
+  for (const Seed& seed : ballSeeds)
+  {
+    std::vector<JacobiSample> samples;
+    ASSERT_TRUE(TraceJacobiFields(*ball, seed.Point, seed.Direction, 0.01, 4.0, samples));
+    // K = -1: |J|_g = sinh(s).
+    const JacobiSample& last = samples.back();
+    EXPECT_NEAR(
+      std::sqrt(ball->InnerProduct(last.Point, last.J[0], last.J[0])) / std::sinh(4.0), 1.0, 1e-6);
+    EXPECT_TRUE(FindConjugatePoints(*ball, seed.Point, seed.Direction, 0.01, 4.0, 1e-9, 0).empty());
+  }
+
+  const std::vector<std::pair<std::string, std::shared_ptr<const Metric>>> flat = {
+    { "twist", std::make_shared<DiffeoMetric>(std::make_shared<TwistMap>(1.0)) },
+    { "two-bump composition", std::make_shared<DiffeoMetric>(testing::TwoBumpComposition()) }
+  };
+  const std::vector<Seed> seeds = { { Vec3(0.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0) },
+    { Vec3(0.3, -0.2, 0.1), Vec3(0.2, 1.0, 0.5) },
+    { Vec3(-0.5, 0.4, -0.3), Vec3(0.0, 0.3, -1.0) } };
+  for (const auto& [name, metric] : flat)
+  {
+    for (const Seed& seed : seeds)
+    {
+      std::vector<JacobiSample> samples;
+      EXPECT_TRUE(TraceJacobiFields(*metric, seed.Point, seed.Direction, 0.01, 10.0, samples))
+        << name;
+      EXPECT_TRUE(
+        FindConjugatePoints(*metric, seed.Point, seed.Direction, 0.01, 10.0, 1e-9, 0).empty())
+        << name;
+    }
+  }
+}
+
+TEST(JacobiField, FlatFieldsAreLinear)
+{
+  const std::vector<std::pair<std::string, std::shared_ptr<const Metric>>> flat = {
+    { "twist", std::make_shared<DiffeoMetric>(std::make_shared<TwistMap>(1.0)) },
+    { "two-bump composition", std::make_shared<DiffeoMetric>(testing::TwoBumpComposition()) }
+  };
+  for (const auto& [name, metric] : flat)
+  {
+    std::vector<JacobiSample> samples;
+    ASSERT_TRUE(
+      TraceJacobiFields(*metric, Vec3(0.3, -0.2, 0.1), Vec3(0.2, 1.0, 0.5), 0.0025, 3.0, samples));
+    double worstNorm = 0.0, worstNormal = 0.0, worstCross = 0.0, worstDeterminant = 0.0;
+    for (const JacobiSample& s : samples)
+    {
+      for (int a = 0; a < 2; ++a)
+      {
+        const double norm = std::sqrt(metric->InnerProduct(s.Point, s.J[a], s.J[a]));
+        worstNorm = std::max(worstNorm, std::abs(norm - s.ArcLength));
+        worstNormal =
+          std::max(worstNormal, std::abs(metric->InnerProduct(s.Point, s.J[a], s.Velocity)));
+      }
+      worstCross = std::max(worstCross, std::abs(metric->InnerProduct(s.Point, s.J[0], s.J[1])));
+      worstDeterminant =
+        std::max(worstDeterminant, std::abs(s.Determinant - s.ArcLength * s.ArcLength));
+    }
+    std::cout << name << ": max | |J|_g - s | = " << worstNorm
+              << ", max |g(J, v)| = " << worstNormal << ", max |g(J0, J1)| = " << worstCross
+              << ", max |det - s^2| = " << worstDeterminant << "\n";
+    EXPECT_LT(worstNorm, 1e-9) << name;
+    EXPECT_LT(worstNormal, 1e-9) << name;
+    EXPECT_LT(worstCross, 1e-9) << name;
+    EXPECT_LT(worstDeterminant, 1e-8) << name;
+  }
+}
+} // namespace
+} // namespace riemann
