@@ -17,6 +17,7 @@ void RegisterTraceCommand(CLI::App& app);
 void RegisterInfoCommand(CLI::App& app);
 void RegisterRenderCommand(CLI::App& app);
 void RegisterFieldsCommand(CLI::App& app);
+void RegisterConjugateCommand(CLI::App& app);
 }
 }
 

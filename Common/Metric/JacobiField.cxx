@@ -244,15 +244,36 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
     ConjugatePoint point;
     point.ArcLength = root.ArcLength;
     point.Point = root.Point;
-    point.Multiplicity = root.SingularValues[0] <= RankThreshold(metric, root, tolerance) ? 2 : 1;
+    // Rank drop 2 when the other singular value vanishes too. Integration
+    // error splits a double zero by about the step's error (1e-6 at RK4 step
+    // 0.01 on the unit sphere), while at a simple conjugate point the other
+    // singular value is of the size of the fields: compare relative to |DJ|.
+    point.Multiplicity = root.SingularValues[0] <=
+        1e-3 * RankThreshold(metric, root, tolerance) / std::max(100.0 * tolerance, 1e-6)
+      ? 2
+      : 1;
     point.Index = static_cast<int>(points.size()) + 1;
     points.push_back(point);
+  };
+
+  // The search stops where the integration stops being trustworthy: g(v, v)
+  // must stay 1 (it drifts, then blows up, where a geodesic runs off through
+  // a coordinate singularity, e.g. towards the point at infinity of the
+  // stereographic sphere). Conjugate points are not reported beyond.
+  const auto trustworthy = [&](const JacobiSample& sample)
+  {
+    const double speed = metric.InnerProduct(sample.Point, sample.Velocity, sample.Velocity);
+    return sample.Point.allFinite() && std::isfinite(speed) && std::abs(speed - 1.0) <= 1e-4;
   };
 
   // Sample 0 is the seed (J = 0): start the search at the interval [1, 2].
   for (std::size_t i = 2; i < n; ++i)
   {
     if (maximumCount > 0 && static_cast<int>(points.size()) >= maximumCount)
+    {
+      break;
+    }
+    if (!trustworthy(samples[i]))
     {
       break;
     }

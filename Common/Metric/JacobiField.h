@@ -95,7 +95,11 @@ struct ConjugatePoint
  *    singular value over the two neighbouring steps, to `tolerance`, and
  *    accepted when that minimum is below the rank threshold.
  * Rank threshold: max(100 tolerance, 1e-6) (|DJ_0|_g + |DJ_1|_g) at the root.
- * Multiplicity 2 when the largest singular value is below it too. At most
+ * Multiplicity 2 when the largest singular value is below 1e-3 (|DJ_0|_g +
+ * |DJ_1|_g) too (integration error splits a double zero slightly). The
+ * search stops where |g(v, v) - 1| exceeds 1e-4: there the fixed-step
+ * integration is no longer trustworthy (e.g. a geodesic running off through
+ * the point at infinity of stereographic coordinates). At most
  * `maximumCount` points (no limit when <= 0), in order of arc length.
  */
 RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,

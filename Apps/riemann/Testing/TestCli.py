@@ -306,6 +306,76 @@ class FieldsTests(unittest.TestCase):
                 self.assertEqual(sorted(os.listdir(self.dir)), ["sphere.json"])
 
 
+class ConjugateTests(unittest.TestCase):
+    """riemann conjugate: the round 3-sphere's first conjugate points (the antipode)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.metric = os.path.join(self.dir, "sphere.json")
+        with open(self.metric, "w") as f:
+            f.write(SPHERE_JSON)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_sphere_csv(self):
+        out = os.path.join(self.dir, "conjugate.csv")
+        status, _, err = run("conjugate", "--metric", self.metric, "--seed", "0.2,0.1,-0.3",
+                             "--directions", "20", "--length", "4", "--step", "0.01", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertIn("20 direction(s), 20 conjugate point(s)", err)
+        with open(out, newline="") as f:
+            rows = list(csv.reader(f))
+        self.assertEqual(rows[0], ["direction_id", "x", "y", "z", "ArcLength", "Multiplicity",
+                                   "ConjugateIndex"])
+        self.assertEqual(len(rows) - 1, 20)
+        p = (0.2, 0.1, -0.3)
+        r2 = sum(t * t for t in p)
+        for k, row in enumerate(rows[1:]):
+            self.assertEqual(int(row[0]), k)
+            for c in range(3):
+                self.assertAlmostEqual(float(row[1 + c]), -p[c] / r2, delta=1e-5)
+            self.assertAlmostEqual(float(row[4]), math.pi, delta=1e-6)
+            self.assertEqual(int(row[5]), 2)
+            self.assertEqual(int(row[6]), 1)
+        self.assertEqual(sorted(os.listdir(self.dir)), ["conjugate.csv", "sphere.json"])
+
+    def test_sphere_vtp(self):
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        out = os.path.join(self.dir, "conjugate.vtp")
+        status, _, err = run("conjugate", "--metric", self.metric, "--seed", "0.2,0.1,-0.3",
+                             "--directions", "5", "--length", "7", "--count", "2", "-o", out)
+        self.assertEqual(status, 0, err)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        data = reader.GetOutput()
+        self.assertEqual(data.GetNumberOfPoints(), 10)
+        self.assertEqual(data.GetNumberOfVerts(), 10)
+        pd = data.GetPointData()
+        for name in ("ArcLength", "Multiplicity", "ConjugateIndex", "DirectionId"):
+            self.assertIsNotNone(pd.GetArray(name), name)
+        self.assertEqual(pd.GetArray("ConjugateIndex").GetRange(), (1.0, 2.0))
+
+    def test_bad_arguments(self):
+        cases = [
+            (["--directions", "0"], "--directions"),
+            (["--directions", "-3"], "--directions"),
+            (["--length", "0"], "--length"),
+            (["--step", "0"], "--step"),
+            (["--count", "0"], "--count"),
+            (["--seed", "1,2"], "--seed: expected three finite"),
+        ]
+        for args, expected in cases:
+            with self.subTest(args=args):
+                out = os.path.join(self.dir, "bad.csv")
+                status, _, err = run("conjugate", "--metric", self.metric, *args, "-o", out)
+                self.assertEqual(status, 2, err)
+                self.assertIn(expected, err)
+                self.assertEqual(sorted(os.listdir(self.dir)), ["sphere.json"])
+
+
 BAD_INPUTS = [
     ("missing metric file", ["trace", "-m", "/nonexistent.json", "-o", "OUT.csv"], None, "File does not exist"),
     ("malformed JSON", ["trace", "-m", "METRIC", "-o", "OUT.csv"], '{"type": "graph",\n "gaussians": [}',

@@ -1,0 +1,165 @@
+// riemann conjugate: conjugate points of an observer along a fan of geodesics
+// (vtkRiemannConjugateLocus), written as .vtp (vertices with point data) or
+// .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex).
+#include "CliUtilities.h"
+#include "Commands.h"
+
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannConjugateLocus.h"
+#include "vtkRiemannMetric.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <set>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+struct ConjugateArguments
+{
+  std::string Metric;
+  std::string Seed = "0,0,0";
+  long long Directions = 100;
+  double Length = 10.0;
+  double Step = 0.01;
+  double Tolerance = 1e-8;
+  long long Count = 1;
+  std::string Output;
+};
+
+constexpr long long MaximumDirections = 10000000;
+
+bool WriteCsv(vtkPolyData* locus, const std::string& path)
+{
+  std::ofstream out(path);
+  if (!out)
+  {
+    return false;
+  }
+  out << "direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex\n";
+  out << std::setprecision(17);
+  vtkPointData* pd = locus->GetPointData();
+  vtkDataArray* arcLength = pd->GetArray("ArcLength");
+  vtkDataArray* multiplicity = pd->GetArray("Multiplicity");
+  vtkDataArray* index = pd->GetArray("ConjugateIndex");
+  vtkDataArray* direction = pd->GetArray("DirectionId");
+  for (vtkIdType i = 0; i < locus->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    locus->GetPoint(i, p);
+    out << static_cast<long long>(direction->GetTuple1(i)) << ',' << p[0] << ',' << p[1] << ','
+        << p[2] << ',' << arcLength->GetTuple1(i) << ','
+        << static_cast<int>(multiplicity->GetTuple1(i)) << ','
+        << static_cast<int>(index->GetTuple1(i)) << '\n';
+  }
+  out.flush();
+  return static_cast<bool>(out);
+}
+
+void RunConjugate(const ConjugateArguments& args)
+{
+  const std::string extension = Extension(args.Output);
+  if (extension != "vtp" && extension != "csv")
+  {
+    throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
+  }
+  if (args.Directions < 1 || args.Directions > MaximumDirections)
+  {
+    throw Failure("--directions: " + std::to_string(args.Directions) + ": must be between 1 and " +
+        std::to_string(MaximumDirections),
+      2);
+  }
+  if (!std::isfinite(args.Length) || args.Length <= 0.0)
+  {
+    throw Failure("--length: must be a positive finite arc length", 2);
+  }
+  if (!std::isfinite(args.Step) || args.Step <= 0.0 || args.Step > args.Length)
+  {
+    throw Failure("--step: must be positive and at most --length", 2);
+  }
+  if (args.Length / args.Step > 1e8)
+  {
+    throw Failure("--step: more than 1e8 steps per geodesic (--length / --step)", 2);
+  }
+  double seed[3];
+  ParseVector3(args.Seed, "--seed", seed);
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<vtkRiemannConjugateLocus> locus;
+  vtkNew<ErrorCollector> errors;
+  errors->Observe(locus);
+  locus->SetMetric(metric);
+  locus->SetObserver(seed);
+  locus->SetNumberOfDirections(static_cast<int>(args.Directions));
+  locus->SetMaximumPropagation(args.Length);
+  locus->SetIntegrationStep(args.Step);
+  locus->SetTolerance(args.Tolerance);
+  locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
+  locus->Update();
+  errors->ThrowIfAny("conjugate point search failed:");
+  vtkPolyData* points = locus->GetOutput();
+
+  WriteAtomically(args.Output,
+    [&](const std::string& temporary)
+    {
+      if (extension == "csv")
+      {
+        return WriteCsv(points, temporary);
+      }
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName(temporary.c_str());
+      writer->SetInputData(points);
+      writer->SetDataModeToAppended();
+      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+    });
+
+  std::set<long long> withPoints;
+  vtkDataArray* direction = points->GetPointData()->GetArray("DirectionId");
+  for (vtkIdType i = 0; direction && i < direction->GetNumberOfTuples(); ++i)
+  {
+    withPoints.insert(static_cast<long long>(direction->GetTuple1(i)));
+  }
+  std::cerr << "riemann conjugate: " << args.Directions << " direction(s), "
+            << points->GetNumberOfPoints() << " conjugate point(s) found on " << withPoints.size()
+            << " of them up to arc length " << args.Length << " -> " << args.Output << "\n";
+}
+} // namespace
+
+void RegisterConjugateCommand(CLI::App& app)
+{
+  auto args = std::make_shared<ConjugateArguments>();
+  CLI::App* command = app.add_subcommand(
+    "conjugate", "Conjugate points of an observer along geodesics in many directions.");
+  command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)");
+  command->add_option("--directions,-n", args->Directions,
+    "Number of directions, a Fibonacci lattice on the sphere (default 100)");
+  command->add_option("--length,-l", args->Length, "Arc length searched (default 10)");
+  command->add_option("--step", args->Step, "RK4 step in arc length (default 0.01)");
+  command
+    ->add_option(
+      "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")
+    ->check(CLI::Range(1e-15, 1.0));
+  command
+    ->add_option("--count,-k", args->Count,
+      "Conjugate points kept per direction, first ones first (default 1)")
+    ->check(CLI::Range(1LL, 1000000LL));
+  command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
+  command->callback([args]() { RunConjugate(*args); });
+}
+} // namespace cli
+} // namespace riemann
