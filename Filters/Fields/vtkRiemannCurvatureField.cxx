@@ -15,22 +15,14 @@ vtkStandardNewMacro(vtkRiemannCurvatureField);
 bool vtkRiemannCurvatureField::ComputeFields(const riemann::Metric& metric, vtkDataSet* output)
 {
   const vtkIdType count = output->GetNumberOfPoints();
-  auto makeArray = [count](const char* name, int components)
-  {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(count);
-    return array;
-  };
-  auto scalar = makeArray("ScalarCurvature", 1);
-  auto ricci = makeArray("Ricci", 6);
-  auto sectionalXY = makeArray("SectionalXY", 1);
-  auto sectionalXZ = makeArray("SectionalXZ", 1);
-  auto sectionalYZ = makeArray("SectionalYZ", 1);
-  auto sectionalMin = makeArray("SectionalMin", 1);
-  auto sectionalMax = makeArray("SectionalMax", 1);
-  auto norm = makeArray("RiemannNorm", 1);
+  auto scalar = NewPointArray("ScalarCurvature", 1, count);
+  auto ricci = NewPointArray("Ricci", 6, count);
+  auto sectionalXY = NewPointArray("SectionalXY", 1, count);
+  auto sectionalXZ = NewPointArray("SectionalXZ", 1, count);
+  auto sectionalYZ = NewPointArray("SectionalYZ", 1, count);
+  auto sectionalMin = NewPointArray("SectionalMin", 1, count);
+  auto sectionalMax = NewPointArray("SectionalMax", 1, count);
+  auto norm = NewPointArray("RiemannNorm", 1, count);
 
   double* s = scalar->GetPointer(0);
   double* ric = ricci->GetPointer(0);

@@ -23,6 +23,16 @@ namespace
 constexpr double MaximumGridPoints = 2e9;
 }
 
+vtkSmartPointer<vtkDoubleArray> vtkRiemannFieldAlgorithm::NewPointArray(
+  const char* name, int components, vtkIdType count)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(count);
+  return array;
+}
+
 vtkRiemannFieldAlgorithm::vtkRiemannFieldAlgorithm() = default;
 
 vtkRiemannFieldAlgorithm::~vtkRiemannFieldAlgorithm()

@@ -22,6 +22,8 @@
 
 #include "RiemannFiltersFieldsModule.h" // For export macro
 #include "vtkDataSetAlgorithm.h"
+#include "vtkDoubleArray.h"   // For NewPointArray
+#include "vtkSmartPointer.h"  // For NewPointArray
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <functional> // For std::function
@@ -64,6 +66,10 @@ public:
 protected:
   vtkRiemannFieldAlgorithm();
   ~vtkRiemannFieldAlgorithm() override;
+
+  /// A named double array of `count` tuples of `components`, for a subclass's point data.
+  static vtkSmartPointer<vtkDoubleArray> NewPointArray(
+    const char* name, int components, vtkIdType count);
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation* request, vtkInformationVector** inputVector,

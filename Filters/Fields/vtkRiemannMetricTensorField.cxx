@@ -32,17 +32,9 @@ void StoreSymmetric(const riemann::Mat3& m, double* t)
 bool vtkRiemannMetricTensorField::ComputeFields(const riemann::Metric& metric, vtkDataSet* output)
 {
   const vtkIdType count = output->GetNumberOfPoints();
-  auto makeArray = [count](const char* name, int components)
-  {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(count);
-    return array;
-  };
-  auto tensor = makeArray("MetricTensor", 6);
-  auto inverse = makeArray("InverseMetricTensor", 6);
-  auto eigenvalues = makeArray("MetricEigenvalues", 3);
+  auto tensor = NewPointArray("MetricTensor", 6, count);
+  auto inverse = NewPointArray("InverseMetricTensor", 6, count);
+  auto eigenvalues = NewPointArray("MetricEigenvalues", 3, count);
   double* gt = tensor->GetPointer(0);
   double* it = inverse->GetPointer(0);
   double* ev = eigenvalues->GetPointer(0);
