@@ -6,28 +6,18 @@
  *
  * The steppers work on the first-order phase state (x, v) in fixed-size
  * Eigen vectors: no allocation, no shared mutable state, so any number of
- * geodesics can be integrated concurrently with one Metric.
+ * geodesics can be integrated concurrently with one Metric. The integrators
+ * themselves are the templates of RungeKutta.h, shared with the Jacobi
+ * system (JacobiField.h).
  */
 #ifndef RiemannIntegrators_h
 #define RiemannIntegrators_h
 
 #include "Metric.h"
+#include "RungeKutta.h"
 
 namespace riemann
 {
-/// Public numbering (JSON, CLI, VTK ivars): do not reorder.
-enum class IntegratorType : int
-{
-  Euler = 0,
-  RungeKutta4 = 1,
-  DormandPrince45 = 2
-};
-
-/// "euler", "rk4", "dp45".
-RIEMANNCOMMONMETRIC_EXPORT const char* IntegratorName(IntegratorType type);
-/// Parses "euler", "rk4" or "dp45"; false for anything else.
-RIEMANNCOMMONMETRIC_EXPORT bool ParseIntegratorName(const std::string& name, IntegratorType& type);
-
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 /// The geodesic flow's vector field at y = (x, v): (v, a(x, v)).
@@ -49,42 +39,10 @@ RIEMANNCOMMONMETRIC_EXPORT bool EulerStep(const Metric& metric, Vec6& y, double 
 /// Classical fourth-order Runge-Kutta. False (y unchanged) where degenerate.
 RIEMANNCOMMONMETRIC_EXPORT bool RungeKutta4Step(const Metric& metric, Vec6& y, double h);
 
-/**
- * @class DormandPrince45
- * @brief Adaptive embedded Runge-Kutta 5(4) (Dormand & Prince 1980) with the
- * first-same-as-last cache, standard step-size control, and a mixed
- * absolute/relative tolerance on (x, v).
- */
-class RIEMANNCOMMONMETRIC_EXPORT DormandPrince45
-{
-public:
-  enum StepStatus
-  {
-    Accepted,
-    /// The error could not be brought under tolerance above the minimum step.
-    StepTooSmall,
-    /// The metric is degenerate at a stage point.
-    Degenerate
-  };
+/// Adaptive Dormand-Prince 5(4) on the geodesic flow's state; its
+/// StepStatus values (DormandPrince45::Accepted, ...) are every stepper's.
+using DormandPrince45 = DormandPrince45Of<Vec6>;
 
-  DormandPrince45(double tolerance, double minimumStep, double maximumStep);
-
-  /// Forget the cached derivative (call when starting a new geodesic).
-  void Reset() { this->HaveCachedDerivative = false; }
-
-  /**
-   * Advance y by one accepted step of length at most `limit`, trying `h`
-   * first. On return `taken` is the step used and `h` the suggested next step.
-   */
-  StepStatus Step(const Metric& metric, Vec6& y, double& h, double limit, double& taken);
-
-private:
-  double Tolerance;
-  double MinimumStep;
-  double MaximumStep;
-  bool HaveCachedDerivative = false;
-  Vec6 CachedDerivative;
-};
 /**
  * @class GeodesicStepper
  * @brief One integrator behind one interface: fixed-step Euler or RK4, or
@@ -108,10 +66,7 @@ public:
   DormandPrince45::StepStatus Advance(const Metric& metric, Vec6& y, double limit, double& taken);
 
 private:
-  IntegratorType Type;
-  double InitialStep;
-  double Step;
-  DormandPrince45 Adaptive;
+  FlowStepper<Vec6> Stepper;
 };
 } // namespace riemann
 

@@ -1,6 +1,7 @@
 #include "JacobiField.h"
 
 #include "Curvature.h"
+#include "RungeKutta.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
@@ -50,16 +51,16 @@ bool JacobiFlow(const Metric& metric, const Vec18& y, Vec18& dy)
   return dy.allFinite();
 }
 
+/// The Jacobi system as a flow for RungeKutta.h's steppers.
+struct JacobiSystem
+{
+  const Metric& M;
+  bool operator()(const Vec18& y, Vec18& dy) const { return JacobiFlow(this->M, y, dy); }
+};
+
 bool RungeKutta4(const Metric& metric, Vec18& y, double h)
 {
-  Vec18 k1, k2, k3, k4;
-  if (!JacobiFlow(metric, y, k1) || !JacobiFlow(metric, y + 0.5 * h * k1, k2) ||
-    !JacobiFlow(metric, y + 0.5 * h * k2, k3) || !JacobiFlow(metric, y + h * k3, k4))
-  {
-    return false;
-  }
-  y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-  return y.allFinite();
+  return RungeKutta4StepOf(JacobiSystem{ metric }, y, h) && y.allFinite();
 }
 
 /// g-orthonormal, positively oriented (e0, e1, vhat) at a point (file comment of JacobiField.h).
@@ -116,6 +117,7 @@ bool FillSample(const Metric& metric, double s, const Vec18& y, JacobiSample& sa
   }
   const Mat3 ginv = llt.solve(Mat3::Identity());
   const double volume = std::sqrt(g.determinant());
+  sample.SpeedDrift = sample.Velocity.dot(g * sample.Velocity) - 1.0;
   Vec3 vhat, e0, e1;
   if (!TransverseFrame(g, ginv, volume, sample.Velocity, vhat, e0, e1))
   {
@@ -146,10 +148,13 @@ Vec18 StateOf(const JacobiSample& sample)
 }
 
 /// The sample at arc length s >= from.ArcLength, re-integrated from `from`
-/// with a fixed number of RK4 sub-steps (a smooth function of s).
-bool SampleAt(const Metric& metric, const JacobiSample& from, double s, JacobiSample& sample)
+/// by RK4 with a number of sub-steps fixed for a search (a smooth function
+/// of s): 8 per `interval` (the sample spacing there), at least 8.
+bool SampleAt(
+  const Metric& metric, const JacobiSample& from, double s, double interval, JacobiSample& sample)
 {
-  constexpr int subSteps = 8;
+  const int subSteps = std::max(8,
+    static_cast<int>(std::ceil(8.0 * (s - from.ArcLength) / std::max(interval, 1e-300) - 1e-9)));
   Vec18 y = StateOf(from);
   const double h = (s - from.ArcLength) / subSteps;
   if (h != 0.0)
@@ -174,70 +179,175 @@ double RankThreshold(const Metric& metric, const JacobiSample& sample, double to
 }
 } // namespace
 
-bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction, double step,
-  double length, std::vector<JacobiSample>& samples)
+void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
+  const GeodesicOptions& options, JacobiTrace& trace, bool backward,
+  const std::vector<double>& landings)
 {
-  samples.clear();
-  if (!(step > 0.0) || !(length >= 0.0) || !std::isfinite(length) || !p.allFinite() ||
-    !direction.allFinite())
+  trace.Samples.clear();
+  trace.Reason = NotInitialized;
+  if (!p.allFinite() || !direction.allFinite() || !(options.Step > 0.0) ||
+    !(options.MaximumLength >= 0.0) || std::isnan(options.MaximumLength))
   {
-    return false;
+    return;
   }
   Mat3 g;
   if (!metric.Tensor(p, g))
   {
-    return false;
+    trace.Reason = DegenerateMetric;
+    return;
   }
   const Eigen::LLT<Mat3> llt(g);
   if (!g.allFinite() || llt.info() != Eigen::Success)
   {
-    return false;
+    trace.Reason = DegenerateMetric;
+    return;
   }
   const Mat3 ginv = llt.solve(Mat3::Identity());
   Vec3 v0, w0, w1;
-  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), direction, v0, w0, w1))
+  const Vec3 seedDirection = backward ? Vec3(-direction) : direction;
+  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), seedDirection, v0, w0, w1))
   {
-    return false;
+    return; // zero direction
   }
+  const double sign = backward ? -1.0 : 1.0;
   Vec18 y;
   y << p, v0, Vec3::Zero(), w0, Vec3::Zero(), w1;
   JacobiSample sample;
-  if (!FillSample(metric, 0.0, y, sample))
+  double s = 0.0;
+  const auto record = [&]() -> bool
+  {
+    if (!FillSample(metric, sign * s, y, sample))
+    {
+      return false;
+    }
+    trace.Samples.push_back(sample);
+    return true;
+  };
+  record();
+  const auto inside = [&](const Vec3& x)
+  {
+    return !options.UseBounds ||
+      (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
+        x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
+  };
+  if (!inside(p))
+  {
+    trace.Reason = OutOfDomain;
+    return;
+  }
+
+  std::vector<double> stops;
+  for (double landing : landings)
+  {
+    if (landing > 0.0 && landing < options.MaximumLength)
+    {
+      stops.push_back(landing);
+    }
+  }
+  std::sort(stops.begin(), stops.end());
+  std::size_t nextStop = 0;
+
+  FlowStepper<Vec18> stepper(options.Integrator, options.Step, options.Tolerance,
+    options.MinimumStep, options.MaximumStep);
+  const JacobiSystem system{ metric };
+  // Steps shorter than this (relative to the length) count as arriving
+  // (TraceGeodesic's rule).
+  const double arrival = 1e-12 * std::max(1.0, options.MaximumLength);
+  for (long long n = 0;; ++n)
+  {
+    while (nextStop < stops.size() && stops[nextStop] - s <= arrival)
+    {
+      ++nextStop;
+    }
+    const double target = nextStop < stops.size() ? stops[nextStop] : options.MaximumLength;
+    const double remaining = target - s;
+    if (options.MaximumLength - s <= arrival)
+    {
+      trace.Reason = OutOfLength;
+      return;
+    }
+    if (n >= options.MaximumSteps)
+    {
+      trace.Reason = OutOfSteps;
+      return;
+    }
+    double taken = 0.0;
+    const auto status = stepper.Advance(system, y, remaining, taken);
+    if (status != IntegrationStep::Accepted)
+    {
+      trace.Reason = status == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric;
+      return;
+    }
+    if (!y.allFinite())
+    {
+      trace.Reason = UnexpectedValue;
+      return;
+    }
+    // Land exactly on a landing or on the length (no rounding drift).
+    s = (remaining - taken <= arrival) ? target : s + taken;
+    if (!record())
+    {
+      // The step landed where g is degenerate: not a point of the manifold.
+      trace.Reason = DegenerateMetric;
+      return;
+    }
+    if (!inside(y.segment<3>(0)))
+    {
+      trace.Reason = OutOfDomain;
+      return;
+    }
+  }
+}
+
+bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction, double step,
+  double length, std::vector<JacobiSample>& samples)
+{
+  samples.clear();
+  if (!(step > 0.0) || !(length >= 0.0) || !std::isfinite(length))
   {
     return false;
   }
-  samples.push_back(sample);
-  double s = 0.0;
-  while (s < length)
-  {
-    const double h = std::min(step, length - s);
-    if (!RungeKutta4(metric, y, h))
-    {
-      return false;
-    }
-    // Land exactly on `length` at the last step.
-    s = (length - s <= step) ? length : s + h;
-    if (!FillSample(metric, s, y, sample))
-    {
-      return false;
-    }
-    samples.push_back(sample);
-  }
-  return true;
+  GeodesicOptions options;
+  options.Integrator = IntegratorType::RungeKutta4;
+  options.Step = step;
+  options.MaximumLength = length;
+  options.MaximumSteps = static_cast<long long>(std::ceil(length / step)) + 2;
+  JacobiTrace trace;
+  TraceJacobiFields(metric, p, direction, options, trace);
+  samples = std::move(trace.Samples);
+  return trace.Reason == OutOfLength;
 }
 
 std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,
   const Vec3& direction, double step, double length, double tolerance, int maximumCount)
 {
+  if (!(step > 0.0) || !(length >= 0.0) || !std::isfinite(length))
+  {
+    return {};
+  }
+  GeodesicOptions options;
+  options.Integrator = IntegratorType::RungeKutta4;
+  options.Step = step;
+  options.MaximumLength = length;
+  options.MaximumSteps = static_cast<long long>(std::ceil(length / step)) + 2;
+  return FindConjugatePoints(metric, p, direction, options, tolerance, maximumCount);
+}
+
+std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,
+  const Vec3& direction, const GeodesicOptions& options, double tolerance, int maximumCount)
+{
   std::vector<ConjugatePoint> points;
-  std::vector<JacobiSample> samples;
-  TraceJacobiFields(metric, p, direction, step, length, samples);
+  JacobiTrace trace;
+  TraceJacobiFields(metric, p, direction, options, trace);
+  const std::vector<JacobiSample>& samples = trace.Samples;
   tolerance = std::max(tolerance, 1e-14);
   const std::size_t n = samples.size();
 
+  // The sample spacing around the current interval (variable with dp45).
+  double spacing = options.Step;
   const auto add = [&](const JacobiSample& root)
   {
-    if (!points.empty() && root.ArcLength - points.back().ArcLength < 0.5 * step)
+    if (!points.empty() && root.ArcLength - points.back().ArcLength < 0.5 * spacing)
     {
       return; // the same conjugate point seen from both neighbouring intervals
     }
@@ -262,8 +372,8 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
   // stereographic sphere). Conjugate points are not reported beyond.
   const auto trustworthy = [&](const JacobiSample& sample)
   {
-    const double speed = metric.InnerProduct(sample.Point, sample.Velocity, sample.Velocity);
-    return sample.Point.allFinite() && std::isfinite(speed) && std::abs(speed - 1.0) <= 1e-4;
+    return sample.Point.allFinite() && std::isfinite(sample.SpeedDrift) &&
+      std::abs(sample.SpeedDrift) <= 1e-4;
   };
 
   // Sample 0 is the seed (J = 0): start the search at the interval [1, 2].
@@ -279,6 +389,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
     }
     const JacobiSample& previous = samples[i - 1];
     const JacobiSample& current = samples[i];
+    spacing = current.ArcLength - previous.ArcLength;
     const double d0 = previous.Determinant;
     const double d1 = current.Determinant;
     if (d1 == 0.0 || d0 * d1 < 0.0)
@@ -292,7 +403,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
       while (b - a > tolerance && d1 != 0.0)
       {
         const double c = 0.5 * (a + b);
-        if (!SampleAt(metric, previous, c, middle))
+        if (!SampleAt(metric, previous, c, spacing, middle))
         {
           ok = false;
           break;
@@ -313,7 +424,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
         }
       }
       JacobiSample root;
-      if (ok && SampleAt(metric, previous, 0.5 * (a + b), root))
+      if (ok && SampleAt(metric, previous, 0.5 * (a + b), spacing, root))
       {
         add(root);
       }
@@ -334,7 +445,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
         JacobiSample left, right;
         double c = b - ratio * (b - a);
         double d = a + ratio * (b - a);
-        if (!SampleAt(metric, previous, c, left) || !SampleAt(metric, previous, d, right))
+        if (!SampleAt(metric, previous, c, spacing, left) || !SampleAt(metric, previous, d, spacing, right))
         {
           continue;
         }
@@ -347,7 +458,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
             d = c;
             right = left;
             c = b - ratio * (b - a);
-            ok = SampleAt(metric, previous, c, left);
+            ok = SampleAt(metric, previous, c, spacing, left);
           }
           else
           {
@@ -355,7 +466,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
             c = d;
             left = right;
             d = a + ratio * (b - a);
-            ok = SampleAt(metric, previous, d, right);
+            ok = SampleAt(metric, previous, d, spacing, right);
           }
           if (!ok)
           {
@@ -363,7 +474,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
           }
         }
         JacobiSample root;
-        if (ok && SampleAt(metric, previous, 0.5 * (a + b), root) &&
+        if (ok && SampleAt(metric, previous, 0.5 * (a + b), spacing, root) &&
           root.SingularValues[1] <= RankThreshold(metric, root, tolerance))
         {
           add(root);

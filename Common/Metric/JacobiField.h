@@ -9,10 +9,11 @@
  *   X' = V,   V' = -(d_X Gamma)(v, v) - 2 Gamma(x)(v, V),
  * where (d_X Gamma)^m_ij = X^l d_l Gamma^m_ij uses the exact derivatives of
  * the Christoffel symbols (ChristoffelAndDerivatives, Curvature.h). The
- * 18-dimensional system (x, v, X_0, V_0, X_1, V_1) is advanced by classical
- * RK4 with a fixed step in arc length (the seed velocity is g-unit, so the
- * parameter is arc length). DJ_a = V_a is the coordinate derivative dJ_a/ds,
- * not the covariant one.
+ * 18-dimensional system (x, v, X_0, V_0, X_1, V_1) is advanced by any of the
+ * three integrators of RungeKutta.h (Euler, RK4, adaptive Dormand-Prince 5(4),
+ * whose error control then covers the Jacobi fields too) in arc length (the
+ * seed velocity is g-unit, so the parameter is arc length). DJ_a = V_a is the
+ * coordinate derivative dJ_a/ds, not the covariant one.
  *
  * Seed: v0 = direction / |direction|_g, and (w_0, w_1) a g-orthonormal basis
  * of the g-orthogonal complement of v0 with vol_g(w_0, w_1, v0) = +1;
@@ -39,6 +40,7 @@
 #ifndef RiemannJacobiField_h
 #define RiemannJacobiField_h
 
+#include "GeodesicTrace.h"
 #include "Metric.h"
 
 #include <vector>
@@ -60,15 +62,40 @@ struct JacobiSample
   double Determinant = 0.0;
   /// Singular values of Transverse, largest first.
   double SingularValues[2] = { 0.0, 0.0 };
+  /// g(v, v) - 1 (the seed velocity is g-unit): monitors the integration error.
+  double SpeedDrift = 0.0;
+};
+
+/// A geodesic with its Jacobi fields, sampled at every step (and at s = 0).
+struct JacobiTrace
+{
+  std::vector<JacobiSample> Samples;
+  /// Why it stopped (GeodesicTrace.h's TerminationReason).
+  int Reason = NotInitialized;
 };
 
 /**
- * Integrate the geodesic from p in `direction` (any nonzero vector; it is
- * g-normalised) with its two transverse Jacobi fields by classical RK4 with
- * fixed step `step` in arc length up to `length` (the last step is shortened
- * to land on it). `samples` receives s = 0 and every step. Returns false
- * (samples holding what was reached) for invalid arguments, or where the
- * metric refuses second derivatives or becomes degenerate before `length`.
+ * Trace the geodesic from p in `direction` (any nonzero vector; it is
+ * g-normalised) with its two transverse Jacobi fields, under the same
+ * options and stopping rules as TraceGeodesic (integrator, step, tolerance
+ * and step bounds of dp45, MaximumLength, MaximumSteps, Bounds); samples at
+ * s = 0 and after every step. With `backward` the geodesic follows
+ * -direction and ArcLength is negative. `landings` (arc lengths > 0, any
+ * order) are distances the integration lands on exactly, by shortening the
+ * step before each: the exponential map's wavefronts are sampled there
+ * without interpolation. RecordSpeedDrift is ignored (always recorded: the
+ * metric is evaluated at every sample anyway).
+ */
+RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Vec3& p,
+  const Vec3& direction, const GeodesicOptions& options, JacobiTrace& trace, bool backward = false,
+  const std::vector<double>& landings = {});
+
+/**
+ * The fixed-step RK4 shorthand: trace with step `step` up to `length` (the
+ * last step is shortened to land on it). `samples` receives s = 0 and every
+ * step. Returns false (samples holding what was reached) for invalid
+ * arguments, or where the metric refuses second derivatives or becomes
+ * degenerate before `length`.
  */
 RIEMANNCOMMONMETRIC_EXPORT bool TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, double step, double length, std::vector<JacobiSample>& samples);
@@ -85,11 +112,12 @@ struct ConjugatePoint
 
 /**
  * Conjugate points of p along the geodesic in `direction`, up to arc length
- * `length` (TraceJacobiFields with `step`; a geodesic stopped early by a
- * degenerate metric is searched as far as it got). Candidates:
+ * options.MaximumLength (TraceJacobiFields with `options`: any integrator; a
+ * geodesic stopped early is searched as far as it got). Candidates:
  *  - a sign change of the determinant between two samples, refined by
- *    bisection on the determinant re-integrated from the earlier sample
- *    (8 RK4 sub-steps), to `tolerance` in arc length;
+ *    bisection on the determinant re-integrated by RK4 from the earlier
+ *    sample (at least 8 sub-steps per sample interval), to `tolerance` in
+ *    arc length;
  *  - a local minimum of |determinant| at a sample without sign change (a
  *    touching zero), refined by golden-section minimisation of the smallest
  *    singular value over the two neighbouring steps, to `tolerance`, and
@@ -101,7 +129,15 @@ struct ConjugatePoint
  * integration is no longer trustworthy (e.g. a geodesic running off through
  * the point at infinity of stereographic coordinates). At most
  * `maximumCount` points (no limit when <= 0), in order of arc length.
+ * With the adaptive integrator, keep options.MaximumStep short enough (0.1 of
+ * the expected distance between conjugate points) that no step jumps over
+ * two sign changes.
  */
+RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
+  const Vec3& p, const Vec3& direction, const GeodesicOptions& options, double tolerance,
+  int maximumCount);
+
+/// FindConjugatePoints with fixed-step RK4 of `step` up to `length`.
 RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
   const Vec3& p, const Vec3& direction, double step, double length, double tolerance,
   int maximumCount);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -208,6 +209,147 @@ TEST(JacobiField, FlatFieldsAreLinear)
     EXPECT_LT(worstCross, 1e-9) << name;
     EXPECT_LT(worstDeterminant, 1e-8) << name;
   }
+}
+
+/// max over the samples of |det - sin^2 s| on the unit sphere.
+double WorstSphereDeterminantError(const JacobiTrace& trace)
+{
+  double worst = 0.0;
+  for (const JacobiSample& s : trace.Samples)
+  {
+    worst = std::max(worst, std::abs(s.Determinant - std::pow(std::sin(s.ArcLength), 2)));
+    worst = std::max(worst, std::abs(s.SingularValues[0] - std::abs(std::sin(s.ArcLength))));
+    worst = std::max(worst, std::abs(s.SingularValues[1] - std::abs(std::sin(s.ArcLength))));
+  }
+  return worst;
+}
+
+TEST(JacobiField, EveryIntegratorConvergesToTheSphereSolution)
+{
+  // det Transverse = sin^2 s and both singular values |sin s| on the unit
+  // sphere, up to s = 3 (past the maximum of sin).
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1+x^2+y^2+z^2)"})json");
+  const Vec3 p(0.5, 0.0, 0.0);
+  const Vec3 direction(0.2, 1.0, 0.5);
+  GeodesicOptions options;
+  options.MaximumLength = 3.0;
+  const auto errorAt = [&](IntegratorType integrator, double step)
+  {
+    options.Integrator = integrator;
+    options.Step = step;
+    JacobiTrace trace;
+    TraceJacobiFields(*metric, p, direction, options, trace);
+    EXPECT_EQ(trace.Reason, OutOfLength);
+    EXPECT_DOUBLE_EQ(trace.Samples.back().ArcLength, 3.0);
+    return WorstSphereDeterminantError(trace);
+  };
+  // Halving the step divides the error by 2^order.
+  const double euler1 = errorAt(IntegratorType::Euler, 0.004);
+  const double euler2 = errorAt(IntegratorType::Euler, 0.002);
+  const double rk1 = errorAt(IntegratorType::RungeKutta4, 0.04);
+  const double rk2 = errorAt(IntegratorType::RungeKutta4, 0.02);
+  std::cout << "unit sphere det/singular values: Euler " << euler1 << " -> " << euler2
+            << " (order " << std::log2(euler1 / euler2) << "), RK4 " << rk1 << " -> " << rk2
+            << " (order " << std::log2(rk1 / rk2) << ")\n";
+  EXPECT_LT(euler2, 0.05);
+  EXPECT_NEAR(std::log2(euler1 / euler2), 1.0, 0.15);
+  EXPECT_LT(rk2, 1e-6);
+  EXPECT_NEAR(std::log2(rk1 / rk2), 4.0, 0.3);
+
+  // The adaptive integrator's error control covers the Jacobi fields.
+  options.Integrator = IntegratorType::DormandPrince45;
+  options.Step = 0.01;
+  for (const double tolerance : { 1e-6, 1e-9 })
+  {
+    options.Tolerance = tolerance;
+    JacobiTrace trace;
+    TraceJacobiFields(*metric, p, direction, options, trace);
+    EXPECT_EQ(trace.Reason, OutOfLength);
+    const double error = WorstSphereDeterminantError(trace);
+    std::cout << "dp45 tolerance " << tolerance << ": " << trace.Samples.size() - 1
+              << " steps, error " << error << "\n";
+    EXPECT_LT(error, 100.0 * tolerance);
+  }
+}
+
+TEST(JacobiField, AdaptiveSearchFindsTheSphereConjugatePoints)
+{
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1+x^2+y^2+z^2)"})json");
+  GeodesicOptions options;
+  options.Integrator = IntegratorType::DormandPrince45;
+  options.Step = 0.01;
+  options.Tolerance = 1e-10;
+  options.MaximumStep = 0.1;
+  options.MaximumLength = 2.2 * Pi;
+  for (const Seed& seed : SphereSeeds())
+  {
+    const auto points = FindConjugatePoints(*metric, seed.Point, seed.Direction, options, 1e-10, 0);
+    ASSERT_EQ(points.size(), 2u) << "seed " << seed.Point.transpose();
+    for (int k = 0; k < 2; ++k)
+    {
+      EXPECT_NEAR(points[k].ArcLength, (k + 1) * Pi, 1e-6);
+      EXPECT_EQ(points[k].Multiplicity, 2);
+    }
+  }
+}
+
+TEST(JacobiField, LandsOnRequestedDistancesAndTracesBackward)
+{
+  const auto metric =
+    ParseMetricDefinition(R"json({"type":"conformal","n":"2/(1+x^2+y^2+z^2)"})json");
+  GeodesicOptions options;
+  options.Step = 0.03;
+  options.MaximumLength = 2.0;
+  for (const IntegratorType integrator :
+    { IntegratorType::Euler, IntegratorType::RungeKutta4, IntegratorType::DormandPrince45 })
+  {
+    options.Integrator = integrator;
+    JacobiTrace trace;
+    TraceJacobiFields(*metric, Vec3(0.1, 0.2, 0.0), Vec3(1.0, 0.0, 0.3), options, trace, true,
+      { 1.0, 0.5, 1.234, 5.0 });
+    ASSERT_EQ(trace.Reason, OutOfLength) << IntegratorName(integrator);
+    for (const double landing : { -0.5, -1.0, -1.234, -2.0 })
+    {
+      const auto found = std::find_if(trace.Samples.begin(), trace.Samples.end(),
+        [&](const JacobiSample& s) { return s.ArcLength == landing; });
+      EXPECT_NE(found, trace.Samples.end()) << IntegratorName(integrator) << " " << landing;
+    }
+    // Arc length decreases strictly; the determinant is sin^2 |s| backward too.
+    for (std::size_t i = 1; i < trace.Samples.size(); ++i)
+    {
+      EXPECT_LT(trace.Samples[i].ArcLength, trace.Samples[i - 1].ArcLength);
+    }
+    EXPECT_NEAR(trace.Samples.back().Determinant, std::pow(std::sin(2.0), 2),
+      integrator == IntegratorType::Euler ? 0.05 : 1e-6);
+  }
+}
+
+TEST(JacobiField, StopsLikeTheGeodesicTracer)
+{
+  // Same options, same stopping rules: bounds and steps.
+  const auto metric = ParseMetricDefinition(R"json({"type":"euclidean"})json");
+  GeodesicOptions options;
+  options.Step = 0.1;
+  options.MaximumLength = 10.0;
+  options.UseBounds = true;
+  const double bounds[6] = { -1, 1, -1, 1, -1, 1 };
+  std::copy(bounds, bounds + 6, options.Bounds);
+  JacobiTrace trace;
+  TraceJacobiFields(*metric, Vec3::Zero(), Vec3(1.0, 0.0, 0.0), options, trace);
+  GeodesicPath path;
+  TraceGeodesic(*metric, Vec3::Zero(), Vec3(1.0, 0.0, 0.0), options, path);
+  EXPECT_EQ(trace.Reason, OutOfDomain);
+  EXPECT_EQ(trace.Reason, path.Reason);
+  EXPECT_EQ(trace.Samples.size(), path.Points.size());
+  options.UseBounds = false;
+  options.MaximumSteps = 7;
+  TraceJacobiFields(*metric, Vec3::Zero(), Vec3(1.0, 0.0, 0.0), options, trace);
+  EXPECT_EQ(trace.Reason, OutOfSteps);
+  EXPECT_EQ(trace.Samples.size(), 8u);
+  TraceJacobiFields(*metric, Vec3::Zero(), Vec3::Zero(), options, trace);
+  EXPECT_EQ(trace.Reason, NotInitialized);
 }
 } // namespace
 } // namespace riemann
