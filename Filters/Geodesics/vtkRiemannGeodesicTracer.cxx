@@ -1,6 +1,7 @@
 #include "vtkRiemannGeodesicTracer.h"
 
 #include "GeodesicTrace.h"
+#include "JacobiField.h"
 #include "Metric.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -19,6 +20,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannGeodesicTracer);
@@ -73,6 +75,30 @@ struct Seed
   vtkIdType Id;
   bool Backward;
 };
+
+/// The geodesic with its Jacobi fields, as a GeodesicPath plus the
+/// transverse Jacobian (determinant, singular values) at every point.
+void TraceWithJacobian(const riemann::Metric& metric, const Seed& seed,
+  const riemann::GeodesicOptions& options, riemann::GeodesicPath& path,
+  std::vector<std::array<double, 3>>& jacobian)
+{
+  riemann::JacobiTrace trace;
+  riemann::TraceJacobiFields(metric, seed.Position, seed.Direction, options, trace, seed.Backward);
+  path.Clear();
+  jacobian.clear();
+  path.Reason = trace.Reason;
+  const double sign = seed.Backward ? -1.0 : 1.0;
+  for (const riemann::JacobiSample& sample : trace.Samples)
+  {
+    path.Points.push_back(sample.Point);
+    // Velocity is dx/ds of the forward parametrisation, as TraceGeodesic's.
+    path.Velocities.push_back(sign * sample.Velocity);
+    path.ArcLength.push_back(sample.ArcLength);
+    path.SpeedDrift.push_back(sample.SpeedDrift);
+    jacobian.push_back(
+      { sample.Determinant, sample.SingularValues[0], sample.SingularValues[1] });
+  }
+}
 }
 
 int vtkRiemannGeodesicTracer::RequestData(
@@ -158,6 +184,9 @@ int vtkRiemannGeodesicTracer::RequestData(
   // Trace in parallel, in batches so that progress and abort are handled on
   // this thread (VTK events must not fire from worker threads).
   std::vector<riemann::GeodesicPath> paths(seeds.size());
+  // Per path point: determinant and the two singular values (when asked).
+  const bool jacobian = this->ComputeTransverseJacobian;
+  std::vector<std::vector<std::array<double, 3>>> jacobians(jacobian ? seeds.size() : 0);
   const vtkIdType count = static_cast<vtkIdType>(seeds.size());
   const vtkIdType batch = std::max<vtkIdType>(256, count / 50);
   vtkIdType traced = 0;
@@ -177,8 +206,15 @@ int vtkRiemannGeodesicTracer::RequestData(
             paths[i].Clear();
             continue;
           }
-          riemann::TraceGeodesic(
-            *metric, seed.Position, velocity, options, paths[i], seed.Backward);
+          if (jacobian)
+          {
+            TraceWithJacobian(*metric, seed, options, paths[i], jacobians[i]);
+          }
+          else
+          {
+            riemann::TraceGeodesic(
+              *metric, seed.Position, velocity, options, paths[i], seed.Backward);
+          }
         }
       });
     traced = end;
@@ -230,6 +266,12 @@ int vtkRiemannGeodesicTracer::RequestData(
   makeArray(arcLength, "ArcLength", 1, pointCount);
   makeArray(velocity, "Velocity", 3, pointCount);
   makeArray(speedDrift, "SpeedDrift", 1, pointCount);
+  vtkNew<vtkDoubleArray> determinant, singularValues;
+  if (jacobian)
+  {
+    makeArray(determinant, "TransverseJacobian", 1, pointCount);
+    makeArray(singularValues, "TransverseJacobianSingularValues", 2, pointCount);
+  }
   vtkNew<vtkIntArray> seedIds, reasons;
   seedIds->SetName("SeedIds");
   seedIds->SetNumberOfTuples(lineCount);
@@ -254,6 +296,11 @@ int vtkRiemannGeodesicTracer::RequestData(
       arcLength->SetValue(next, path.ArcLength[k]);
       velocity->SetTypedTuple(next, path.Velocities[k].data());
       speedDrift->SetValue(next, path.SpeedDrift[k]);
+      if (jacobian)
+      {
+        determinant->SetValue(next, jacobians[i][k][0]);
+        singularValues->SetTypedTuple(next, jacobians[i][k].data() + 1);
+      }
     }
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     seedIds->SetValue(line, static_cast<int>(seeds[i].Id));
@@ -267,6 +314,11 @@ int vtkRiemannGeodesicTracer::RequestData(
   output->GetPointData()->AddArray(velocity);
   output->GetPointData()->SetVectors(velocity);
   output->GetPointData()->AddArray(speedDrift);
+  if (jacobian)
+  {
+    output->GetPointData()->AddArray(determinant);
+    output->GetPointData()->AddArray(singularValues);
+  }
   output->GetCellData()->AddArray(seedIds);
   output->GetCellData()->AddArray(reasons);
   return 1;
@@ -295,4 +347,5 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DomainBounds: " << this->DomainBounds[0] << " " << this->DomainBounds[1] << " "
      << this->DomainBounds[2] << " " << this->DomainBounds[3] << " " << this->DomainBounds[4] << " "
      << this->DomainBounds[5] << "\n";
+  os << indent << "ComputeTransverseJacobian: " << this->ComputeTransverseJacobian << "\n";
 }
