@@ -3,9 +3,11 @@
 #include "JacobiField.h"
 #include "Metric.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -13,11 +15,13 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannMetric.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannConjugateLocus);
@@ -26,6 +30,7 @@ vtkCxxSetObjectMacro(vtkRiemannConjugateLocus, Metric, vtkRiemannMetric);
 vtkRiemannConjugateLocus::vtkRiemannConjugateLocus()
 {
   this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(2);
 }
 
 vtkRiemannConjugateLocus::~vtkRiemannConjugateLocus()
@@ -43,53 +48,17 @@ vtkMTimeType vtkRiemannConjugateLocus::GetMTime()
   return time;
 }
 
-namespace
-{
-riemann::Vec3 Cross(const riemann::Vec3& a, const riemann::Vec3& b)
-{
-  return riemann::Vec3(
-    a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
-
-/// Fibonacci lattice of `count` unit vectors over the cap {cos(angle to axis)
-/// >= cosine} (cosine = -1: the whole sphere), even in area.
-std::vector<riemann::Vec3> FibonacciDirections(int count, const riemann::Vec3& axis, double cosine)
-{
-  std::vector<riemann::Vec3> directions(static_cast<size_t>(std::max(count, 0)));
-  // An orthonormal frame (u, w, axis).
-  const riemann::Vec3 a = axis.normalized();
-  const riemann::Vec3 helper =
-    std::abs(a[0]) < 0.9 ? riemann::Vec3(1.0, 0.0, 0.0) : riemann::Vec3(0.0, 1.0, 0.0);
-  const riemann::Vec3 u = Cross(a, helper).normalized();
-  const riemann::Vec3 w = Cross(a, u);
-  const double goldenAngle = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < count; ++i)
-  {
-    // Heights evenly spaced in [cosine, 1] (equal areas, Archimedes).
-    const double z = 1.0 - (1.0 - cosine) * (i + 0.5) / count;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const double phi = goldenAngle * i;
-    directions[i] = z * a + r * std::cos(phi) * u + r * std::sin(phi) * w;
-  }
-  return directions;
-}
-}
-
 int vtkRiemannConjugateLocus::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* locus = vtkPolyData::GetData(outputVector, 1);
   output->Initialize();
+  locus->Initialize();
   if (!this->Metric || !this->Metric->HasDefinition())
   {
     vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
                      "definition.");
-    return 1;
-  }
-  const riemann::Vec3 axis(this->ConeAxis[0], this->ConeAxis[1], this->ConeAxis[2]);
-  if (this->ConeAngle < 180.0 && !(axis.norm() > 0.0 && axis.allFinite()))
-  {
-    vtkErrorMacro(<< "ConeAxis must be a finite nonzero vector.");
     return 1;
   }
   const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
@@ -101,18 +70,35 @@ int vtkRiemannConjugateLocus::RequestData(
   // Hold the metric for the whole computation (SetDefinition may replace it).
   const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
 
-  const double cosine =
-    this->ConeAngle >= 180.0 ? -1.0 : std::cos(vtkMath::RadiansFromDegrees(this->ConeAngle));
-  const std::vector<riemann::Vec3> directions = FibonacciDirections(this->NumberOfDirections,
-    this->ConeAngle >= 180.0 ? riemann::Vec3(0.0, 0.0, 1.0) : axis, cosine);
+  vtkNew<vtkPolyData> grid;
+  std::string message;
+  if (!vtkRiemannDirectionGrid::Build(
+        this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid, message))
+  {
+    vtkErrorMacro(<< "ConeAxis: " << message << ".");
+    return 1;
+  }
+  std::vector<riemann::Vec3> directions(static_cast<size_t>(grid->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    grid->GetPoint(i, directions[i].data());
+  }
+  riemann::GeodesicOptions options;
+  options.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
+  options.Step = this->IntegrationStep;
+  options.MinimumStep = std::min(1e-7, this->MaximumIntegrationStep);
+  options.MaximumStep = this->MaximumIntegrationStep;
+  options.Tolerance = this->MaximumError;
+  options.MaximumLength = this->MaximumPropagation;
+  // The step budget follows the length: a long search is never cut short.
+  options.MaximumSteps =
+    static_cast<long long>(std::ceil(this->MaximumPropagation / this->IntegrationStep)) + 1000000;
 
   // Search in parallel, in batches so that progress and abort are handled on
   // this thread (VTK events must not fire from worker threads).
   const vtkIdType count = static_cast<vtkIdType>(directions.size());
   std::vector<std::vector<riemann::ConjugatePoint>> found(directions.size());
   const vtkIdType batch = std::max<vtkIdType>(64, count / 50);
-  const double step = this->IntegrationStep;
-  const double length = this->MaximumPropagation;
   const double tolerance = this->Tolerance;
   const int maximumCount = this->MaximumNumberOfConjugatePoints;
   vtkIdType done = 0;
@@ -126,7 +112,7 @@ int vtkRiemannConjugateLocus::RequestData(
         for (vtkIdType i = first; i < last; ++i)
         {
           found[i] = riemann::FindConjugatePoints(
-            *metric, observer, directions[i], step, length, tolerance, maximumCount);
+            *metric, observer, directions[i], options, tolerance, maximumCount);
         }
       });
     done = end;
@@ -173,7 +159,67 @@ int vtkRiemannConjugateLocus::RequestData(
   output->GetPointData()->AddArray(multiplicity);
   output->GetPointData()->AddArray(index);
   output->GetPointData()->AddArray(directionId);
+  if (done == count)
+  {
+    this->BuildLocusSurfaces(grid, found, locus);
+  }
   return 1;
+}
+
+void vtkRiemannConjugateLocus::BuildLocusSurfaces(vtkPolyData* grid,
+  const std::vector<std::vector<riemann::ConjugatePoint>>& found, vtkPolyData* locus)
+{
+  size_t deepest = 0;
+  for (const auto& points : found)
+  {
+    deepest = std::max(deepest, points.size());
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkDoubleArray> arcLength;
+  arcLength->SetName("ArcLength");
+  vtkNew<vtkIntArray> multiplicity, index, directionId, cellIndex;
+  multiplicity->SetName("Multiplicity");
+  index->SetName("ConjugateIndex");
+  directionId->SetName("DirectionId");
+  cellIndex->SetName("ConjugateIndex");
+  std::vector<vtkIdType> local(found.size());
+  vtkCellArray* gridTriangles = grid->GetPolys();
+  vtkNew<vtkIdList> cell;
+  for (size_t k = 0; k < deepest; ++k)
+  {
+    for (size_t i = 0; i < found.size(); ++i)
+    {
+      local[i] = -1;
+      if (found[i].size() > k)
+      {
+        const riemann::ConjugatePoint& point = found[i][k];
+        local[i] = points->InsertNextPoint(point.Point.data());
+        arcLength->InsertNextValue(point.ArcLength);
+        multiplicity->InsertNextValue(point.Multiplicity);
+        index->InsertNextValue(point.Index);
+        directionId->InsertNextValue(static_cast<int>(i));
+      }
+    }
+    for (gridTriangles->InitTraversal(); gridTriangles->GetNextCell(cell);)
+    {
+      const vtkIdType t[3] = { local[cell->GetId(0)], local[cell->GetId(1)],
+        local[cell->GetId(2)] };
+      if (t[0] >= 0 && t[1] >= 0 && t[2] >= 0)
+      {
+        triangles->InsertNextCell(3, t);
+        cellIndex->InsertNextValue(static_cast<int>(k) + 1);
+      }
+    }
+  }
+  locus->SetPoints(points);
+  locus->SetPolys(triangles);
+  locus->GetPointData()->AddArray(arcLength);
+  locus->GetPointData()->AddArray(multiplicity);
+  locus->GetPointData()->AddArray(index);
+  locus->GetPointData()->AddArray(directionId);
+  locus->GetCellData()->AddArray(cellIndex);
 }
 
 void vtkRiemannConjugateLocus::PrintSelf(ostream& os, vtkIndent indent)
@@ -187,7 +233,10 @@ void vtkRiemannConjugateLocus::PrintSelf(ostream& os, vtkIndent indent)
      << this->ConeAxis[2] << "\n";
   os << indent << "ConeAngle: " << this->ConeAngle << "\n";
   os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
+  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
   os << indent << "IntegrationStep: " << this->IntegrationStep << "\n";
+  os << indent << "MaximumIntegrationStep: " << this->MaximumIntegrationStep << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumNumberOfConjugatePoints: " << this->MaximumNumberOfConjugatePoints
      << "\n";

@@ -1,0 +1,226 @@
+#include "vtkRiemannDirectionGrid.h"
+
+#include "vtkCellArray.h"
+#include "vtkDelaunay2D.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannDirectionGrid);
+
+vtkRiemannDirectionGrid::vtkRiemannDirectionGrid()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+namespace
+{
+using Vector = std::array<double, 3>;
+
+Vector Combine(double a, const Vector& x, double b, const Vector& y, double c, const Vector& z)
+{
+  return { a * x[0] + b * y[0] + c * z[0], a * x[1] + b * y[1] + c * z[1],
+    a * x[2] + b * y[2] + c * z[2] };
+}
+
+/// The loop of boundary edges (edges of one triangle only), in order; empty
+/// when there is none or it is not one simple loop.
+std::vector<vtkIdType> BoundaryLoop(vtkCellArray* triangles)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
+  vtkNew<vtkIdList> ids;
+  for (triangles->InitTraversal(); triangles->GetNextCell(ids);)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = ids->GetId(k);
+      const vtkIdType b = ids->GetId((k + 1) % 3);
+      ++edges[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  std::map<vtkIdType, std::vector<vtkIdType>> neighbours;
+  for (const auto& [edge, count] : edges)
+  {
+    if (count == 1)
+    {
+      neighbours[edge.first].push_back(edge.second);
+      neighbours[edge.second].push_back(edge.first);
+    }
+  }
+  std::vector<vtkIdType> loop;
+  if (neighbours.empty())
+  {
+    return loop;
+  }
+  for (const auto& [vertex, next] : neighbours)
+  {
+    if (next.size() != 2)
+    {
+      return {}; // not a simple loop
+    }
+  }
+  vtkIdType previous = -1;
+  vtkIdType current = neighbours.begin()->first;
+  do
+  {
+    loop.push_back(current);
+    const auto& next = neighbours[current];
+    const vtkIdType following = next[0] != previous ? next[0] : next[1];
+    previous = current;
+    current = following;
+  } while (current != loop.front() && loop.size() <= neighbours.size());
+  return loop.size() == neighbours.size() ? loop : std::vector<vtkIdType>();
+}
+}
+
+bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[3],
+  double coneAngle, vtkPolyData* grid, std::string& message)
+{
+  grid->Initialize();
+  const bool wholeSphere = coneAngle >= 180.0;
+  Vector axis = { 0.0, 0.0, 1.0 };
+  if (!wholeSphere)
+  {
+    const double norm = vtkMath::Norm(axisIn);
+    if (!(norm > 0.0) || !std::isfinite(norm))
+    {
+      message = "the cone axis must be a finite nonzero vector";
+      return false;
+    }
+    axis = { axisIn[0] / norm, axisIn[1] / norm, axisIn[2] / norm };
+  }
+  const int count = std::max(numberOfDirections, 0);
+  const double cosine = wholeSphere ? -1.0 : std::cos(vtkMath::RadiansFromDegrees(coneAngle));
+
+  // An orthonormal frame (u, w, axis).
+  Vector helper = std::abs(axis[0]) < 0.9 ? Vector{ 1.0, 0.0, 0.0 } : Vector{ 0.0, 1.0, 0.0 };
+  Vector u, w;
+  vtkMath::Cross(axis.data(), helper.data(), u.data());
+  vtkMath::Normalize(u.data());
+  vtkMath::Cross(axis.data(), u.data(), w.data());
+
+  vtkNew<vtkPoints> directions;
+  directions->SetDataTypeToDouble();
+  directions->SetNumberOfPoints(count);
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("DirectionId");
+  ids->SetNumberOfTuples(count);
+  const double goldenAngle = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i)
+  {
+    // Heights evenly spaced in [cosine, 1] (equal areas, Archimedes).
+    const double z = 1.0 - (1.0 - cosine) * (i + 0.5) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = goldenAngle * i;
+    const Vector d = Combine(z, axis, r * std::cos(phi), u, r * std::sin(phi), w);
+    directions->SetPoint(i, d.data());
+    ids->SetValue(i, i);
+  }
+
+  vtkNew<vtkCellArray> triangles;
+  if (count >= 3)
+  {
+    // Stereographic projection from a pole onto the plane orthogonal to it:
+    // -axis for a cap (outside it); for the whole sphere the last direction
+    // (the one nearest -axis), whose star is added afterwards as the cone
+    // over the boundary of the others' triangulation.
+    Vector pole = { -axis[0], -axis[1], -axis[2] };
+    const int projectedCount = wholeSphere ? count - 1 : count;
+    if (wholeSphere)
+    {
+      directions->GetPoint(count - 1, pole.data());
+    }
+    Vector p0 = std::abs(pole[0]) < 0.9 ? Vector{ 1.0, 0.0, 0.0 } : Vector{ 0.0, 1.0, 0.0 };
+    Vector e0, e1;
+    vtkMath::Cross(pole.data(), p0.data(), e0.data());
+    vtkMath::Normalize(e0.data());
+    vtkMath::Cross(pole.data(), e0.data(), e1.data());
+    vtkNew<vtkPoints> projected;
+    projected->SetDataTypeToDouble();
+    projected->SetNumberOfPoints(projectedCount);
+    for (int i = 0; i < projectedCount; ++i)
+    {
+      double d[3];
+      directions->GetPoint(i, d);
+      const double scale = 1.0 / (1.0 - vtkMath::Dot(d, pole.data()));
+      projected->SetPoint(i, scale * vtkMath::Dot(d, e0.data()),
+        scale * vtkMath::Dot(d, e1.data()), 0.0);
+    }
+    vtkNew<vtkPolyData> plane;
+    plane->SetPoints(projected);
+    vtkNew<vtkDelaunay2D> delaunay;
+    delaunay->SetInputData(plane);
+    delaunay->Update();
+    triangles->DeepCopy(delaunay->GetOutput()->GetPolys());
+    if (wholeSphere)
+    {
+      // The pole's neighbours are the boundary of the planar triangulation.
+      const std::vector<vtkIdType> loop = BoundaryLoop(triangles);
+      for (size_t k = 0; k < loop.size(); ++k)
+      {
+        const vtkIdType star[3] = { count - 1, loop[k], loop[(k + 1) % loop.size()] };
+        triangles->InsertNextCell(3, star);
+      }
+    }
+    // Orient every triangle outward (normal . centroid > 0).
+    vtkNew<vtkCellArray> oriented;
+    oriented->AllocateExact(triangles->GetNumberOfCells(), 3 * triangles->GetNumberOfCells());
+    vtkNew<vtkIdList> cell;
+    for (triangles->InitTraversal(); triangles->GetNextCell(cell);)
+    {
+      double a[3], b[3], c[3], ab[3], ac[3], normal[3];
+      directions->GetPoint(cell->GetId(0), a);
+      directions->GetPoint(cell->GetId(1), b);
+      directions->GetPoint(cell->GetId(2), c);
+      vtkMath::Subtract(b, a, ab);
+      vtkMath::Subtract(c, a, ac);
+      vtkMath::Cross(ab, ac, normal);
+      const double centroid[3] = { a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2] };
+      vtkIdType t[3] = { cell->GetId(0), cell->GetId(1), cell->GetId(2) };
+      if (vtkMath::Dot(normal, centroid) < 0.0)
+      {
+        std::swap(t[1], t[2]);
+      }
+      oriented->InsertNextCell(3, t);
+    }
+    triangles->ShallowCopy(oriented);
+  }
+  grid->SetPoints(directions);
+  grid->SetPolys(triangles);
+  grid->GetPointData()->AddArray(ids);
+  return true;
+}
+
+int vtkRiemannDirectionGrid::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  std::string message;
+  if (!Build(this->NumberOfDirections, this->ConeAxis, this->ConeAngle, output, message))
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "ConeAxis: " << message << ".");
+  }
+  return 1;
+}
+
+void vtkRiemannDirectionGrid::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
+  os << indent << "ConeAxis: " << this->ConeAxis[0] << " " << this->ConeAxis[1] << " "
+     << this->ConeAxis[2] << "\n";
+  os << indent << "ConeAngle: " << this->ConeAngle << "\n";
+}

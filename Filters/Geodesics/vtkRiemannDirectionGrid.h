@@ -1,0 +1,81 @@
+/**
+ * @class   vtkRiemannDirectionGrid
+ * @brief   Directions spread evenly over the unit sphere or a cap of it,
+ * triangulated: the direction grid of the exponential map and of the
+ * conjugate locus.
+ *
+ * vtkRiemannDirectionGrid (a source) outputs NumberOfDirections unit vectors
+ * as the points of a triangulated surface (the unit sphere, or the spherical
+ * cap of half-angle ConeAngle degrees around ConeAxis when ConeAngle < 180),
+ * with point data `DirectionId` (the point's index).
+ *
+ * The directions are a Fibonacci lattice (heights evenly spaced, so every
+ * direction stands for the same solid angle; longitudes advancing by the
+ * golden angle). The triangulation is the spherical Delaunay triangulation:
+ * stereographic projection from -ConeAxis maps circles on the sphere to
+ * circles in the plane, so the planar Delaunay triangulation (vtkDelaunay2D)
+ * of the projected directions is the spherical one. On the whole sphere the
+ * region around -ConeAxis that the projection sends to infinity is closed by
+ * a fan over its boundary loop. Triangles are oriented with their normals
+ * pointing away from the centre of the sphere.
+ *
+ * Surfaces over the grid (geodesic spheres, the conjugate locus) reuse the
+ * triangles with other points: point i of those is a function of direction i.
+ */
+#ifndef vtkRiemannDirectionGrid_h
+#define vtkRiemannDirectionGrid_h
+
+#include "RiemannFiltersGeodesicsModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
+
+#include <string> // For Build
+
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannDirectionGrid : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRiemannDirectionGrid* New();
+  vtkTypeMacro(vtkRiemannDirectionGrid, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Number of directions. Default 100.
+  vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfDirections, int);
+  ///@}
+
+  ///@{
+  /// Restrict the directions to the cap of half-angle ConeAngle (degrees)
+  /// around ConeAxis. Defaults (0, 0, 1) and 180 (the whole sphere).
+  vtkSetVector3Macro(ConeAxis, double);
+  vtkGetVector3Macro(ConeAxis, double);
+  vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
+  vtkGetMacro(ConeAngle, double);
+  ///@}
+
+  /**
+   * The grid's directions and triangles for these settings, or false with a
+   * message (a zero or non-finite axis). `grid` receives the points (unit
+   * directions), the triangles and DirectionId. Used by the filters that
+   * shoot geodesics over the grid.
+   */
+  VTK_WRAPEXCLUDE static bool Build(int numberOfDirections, const double axis[3], double coneAngle,
+    vtkPolyData* grid, std::string& message);
+
+protected:
+  vtkRiemannDirectionGrid();
+  ~vtkRiemannDirectionGrid() override = default;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int NumberOfDirections = 100;
+  double ConeAxis[3] = { 0.0, 0.0, 1.0 };
+  double ConeAngle = 180.0;
+
+private:
+  vtkRiemannDirectionGrid(const vtkRiemannDirectionGrid&) = delete;
+  void operator=(const vtkRiemannDirectionGrid&) = delete;
+};
+
+#endif

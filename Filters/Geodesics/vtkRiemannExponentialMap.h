@@ -1,0 +1,162 @@
+/**
+ * @class   vtkRiemannExponentialMap
+ * @brief   The exponential map at an observer: a bundle of geodesics over a
+ * grid of directions, and its geodesic spheres (wavefronts) as surfaces.
+ *
+ * vtkRiemannExponentialMap (a source: no input) shoots the geodesics of a
+ * vtkRiemannMetric from Observer over the triangulated direction grid of
+ * vtkRiemannDirectionGrid (NumberOfDirections over the unit sphere, or over
+ * the cap of half-angle ConeAngle around ConeAxis), each integrated with its
+ * two Jacobi fields (riemann::TraceJacobiFields: IntegratorType, step and
+ * tolerance as vtkRiemannGeodesicTracer's) up to MaximumPropagation.
+ *
+ * Output port 0, the ray bundle: one polyline per direction, with point data
+ * `ArcLength`, `SpeedDrift`, `TransverseJacobian` (signed determinant of
+ * the differential of exp transverse to the ray: zero at conjugate points,
+ * negative past a simple one) and `TransverseJacobianSingularValues`, and cell
+ * data `DirectionId` and `ReasonForTermination`.
+ *
+ * Output port 1, the wavefronts: for each radius r of the Radii list (up to
+ * MaximumPropagation), the geodesic sphere exp(r S), S the direction grid, as a
+ * triangulated surface: point i is where the geodesic of direction i is at arc
+ * length r (the integration lands there exactly; no interpolation), the
+ * triangles are the grid's, kept where all three geodesics got that far.
+ * Point data `TransverseJacobian`, `TransverseJacobianSingularValues`,
+ * `DirectionId`, and `Radius` (also as cell data, to threshold one sphere).
+ * Past the first conjugate points a geodesic sphere folds over itself: the
+ * sign of TransverseJacobian shows which sheet is which, and its zeros the
+ * cusps and folds (the caustic, vtkRiemannConjugateLocus).
+ *
+ * Directions are traced in parallel with vtkSMPTools, in batches so that
+ * progress is reported and AbortExecute honoured on the calling thread.
+ * Without a valid metric, or with a bad axis or observer, the filter reports
+ * an error and produces empty outputs.
+ */
+#ifndef vtkRiemannExponentialMap_h
+#define vtkRiemannExponentialMap_h
+
+#include "RiemannFiltersGeodesicsModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <vector> // For Radii
+
+class vtkRiemannMetric;
+
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannExponentialMap : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRiemannExponentialMap* New();
+  vtkTypeMacro(vtkRiemannExponentialMap, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Integrators (vtkRiemannGeodesicTracer's numbering).
+  enum Integrators
+  {
+    EULER = 0,
+    RUNGE_KUTTA4 = 1,
+    DORMAND_PRINCE45 = 2
+  };
+
+  ///@{
+  /// The metric (required).
+  virtual void SetMetric(vtkRiemannMetric* metric);
+  vtkGetObjectMacro(Metric, vtkRiemannMetric);
+  ///@}
+
+  ///@{
+  /// The point where the exponential map is taken. Default (0, 0, 0).
+  vtkSetVector3Macro(Observer, double);
+  vtkGetVector3Macro(Observer, double);
+  ///@}
+
+  ///@{
+  /// Number of directions of the grid. Default 400.
+  vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfDirections, int);
+  ///@}
+
+  ///@{
+  /// Restrict the directions to the cap of half-angle ConeAngle (degrees)
+  /// around ConeAxis. Defaults (0, 0, 1) and 180 (the whole sphere).
+  vtkSetVector3Macro(ConeAxis, double);
+  vtkGetVector3Macro(ConeAxis, double);
+  vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
+  vtkGetMacro(ConeAngle, double);
+  ///@}
+
+  ///@{
+  /// Radii (arc lengths) of the wavefronts on output port 1. None by default.
+  void AddRadius(double radius);
+  void RemoveAllRadii();
+  int GetNumberOfRadii() const { return static_cast<int>(this->Radii.size()); }
+  double GetRadius(int i) const;
+  ///@}
+
+  ///@{
+  /// Arc length of each geodesic. Default 5.
+  vtkSetClampMacro(MaximumPropagation, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumPropagation, double);
+  ///@}
+
+  ///@{
+  /// Integrator (default RUNGE_KUTTA4).
+  vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
+  vtkGetMacro(IntegratorType, int);
+  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
+  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
+  void SetIntegratorTypeToDormandPrince45() { this->SetIntegratorType(DORMAND_PRINCE45); }
+  ///@}
+
+  ///@{
+  /// Step in arc length (fixed, or initial for DP45). Default 0.01.
+  vtkSetClampMacro(IntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(IntegrationStep, double);
+  ///@}
+
+  ///@{
+  /// Largest adaptive step (DP45). Default 0.1.
+  vtkSetClampMacro(MaximumIntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumIntegrationStep, double);
+  ///@}
+
+  ///@{
+  /// Per-step error tolerance of DP45. Default 1e-8.
+  vtkSetClampMacro(MaximumError, double, 1e-15, 1.0);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
+  /// Steps after which each geodesic stops. Default 100000.
+  vtkSetClampMacro(MaximumNumberOfSteps, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
+  ///@}
+
+  /// Include the metric's modification time.
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkRiemannExponentialMap();
+  ~vtkRiemannExponentialMap() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  vtkRiemannMetric* Metric = nullptr;
+  double Observer[3] = { 0.0, 0.0, 0.0 };
+  int NumberOfDirections = 400;
+  double ConeAxis[3] = { 0.0, 0.0, 1.0 };
+  double ConeAngle = 180.0;
+  std::vector<double> Radii;
+  double MaximumPropagation = 5.0;
+  int IntegratorType = RUNGE_KUTTA4;
+  double IntegrationStep = 0.01;
+  double MaximumIntegrationStep = 0.1;
+  double MaximumError = 1e-8;
+  vtkIdType MaximumNumberOfSteps = 100000;
+
+private:
+  vtkRiemannExponentialMap(const vtkRiemannExponentialMap&) = delete;
+  void operator=(const vtkRiemannExponentialMap&) = delete;
+};
+
+#endif
