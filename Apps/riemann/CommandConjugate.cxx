@@ -1,8 +1,11 @@
 // riemann conjugate: conjugate points of an observer along a fan of geodesics
 // (vtkRiemannConjugateLocus), written as .vtp (vertices with point data) or
-// .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex).
+// .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex); with
+// --surface, the conjugate locus as surfaces over the direction grid (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "Integrators.h"
+#include "ProgressBar.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -32,11 +35,15 @@ struct ConjugateArguments
   std::string Metric;
   std::string Seed = "0,0,0";
   long long Directions = 100;
+  std::string ConeAxis = "0,0,1";
+  double ConeAngle = 180.0;
   double Length = 10.0;
   double Step = 0.01;
   double Tolerance = 1e-8;
   long long Count = 1;
+  std::string Integrator = "rk4";
   std::string Output;
+  std::string Surface;
 };
 
 constexpr long long MaximumDirections = 10000000;
@@ -93,8 +100,18 @@ void RunConjugate(const ConjugateArguments& args)
   {
     throw Failure("--step: more than 1e8 steps per geodesic (--length / --step)", 2);
   }
-  double seed[3];
+  if (!args.Surface.empty() && Extension(args.Surface) != "vtp")
+  {
+    throw Failure("--surface " + args.Surface + ": the surface must be a .vtp file", 2);
+  }
+  double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);
+  ParseVector3(args.ConeAxis, "--cone-axis", axis);
+  IntegratorType integrator;
+  if (!ParseIntegratorName(args.Integrator, integrator))
+  {
+    throw Failure("--integrator: \"" + args.Integrator + "\": expected euler, rk4 or dp45", 2);
+  }
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannConjugateLocus> locus;
@@ -103,11 +120,17 @@ void RunConjugate(const ConjugateArguments& args)
   locus->SetMetric(metric);
   locus->SetObserver(seed);
   locus->SetNumberOfDirections(static_cast<int>(args.Directions));
+  locus->SetConeAxis(axis);
+  locus->SetConeAngle(args.ConeAngle);
   locus->SetMaximumPropagation(args.Length);
+  locus->SetIntegratorType(static_cast<int>(integrator));
   locus->SetIntegrationStep(args.Step);
   locus->SetTolerance(args.Tolerance);
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
+  vtkNew<ProgressBar> progress;
+  progress->Observe(locus, "riemann conjugate");
   locus->Update();
+  progress->Finish();
   errors->ThrowIfAny("conjugate point search failed:");
   vtkPolyData* points = locus->GetOutput();
 
@@ -125,6 +148,19 @@ void RunConjugate(const ConjugateArguments& args)
       return writer->Write() == 1 && writer->GetErrorCode() == 0;
     });
 
+  if (!args.Surface.empty())
+  {
+    WriteAtomically(args.Surface,
+      [&](const std::string& temporary)
+      {
+        vtkNew<vtkXMLPolyDataWriter> writer;
+        writer->SetFileName(temporary.c_str());
+        writer->SetInputData(locus->GetOutput(1));
+        writer->SetDataModeToAppended();
+        return writer->Write() == 1 && writer->GetErrorCode() == 0;
+      });
+  }
+
   std::set<long long> withPoints;
   vtkDataArray* direction = points->GetPointData()->GetArray("DirectionId");
   for (vtkIdType i = 0; direction && i < direction->GetNumberOfTuples(); ++i)
@@ -133,7 +169,13 @@ void RunConjugate(const ConjugateArguments& args)
   }
   std::cerr << "riemann conjugate: " << args.Directions << " direction(s), "
             << points->GetNumberOfPoints() << " conjugate point(s) found on " << withPoints.size()
-            << " of them up to arc length " << args.Length << " -> " << args.Output << "\n";
+            << " of them up to arc length " << args.Length << " -> " << args.Output;
+  if (!args.Surface.empty())
+  {
+    std::cerr << ", locus surface (" << locus->GetOutput(1)->GetNumberOfPolys()
+              << " triangles) -> " << args.Surface;
+  }
+  std::cerr << "\n";
 }
 } // namespace
 
@@ -147,9 +189,17 @@ void RegisterConjugateCommand(CLI::App& app)
     ->check(CLI::ExistingFile);
   command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)");
   command->add_option("--directions,-n", args->Directions,
-    "Number of directions, a Fibonacci lattice on the sphere (default 100)");
+    "Number of directions, a Fibonacci lattice on the sphere or cone (default 100)");
+  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)");
+  command
+    ->add_option("--cone-angle", args->ConeAngle,
+      "Half-angle of the cone of directions in degrees (default 180: every direction)")
+    ->check(CLI::Range(0.0, 180.0));
   command->add_option("--length,-l", args->Length, "Arc length searched (default 10)");
-  command->add_option("--step", args->Step, "RK4 step in arc length (default 0.01)");
+  command->add_option("--step", args->Step,
+    "Step in arc length (default 0.01; the initial step for dp45)");
+  command->add_option("--integrator", args->Integrator,
+    "Integrator of the Jacobi fields: euler, rk4 (default) or dp45");
   command
     ->add_option(
       "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")
@@ -159,6 +209,8 @@ void RegisterConjugateCommand(CLI::App& app)
       "Conjugate points kept per direction, first ones first (default 1)")
     ->check(CLI::Range(1LL, 1000000LL));
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
+  command->add_option("--surface", args->Surface,
+    "Also write the conjugate locus as surfaces over the direction grid (.vtp)");
   command->callback([args]() { RunConjugate(*args); });
 }
 } // namespace cli

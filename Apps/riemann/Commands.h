@@ -18,6 +18,7 @@ void RegisterInfoCommand(CLI::App& app);
 void RegisterRenderCommand(CLI::App& app);
 void RegisterFieldsCommand(CLI::App& app);
 void RegisterConjugateCommand(CLI::App& app);
+void RegisterExpmapCommand(CLI::App& app);
 }
 }
 

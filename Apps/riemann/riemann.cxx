@@ -20,6 +20,7 @@ int main(int argc, char** argv)
   riemann::cli::RegisterRenderCommand(app);
   riemann::cli::RegisterFieldsCommand(app);
   riemann::cli::RegisterConjugateCommand(app);
+  riemann::cli::RegisterExpmapCommand(app);
   // Warnings and errors of VTK objects without an explicit observer still reach
   // stderr through VTK's output window; no global switch is changed here.
   try

@@ -375,6 +375,103 @@ class ConjugateTests(unittest.TestCase):
                 self.assertIn(expected, err)
                 self.assertEqual(sorted(os.listdir(self.dir)), ["sphere.json"])
 
+    def test_locus_surface_and_integrator(self):
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        out = os.path.join(self.dir, "conjugate.vtp")
+        surface = os.path.join(self.dir, "caustic.vtp")
+        status, _, err = run("conjugate", "--metric", self.metric, "--seed", "0.2,0.1,-0.3",
+                             "--directions", "30", "--length", "4", "--integrator", "dp45",
+                             "--cone-axis", "1,0,0", "--cone-angle", "60", "-o", out, "--surface", surface)
+        self.assertEqual(status, 0, err)
+        self.assertIn("locus surface (", err)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(surface)
+        reader.Update()
+        data = reader.GetOutput()
+        # Every direction has a first conjugate point: one per grid point, the
+        # grid's triangles (a disc: more than N - 2), all at the antipode.
+        self.assertEqual(data.GetNumberOfPoints(), 30)
+        self.assertGreater(data.GetNumberOfPolys(), 20)
+        p = (0.2, 0.1, -0.3)
+        r2 = sum(t * t for t in p)
+        for i in range(data.GetNumberOfPoints()):
+            x = data.GetPoint(i)
+            self.assertLess(max(abs(x[c] + p[c] / r2) for c in range(3)), 1e-5)
+        bad = os.path.join(self.dir, "bad.csv")
+        for args, expected in [(["--integrator", "rk5"], "--integrator"),
+                               (["--surface", os.path.join(self.dir, "s.csv")], "--surface"),
+                               (["--cone-axis", "1,2"], "--cone-axis")]:
+            with self.subTest(args=args):
+                status, _, err = run("conjugate", "--metric", self.metric, *args, "-o", bad)
+                self.assertEqual(status, 2, err)
+                self.assertIn(expected, err)
+        self.assertEqual(sorted(os.listdir(self.dir)), ["caustic.vtp", "conjugate.vtp", "sphere.json"])
+
+
+class ExpmapTests(unittest.TestCase):
+    """riemann expmap: the round 3-sphere's geodesic spheres."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.metric = os.path.join(self.dir, "sphere.json")
+        with open(self.metric, "w") as f:
+            f.write(SPHERE_JSON)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_bundle_and_wavefronts(self):
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        rays = os.path.join(self.dir, "rays.vtp")
+        fronts = os.path.join(self.dir, "fronts.vtp")
+        status, _, err = run("expmap", "--metric", self.metric, "--seed", "0.2,0.1,-0.3",
+                             "--directions", "40", "--length", "3.5", "--radii", "1,3.14159265358979",
+                             "-o", rays, "--wavefronts", fronts)
+        self.assertEqual(status, 0, err)
+        self.assertIn("40 geodesic(s)", err)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(fronts)
+        reader.Update()
+        data = reader.GetOutput()
+        self.assertEqual(data.GetNumberOfPoints(), 80)
+        self.assertEqual(data.GetNumberOfPolys(), 2 * (2 * 40 - 4))
+        radius = data.GetPointData().GetArray("Radius")
+        det = data.GetPointData().GetArray("TransverseJacobian")
+        p = (0.2, 0.1, -0.3)
+        r2 = sum(t * t for t in p)
+        for i in range(80):
+            r = radius.GetValue(i)
+            self.assertAlmostEqual(det.GetValue(i), math.sin(r) ** 2, delta=1e-6)
+            if r > 3:  # the sphere of radius pi is the antipode
+                x = data.GetPoint(i)
+                self.assertLess(max(abs(x[c] + p[c] / r2) for c in range(3)), 1e-5)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(rays)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfLines(), 40)
+        self.assertIsNotNone(reader.GetOutput().GetPointData().GetArray("TransverseJacobian"))
+
+    def test_bad_arguments(self):
+        cases = [
+            (["--radii", "1,x"], '--radii: "x" is not a positive number'),
+            (["--radii", "-1"], "--radii"),
+            (["--radii", "9"], "--radii: 9 is beyond --length 5"),
+            (["--wavefronts", "W.vtp"], "--wavefronts needs --radii"),
+            (["--radii", "1", "--wavefronts", "W.csv"], "--wavefronts"),
+            (["--directions", "0"], "--directions"),
+            (["--integrator", "rk5"], "--integrator"),
+            (["--cone-angle", "200"], "--cone-angle"),
+        ]
+        for args, expected in cases:
+            with self.subTest(args=args):
+                args = [a.replace("W.", os.path.join(self.dir, "w.")) for a in args]
+                out = os.path.join(self.dir, "rays.vtp")
+                status, _, err = run("expmap", "--metric", self.metric, *args, "-o", out)
+                self.assertNotEqual(status, 0, err)
+                self.assertIn(expected, err)
+                self.assertEqual(sorted(os.listdir(self.dir)), ["sphere.json"])
+
 
 BAD_INPUTS = [
     ("missing metric file", ["trace", "-m", "/nonexistent.json", "-o", "OUT.csv"], None, "File does not exist"),

@@ -1,0 +1,216 @@
+// riemann expmap: the exponential map at an observer (vtkRiemannExponentialMap):
+// the ray bundle over a grid of directions (.vtp polylines with the transverse
+// Jacobian) and, with --radii and --wavefronts, the geodesic spheres (.vtp).
+#include "CliUtilities.h"
+#include "Commands.h"
+#include "Integrators.h"
+#include "ProgressBar.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannExponentialMap.h"
+#include "vtkRiemannMetric.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+struct ExpmapArguments
+{
+  std::string Metric;
+  std::string Seed = "0,0,0";
+  long long Directions = 400;
+  std::string ConeAxis = "0,0,1";
+  double ConeAngle = 180.0;
+  double Length = 5.0;
+  std::string Radii;
+  std::string Integrator = "rk4";
+  double Step = 0.01;
+  double Tolerance = 1e-8;
+  std::string Output;
+  std::string Wavefronts;
+};
+
+constexpr long long MaximumDirections = 1000000;
+
+/// "1,2.5,3" -> positive finite numbers; throws Failure naming --radii.
+std::vector<double> ParseRadii(const std::string& text)
+{
+  std::vector<double> radii;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    std::size_t used = 0;
+    double value = 0.0;
+    try
+    {
+      value = std::stod(item, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || !std::isfinite(value) || value <= 0.0)
+    {
+      throw Failure("--radii: \"" + item + "\" is not a positive number (write R1,R2,...)", 2);
+    }
+    radii.push_back(value);
+  }
+  if (radii.empty())
+  {
+    throw Failure("--radii: expected R1,R2,... (positive arc lengths)", 2);
+  }
+  return radii;
+}
+
+void WritePolyData(vtkPolyData* data, const std::string& path)
+{
+  WriteAtomically(path,
+    [&](const std::string& temporary)
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName(temporary.c_str());
+      writer->SetInputData(data);
+      writer->SetDataModeToAppended();
+      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+    });
+}
+
+void RunExpmap(const ExpmapArguments& args)
+{
+  if (Extension(args.Output) != "vtp")
+  {
+    throw Failure("-o " + args.Output + ": the ray bundle must be a .vtp file", 2);
+  }
+  if (!args.Wavefronts.empty() && Extension(args.Wavefronts) != "vtp")
+  {
+    throw Failure("--wavefronts " + args.Wavefronts + ": the wavefronts must be a .vtp file", 2);
+  }
+  if (!args.Wavefronts.empty() && args.Radii.empty())
+  {
+    throw Failure("--wavefronts needs --radii R1,R2,...", 2);
+  }
+  if (args.Directions < 1 || args.Directions > MaximumDirections)
+  {
+    throw Failure("--directions: " + std::to_string(args.Directions) + ": must be between 1 and " +
+        std::to_string(MaximumDirections),
+      2);
+  }
+  if (!std::isfinite(args.Length) || args.Length <= 0.0)
+  {
+    throw Failure("--length: must be a positive finite arc length", 2);
+  }
+  if (!std::isfinite(args.Step) || args.Step <= 0.0 || args.Step > args.Length)
+  {
+    throw Failure("--step: must be positive and at most --length", 2);
+  }
+  if (args.Length / args.Step * static_cast<double>(args.Directions) > 1e9)
+  {
+    throw Failure("--step: more than 1e9 points in all (--directions x --length / --step); "
+                  "the bundle would not fit in memory",
+      2);
+  }
+  double seed[3], axis[3];
+  ParseVector3(args.Seed, "--seed", seed);
+  ParseVector3(args.ConeAxis, "--cone-axis", axis);
+  IntegratorType integrator;
+  if (!ParseIntegratorName(args.Integrator, integrator))
+  {
+    throw Failure("--integrator: \"" + args.Integrator + "\": expected euler, rk4 or dp45", 2);
+  }
+  const std::vector<double> radii =
+    args.Radii.empty() ? std::vector<double>() : ParseRadii(args.Radii);
+  for (double r : radii)
+  {
+    if (r > args.Length)
+    {
+      std::ostringstream message;
+      message << "--radii: " << r << " is beyond --length " << args.Length;
+      throw Failure(message.str(), 2);
+    }
+  }
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<vtkRiemannExponentialMap> expmap;
+  vtkNew<ErrorCollector> errors;
+  errors->Observe(expmap);
+  expmap->SetMetric(metric);
+  expmap->SetObserver(seed);
+  expmap->SetNumberOfDirections(static_cast<int>(args.Directions));
+  expmap->SetConeAxis(axis);
+  expmap->SetConeAngle(args.ConeAngle);
+  expmap->SetMaximumPropagation(args.Length);
+  expmap->SetIntegratorType(static_cast<int>(integrator));
+  expmap->SetIntegrationStep(args.Step);
+  expmap->SetMaximumError(args.Tolerance);
+  for (double r : radii)
+  {
+    expmap->AddRadius(r);
+  }
+  vtkNew<ProgressBar> progress;
+  progress->Observe(expmap, "riemann expmap");
+  expmap->Update();
+  progress->Finish();
+  errors->ThrowIfAny("exponential map failed:");
+
+  WritePolyData(expmap->GetOutput(0), args.Output);
+  if (!args.Wavefronts.empty())
+  {
+    WritePolyData(expmap->GetOutput(1), args.Wavefronts);
+  }
+  std::cerr << "riemann expmap: " << expmap->GetOutput(0)->GetNumberOfLines()
+            << " geodesic(s) up to arc length " << args.Length << " -> " << args.Output;
+  if (!args.Wavefronts.empty())
+  {
+    std::cerr << ", " << radii.size() << " wavefront(s) ("
+              << expmap->GetOutput(1)->GetNumberOfPolys() << " triangles) -> "
+              << args.Wavefronts;
+  }
+  std::cerr << "\n";
+}
+} // namespace
+
+void RegisterExpmapCommand(CLI::App& app)
+{
+  auto args = std::make_shared<ExpmapArguments>();
+  CLI::App* command = app.add_subcommand("expmap",
+    "The exponential map at an observer: geodesics over a grid of directions with the "
+    "transverse Jacobian, and geodesic spheres (wavefronts).");
+  command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)");
+  command->add_option("--directions,-n", args->Directions,
+    "Number of directions, a Fibonacci lattice on the sphere or cone (default 400)");
+  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)");
+  command
+    ->add_option("--cone-angle", args->ConeAngle,
+      "Half-angle of the cone of directions in degrees (default 180: every direction)")
+    ->check(CLI::Range(0.0, 180.0));
+  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 5)");
+  command->add_option("--radii", args->Radii, "Radii R1,R2,... of the wavefronts");
+  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45");
+  command->add_option("--step", args->Step,
+    "Step in arc length (default 0.01; the initial step for dp45)");
+  command
+    ->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
+    ->check(CLI::Range(1e-15, 1.0));
+  command->add_option("--output,-o", args->Output, "Ray bundle (.vtp)")->required();
+  command->add_option(
+    "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (.vtp triangles)");
+  command->callback([args]() { RunExpmap(*args); });
+}
+} // namespace cli
+} // namespace riemann
