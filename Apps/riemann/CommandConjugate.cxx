@@ -41,7 +41,7 @@ struct ConjugateArguments
   double Step = 0.01;
   double Tolerance = 1e-8;
   long long Count = 1;
-  std::string Integrator = "rk4";
+  std::string Integrator = "dp45";
   std::string Output;
   std::string Surface;
 };
@@ -199,7 +199,7 @@ void RegisterConjugateCommand(CLI::App& app)
   command->add_option("--step", args->Step,
     "Step in arc length (default 0.01; the initial step for dp45)");
   command->add_option("--integrator", args->Integrator,
-    "Integrator of the Jacobi fields: euler, rk4 (default) or dp45");
+    "Integrator of the Jacobi fields: euler, rk4 or dp45 (default, tolerance 1e-9)");
   command
     ->add_option(
       "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")

@@ -93,7 +93,10 @@ public:
   };
 
   ///@{
-  /// Integrator of the Jacobi fields (default RUNGE_KUTTA4).
+  /// Integrator of the Jacobi fields. Default DORMAND_PRINCE45: on the round
+  /// sphere it finds all of 10,000 double conjugate points to 1e-8 and is
+  /// faster than RK4 at step 0.01, which misses 16 of them (its error splits a
+  /// double zero into two simple ones; Testing/Benchmarks/BenchConjugatePoints.cxx).
   vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
   vtkGetMacro(IntegratorType, int);
   void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
@@ -152,7 +155,7 @@ protected:
   double ConeAxis[3] = { 0.0, 0.0, 1.0 };
   double ConeAngle = 180.0;
   double MaximumPropagation = 10.0;
-  int IntegratorType = RUNGE_KUTTA4;
+  int IntegratorType = DORMAND_PRINCE45;
   double IntegrationStep = 0.01;
   double MaximumIntegrationStep = 0.1;
   double MaximumError = 1e-9;

@@ -1,5 +1,6 @@
 #include "vtkRiemannDirectionGrid.h"
 
+#include "DirectionLattice.h"
 #include "vtkCellArray.h"
 #include "vtkDelaunay2D.h"
 #include "vtkIdList.h"
@@ -28,12 +29,6 @@ vtkRiemannDirectionGrid::vtkRiemannDirectionGrid()
 namespace
 {
 using Vector = std::array<double, 3>;
-
-Vector Combine(double a, const Vector& x, double b, const Vector& y, double c, const Vector& z)
-{
-  return { a * x[0] + b * y[0] + c * z[0], a * x[1] + b * y[1] + c * z[1],
-    a * x[2] + b * y[2] + c * z[2] };
-}
 
 /// The loop of boundary edges (edges of one triangle only), in order; empty
 /// when there is none or it is not one simple loop.
@@ -102,14 +97,8 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
     axis = { axisIn[0] / norm, axisIn[1] / norm, axisIn[2] / norm };
   }
   const int count = std::max(numberOfDirections, 0);
-  const double cosine = wholeSphere ? -1.0 : std::cos(vtkMath::RadiansFromDegrees(coneAngle));
-
-  // An orthonormal frame (u, w, axis).
-  Vector helper = std::abs(axis[0]) < 0.9 ? Vector{ 1.0, 0.0, 0.0 } : Vector{ 0.0, 1.0, 0.0 };
-  Vector u, w;
-  vtkMath::Cross(axis.data(), helper.data(), u.data());
-  vtkMath::Normalize(u.data());
-  vtkMath::Cross(axis.data(), u.data(), w.data());
+  const std::vector<riemann::Vec3> lattice =
+    riemann::FibonacciDirections(count, riemann::Vec3(axis[0], axis[1], axis[2]), coneAngle);
 
   vtkNew<vtkPoints> directions;
   directions->SetDataTypeToDouble();
@@ -117,15 +106,9 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
   vtkNew<vtkIntArray> ids;
   ids->SetName("DirectionId");
   ids->SetNumberOfTuples(count);
-  const double goldenAngle = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < count; ++i)
   {
-    // Heights evenly spaced in [cosine, 1] (equal areas, Archimedes).
-    const double z = 1.0 - (1.0 - cosine) * (i + 0.5) / count;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const double phi = goldenAngle * i;
-    const Vector d = Combine(z, axis, r * std::cos(phi), u, r * std::sin(phi), w);
-    directions->SetPoint(i, d.data());
+    directions->SetPoint(i, lattice[i].data());
     ids->SetValue(i, i);
   }
 
