@@ -46,6 +46,7 @@ struct TraceArguments
   double Step = 0.01;
   double Tolerance = 1e-8;
   long long MaximumSteps = 100000;
+  bool TransverseJacobian = false;
   std::string Output;
 };
 
@@ -149,7 +150,11 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
   {
     return false;
   }
-  out << "seed_id,step,t,x,y,z,vx,vy,vz\n";
+  vtkDataArray* determinant = lines->GetPointData()->GetArray("TransverseJacobian");
+  vtkDataArray* singular = lines->GetPointData()->GetArray("TransverseJacobianSingularValues");
+  // The transverse Jacobian's columns come after the fixed ones, when asked.
+  out << "seed_id,step,t,x,y,z,vx,vy,vz"
+      << (determinant ? ",TransverseJacobian,SingularValue0,SingularValue1" : "") << "\n";
   out << std::setprecision(17);
   vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
   vtkDataArray* velocity = lines->GetPointData()->GetArray("Velocity");
@@ -169,7 +174,13 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
       lines->GetPoint(ids[k], p);
       velocity->GetTuple(ids[k], v);
       out << seed << ',' << k << ',' << arcLength->GetTuple1(ids[k]) << ',' << p[0] << ',' << p[1]
-          << ',' << p[2] << ',' << v[0] << ',' << v[1] << ',' << v[2] << '\n';
+          << ',' << p[2] << ',' << v[0] << ',' << v[1] << ',' << v[2];
+      if (determinant && singular)
+      {
+        out << ',' << determinant->GetTuple1(ids[k]) << ',' << singular->GetComponent(ids[k], 0)
+            << ',' << singular->GetComponent(ids[k], 1);
+      }
+      out << '\n';
     }
   }
   out.flush();
@@ -203,6 +214,7 @@ void RunTrace(const TraceArguments& args)
   tracer->SetMaximumError(args.Tolerance);
   tracer->SetMaximumPropagation(args.Length);
   tracer->SetMaximumNumberOfSteps(args.MaximumSteps);
+  tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   if (!args.SeedsFile.empty())
   {
     tracer->SetInputData(ReadSeeds(args.SeedsFile));
@@ -291,6 +303,9 @@ void RegisterTraceCommand(CLI::App& app)
   command
     ->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
     ->check(CLI::Range(1LL, 1000000000LL));
+  command->add_flag("--transverse-jacobian", args->TransverseJacobian,
+    "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
+    "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->callback([args]() { RunTrace(*args); });
 }

@@ -94,6 +94,26 @@ class TraceTests(unittest.TestCase):
         end = points[arc.argmin()]
         self.assertLess(math.dist(end, twist_exact((0.5, 0.2, 0), (1, 0, 0), -2.0)), 1e-7)
 
+    def test_trace_transverse_jacobian_csv(self):
+        # Unit 3-sphere: det = sin^2 s and both singular values |sin s|.
+        metric = os.path.join(self.dir, "sphere.json")
+        with open(metric, "w") as f:
+            f.write(SPHERE_JSON)
+        out = os.path.join(self.dir, "jacobian.csv")
+        status, _, err = run("trace", "-m", metric, "--seed", "0.2,0.1,-0.3", "--direction", "0.3,1,0.2",
+                             "--length", "3", "--transverse-jacobian", "-o", out)
+        self.assertEqual(status, 0, err)
+        with open(out, newline="") as f:
+            rows = list(csv.reader(f))
+        self.assertEqual(rows[0], ["seed_id", "step", "t", "x", "y", "z", "vx", "vy", "vz",
+                                   "TransverseJacobian", "SingularValue0", "SingularValue1"])
+        self.assertGreater(len(rows), 300)
+        for row in rows[1:]:
+            s = float(row[2])
+            self.assertAlmostEqual(float(row[9]), math.sin(s) ** 2, delta=1e-7)
+            self.assertAlmostEqual(float(row[10]), abs(math.sin(s)), delta=1e-7)
+            self.assertAlmostEqual(float(row[11]), abs(math.sin(s)), delta=1e-7)
+
     def test_trace_seeds_file(self):
         seeds = os.path.join(self.dir, "seeds.csv")
         with open(seeds, "w") as f:
