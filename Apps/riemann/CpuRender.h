@@ -1,0 +1,58 @@
+// riemann render --backend cpu: the CPU tracer's output (vtkRiemannCPURayTracer)
+// as pictures and EXR channels, its hit-error summary, and a progress bar.
+#ifndef RiemannCpuRender_h
+#define RiemannCpuRender_h
+
+#include "RiemannImageIO.h"
+
+#include "vtkCommand.h"
+
+class vtkImageData;
+
+namespace riemann
+{
+namespace cli
+{
+/// A progress bar on stderr, fed by a filter's ProgressEvents.
+class ProgressBar : public vtkCommand
+{
+public:
+  static ProgressBar* New() { return new ProgressBar; }
+  void Execute(vtkObject* caller, unsigned long event, void* callData) override;
+  /// Finish the line (once the work is done).
+  void Finish();
+
+private:
+  int Shown = -1;
+};
+
+/**
+ * The tracer's image, rows top first: R, G, B, and with `aovs` the
+ * arbitrary output variables as named float channels: HitPosition.X/Y/Z,
+ * ArcLength, Steps, ReasonForTermination, SpeedDrift, and HitError where
+ * the tracer computed it.
+ */
+Image TracerImage(vtkImageData* data, bool aovs);
+
+/// The "HitError" array of the tracer summarised over the pixels.
+struct HitErrorSummary
+{
+  /// Over pixels where the traced and the exact ray both hit.
+  double Maximum = 0.0;
+  double Median = 0.0;
+  long long Compared = 0;
+  /// Pixels where exactly one of the two hits.
+  long long Disagreeing = 0;
+};
+HitErrorSummary SummarizeHitError(vtkImageData* data);
+
+/**
+ * A picture of the hit error: log10 of the error from 1e-7 (black) through
+ * blue, green and yellow to 1e-1 and above (white); red where only one ray
+ * hits; the background grey where neither does. Rows top first.
+ */
+Image HitErrorPicture(vtkImageData* data);
+} // namespace cli
+} // namespace riemann
+
+#endif
