@@ -438,7 +438,8 @@ void RunRender(const RenderArguments& args)
       {
         const HitErrorSummary summary = SummarizeHitError(output);
         std::cerr << "riemann render: hit error against the exact geodesic: max "
-                  << summary.Maximum << ", median " << summary.Median << " over "
+                  << summary.Maximum << ", median " << summary.Median << ", 99th percentile "
+                  << summary.Percentile99 << " over "
                   << summary.Compared << " pixels; " << summary.Disagreeing
                   << " pixels where only one of the two rays hits\n";
         if (!args.HitErrorImage.empty())

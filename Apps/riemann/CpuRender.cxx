@@ -122,6 +122,7 @@ HitErrorSummary SummarizeHitError(vtkImageData* data)
     summary.Maximum = values.back();
     const std::size_t n = values.size();
     summary.Median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    summary.Percentile99 = values[static_cast<std::size_t>(0.99 * (n - 1))];
   }
   return summary;
 }

@@ -40,6 +40,9 @@ struct HitErrorSummary
   /// Over pixels where the traced and the exact ray both hit.
   double Maximum = 0.0;
   double Median = 0.0;
+  /// The maximum is set by pixels on an object's edge, where the two rays may
+  /// hit different objects: the 99th percentile says more about the rest.
+  double Percentile99 = 0.0;
   long long Compared = 0;
   /// Pixels where exactly one of the two hits.
   long long Disagreeing = 0;

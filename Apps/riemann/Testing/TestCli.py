@@ -235,7 +235,7 @@ class CpuRenderTests(unittest.TestCase):
             self.assertIn(channel, info)
         # RK4 at step 0.02 (the scene's) against the exact geodesics: median below 1e-4.
         line = [l for l in err.splitlines() if "hit error against the exact geodesic" in l][0]
-        median = float(line.split("median ")[1].split(" ")[0])
+        median = float(line.split("median ")[1].split(",")[0])
         maximum = float(line.split("max ")[1].split(",")[0])
         self.assertLess(median, 1e-4, line)
         self.assertGreaterEqual(maximum, median, line)
