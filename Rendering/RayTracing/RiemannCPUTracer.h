@@ -70,7 +70,7 @@ struct CPUTracerSettings
   int SamplesPerPixel = 1;
   std::uint32_t Seed = 0;
   /// Embree ray streams (rtcIntersect1M) per step of a tile, else one query per segment.
-  bool UseRayStreams = true;
+  bool UseRayStreams = false;
   /// Compare each centre ray with the exact geodesic (diffeomorphism metrics only).
   bool ComputeHitError = false;
   /// Chord of the exact reference's march, refined near a hit to 1e-6 of it.

@@ -292,12 +292,17 @@ TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
     }
   }
   std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 7u);
+  int compared = 0;
   for (const fs::path& file : files)
   {
     SCOPED_TRACE(file.filename().string());
     vtkNew<vtkRiemannScene> scene;
     ASSERT_TRUE(scene->SetDefinitionFile(file.c_str())) << scene->GetLastError();
+    if (scene->GetScene().HasMeshes())
+    {
+      continue; // the GPU draws no meshes (Image.mesh-two-bumps-cpu has a baseline)
+    }
+    ++compared;
     vtkNew<vtkRiemannMetric> metric;
     ASSERT_TRUE(metric->SetDefinition(scene->HasMetricDefinition()
         ? scene->GetMetricDefinition().c_str()
@@ -325,6 +330,7 @@ TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
     EXPECT_LE(s.Percentile99, 1.0);
     EXPECT_LT(s.FractionAbove, 0.0005);
   }
+  EXPECT_GE(compared, 7) << "the paper's six figures and the showcase";
 }
 
 //------------------------------------------------------------------------------
