@@ -128,7 +128,7 @@ void RunConjugate(const ConjugateArguments& args)
   locus->SetTolerance(args.Tolerance);
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
   vtkNew<ProgressBar> progress;
-  progress->Observe(locus, "riemann conjugate");
+  progress->Observe(locus, "riemann conjugate", ProgressBar::StderrIsTerminal());
   locus->Update();
   progress->Finish();
   errors->ThrowIfAny("conjugate point search failed:");

@@ -160,7 +160,7 @@ void RunExpmap(const ExpmapArguments& args)
     expmap->AddRadius(r);
   }
   vtkNew<ProgressBar> progress;
-  progress->Observe(expmap, "riemann expmap");
+  progress->Observe(expmap, "riemann expmap", ProgressBar::StderrIsTerminal());
   expmap->Update();
   progress->Finish();
   errors->ThrowIfAny("exponential map failed:");

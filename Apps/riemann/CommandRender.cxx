@@ -1,10 +1,15 @@
 // riemann render: the inside view of R^3 with a metric, ray traced per pixel
-// on the GPU by vtkRiemannRayTracePass, written through OpenImageIO; with
+// on the GPU by vtkRiemannRayTracePass or (--backend cpu) on the CPU by
+// vtkRiemannCPURayTracer (meshes, anti-aliasing, EXR channels of arbitrary
+// output variables, the error against the exact reference), written through
+// OpenImageIO; with
 // --bundle, side by side with an outside view of the scene and the same rays;
 // with --frames, an animation in the metric's time t; with --reference, an
 // image regression test in one command (as F3D's CLI).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "CpuRender.h"
+#include "ProgressBar.h"
 
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
@@ -20,6 +25,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRiemannCPURayTracer.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayBundle.h"
 #include "vtkRiemannRayTracePass.h"
@@ -65,6 +71,11 @@ struct RenderArguments
   int MaximumSteps = 0;
   double MaximumLength = 0.0;
   int Frames = 1;
+  int Samples = 1;
+  bool HitError = false;
+  std::string HitErrorImage;
+  bool Progress = false;
+  bool Quiet = false;
   int Bundle = 0;
   std::string Reference;
   double Threshold = 1.0;
@@ -285,10 +296,14 @@ void RunRender(const RenderArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .png or .exr", 2);
   }
-  if (args.Backend != "gpu")
+  const bool cpu = args.Backend == "cpu";
+  if (!cpu && (args.Samples > 1 || args.HitError || !args.HitErrorImage.empty()))
   {
-    throw Failure(
-      "--backend cpu: the CPU (Embree) tracer is not available yet; use --backend gpu", 2);
+    throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
+  }
+  if (cpu && args.Bundle > 0)
+  {
+    throw Failure("--bundle draws the GPU pass's rays: use it with --backend gpu", 2);
   }
   if (!args.Reference.empty() && args.Frames > 1)
   {
@@ -315,6 +330,11 @@ void RunRender(const RenderArguments& args)
     {
       throw Failure(std::string("bad metric in the scene: ") + metric->GetLastError());
     }
+  }
+
+  if (!cpu && scene->GetScene().HasMeshes())
+  {
+    throw Failure("the scene has mesh objects: mesh objects need --backend cpu", 2);
   }
 
   vtkNew<ErrorCollector> errors;
@@ -360,6 +380,41 @@ void RunRender(const RenderArguments& args)
   window->SetSize(args.Width, args.Height);
   errors->Observe(window);
 
+  // The CPU tracer takes the same camera and the same settings as the pass.
+  vtkNew<vtkRiemannCPURayTracer> tracer;
+  vtkNew<ProgressBar> progress;
+  if (cpu)
+  {
+    errors->Observe(tracer);
+    tracer->SetMetric(metric);
+    tracer->SetScene(scene);
+    tracer->SetCamera(camera);
+    tracer->SetWidth(args.Width);
+    tracer->SetHeight(args.Height);
+    tracer->SetSamplesPerPixel(args.Samples);
+    tracer->SetComputeHitError(args.HitError || !args.HitErrorImage.empty());
+    tracer->SetUseSceneSettings(pass->GetUseSceneSettings());
+    tracer->SetIntegratorType(pass->GetIntegratorType());
+    tracer->SetStepSize(pass->GetStepSize());
+    tracer->SetMaximumNumberOfSteps(pass->GetMaximumNumberOfSteps());
+    tracer->SetMaximumLength(pass->GetMaximumLength());
+    tracer->SetTolerance(pass->GetTolerance());
+    tracer->SetProjection(pass->GetProjection());
+    // A bar where someone watches (a terminal) or the wait is long; tests stay quiet.
+    const double rays = static_cast<double>(args.Width) * args.Height * args.Samples;
+    progress->Observe(tracer, "riemann render",
+      !args.Quiet && (args.Progress || ProgressBar::StderrIsTerminal() || rays >= 4e6));
+    if (args.HitError || !args.HitErrorImage.empty())
+    {
+      if (metric->GetMetric()->FamilyName() != "diffeo")
+      {
+        throw Failure("--hit-error: the metric is not a diffeomorphism metric (\"type\": "
+                      "\"diffeo\"), so there is no exact reference to compare with",
+          2);
+      }
+    }
+  }
+
   const int frames = args.Frames;
   for (int frame = 0; frame < frames; ++frame)
   {
@@ -368,9 +423,41 @@ void RunRender(const RenderArguments& args)
     {
       throw Failure(std::string("bad metric: ") + metric->GetLastError());
     }
-    window->Render();
-    errors->ThrowIfAny("rendering failed:");
-    Image picture = Grab(window);
+    Image picture;
+    if (cpu)
+    {
+      tracer->Modified();
+      tracer->Update();
+      progress->Finish();
+      errors->ThrowIfAny("rendering failed:");
+      vtkImageData* output = tracer->GetOutput();
+      picture = TracerImage(output, Extension(args.Output) == "exr");
+      if (tracer->GetComputeHitError())
+      {
+        const HitErrorSummary summary = SummarizeHitError(output);
+        std::cerr << "riemann render: hit error against the exact geodesic: max "
+                  << summary.Maximum << ", median " << summary.Median << ", 99th percentile "
+                  << summary.Percentile99 << " over "
+                  << summary.Compared << " pixels; " << summary.Disagreeing
+                  << " pixels where only one of the two rays hits\n";
+        if (!args.HitErrorImage.empty())
+        {
+          const std::string errorPath =
+            frames > 1 ? FramePath(args.HitErrorImage, frame) : args.HitErrorImage;
+          const std::string error = WriteImage(errorPath, HitErrorPicture(output));
+          if (!error.empty())
+          {
+            throw Failure(error);
+          }
+        }
+      }
+    }
+    else
+    {
+      window->Render();
+      errors->ThrowIfAny("rendering failed:");
+      picture = Grab(window);
+    }
     if (args.Bundle > 0)
     {
       picture = SideBySide(picture, RenderOutside(metric, scene, camera, pass, args, errors));
@@ -420,7 +507,8 @@ void RegisterRenderCommand(CLI::App& app)
 {
   auto args = std::make_shared<RenderArguments>();
   CLI::App* command = app.add_subcommand("render",
-    "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU).\n"
+    "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU, or CPU with\n"
+    "--backend cpu: triangle meshes, anti-aliasing, EXR channels of the rays' hits).\n"
     "Without --metric and --scene: the paper's grid with one Gaussian bump.");
   command
     ->add_option("--metric,-m", args->Metric,
@@ -434,8 +522,21 @@ void RegisterRenderCommand(CLI::App& app)
     ->check(CLI::Range(1, 16384));
   command->add_option("--height", args->Height, "Image height in pixels (default 480)")
     ->check(CLI::Range(1, 16384));
-  command->add_option("--backend", args->Backend, "gpu (default); cpu comes with the Embree tracer")
+  command
+    ->add_option("--backend", args->Backend,
+      "gpu (default: GLSL, analytic objects) or cpu (Embree: also meshes; EXR with AOVs)")
     ->check(CLI::IsMember({ "gpu", "cpu" }));
+  command
+    ->add_option("--samples", args->Samples,
+      "Rays per pixel, stratified (anti-aliasing; --backend cpu; default 1)")
+    ->check(CLI::Range(1, 4096));
+  command->add_flag("--hit-error", args->HitError,
+    "Diffeomorphism metrics, --backend cpu: compare each pixel's hit with the exact geodesic "
+    "(a HitError EXR channel, max and median on stderr)");
+  command->add_option("--hit-error-image", args->HitErrorImage,
+    "Also write a picture of the hit error (log scale; red: only one of the rays hits)");
+  command->add_flag("--progress", args->Progress, "Show a progress bar on stderr (--backend cpu)");
+  command->add_flag("--quiet", args->Quiet, "Never show a progress bar");
   command->add_option(
     "--camera-position", args->CameraPosition, "Observer X,Y,Z (default: the scene's camera)");
   command->add_option("--look-at", args->LookAt, "Focal point X,Y,Z");

@@ -10,11 +10,16 @@ namespace riemann
 {
 namespace cli
 {
-void ProgressBar::Observe(vtkObject* object, const std::string& label)
+void ProgressBar::Observe(vtkObject* object, const std::string& label, bool show)
 {
   this->Label = label;
-  this->Enabled = isatty(fileno(stderr)) != 0;
+  this->Enabled = show;
   object->AddObserver(vtkCommand::ProgressEvent, this);
+}
+
+bool ProgressBar::StderrIsTerminal()
+{
+  return isatty(fileno(stderr)) != 0;
 }
 
 void ProgressBar::Execute(vtkObject*, unsigned long event, void* data)

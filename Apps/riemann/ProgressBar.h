@@ -12,15 +12,18 @@ namespace cli
 {
 /**
  * Prints "label [#####     ]  45%" on stderr, redrawn in place, while the
- * observed algorithm reports progress. Only on a terminal: when stderr is a
- * file or a pipe (scripts, tests) it prints nothing, so logs stay clean.
+ * observed algorithm reports progress, when `show` is true. Commands pass
+ * StderrIsTerminal() (plus their own rules, e.g. a long render), so scripts
+ * and tests that read stderr from a pipe get clean logs.
  */
 class ProgressBar : public vtkCommand
 {
 public:
   static ProgressBar* New() { return new ProgressBar; }
-  /// Observe `object`'s ProgressEvent under `label`.
-  void Observe(vtkObject* object, const std::string& label);
+  /// Observe `object`'s ProgressEvent under `label`; draw only if `show`.
+  void Observe(vtkObject* object, const std::string& label, bool show);
+  /// Whether stderr is a terminal (someone watches).
+  static bool StderrIsTerminal();
   void Execute(vtkObject* caller, unsigned long event, void* data) override;
   /// End the line (call after the work, even if it failed).
   void Finish();

@@ -5,79 +5,134 @@
 
 namespace riemann
 {
+RayMarcher::RayMarcher(const RaySettings& settings)
+  : Settings(settings)
+  , Stepper(settings.Integrator, settings.Step, settings.Tolerance,
+      AdaptiveMinimumStepFactor * settings.Step, AdaptiveMaximumStepFactor * settings.Step)
+{
+  this->State.setZero();
+  this->Previous.setZero();
+}
+
+void RayMarcher::Start(const Vec3& p, const Vec3& v)
+{
+  this->State << p, v;
+  this->Previous = this->State;
+  this->Stepper.Reset();
+  this->ArcLength = 0.0;
+  this->Taken = 0.0;
+  this->StepCount = 0;
+  this->Termination = NotInitialized;
+  this->Done = false;
+  this->DidHit = false;
+  this->LastHit = SceneHit();
+}
+
+bool RayMarcher::Advance(const Metric& metric)
+{
+  if (this->Done)
+  {
+    return false;
+  }
+  const double remaining = this->Settings.MaximumLength - this->ArcLength;
+  if (remaining <= 1e-12 * std::max(1.0, this->Settings.MaximumLength))
+  {
+    this->Termination = OutOfLength;
+    this->Done = true;
+    return false;
+  }
+  if (this->StepCount >= this->Settings.MaximumSteps)
+  {
+    this->Termination = OutOfSteps;
+    this->Done = true;
+    return false;
+  }
+  this->Previous = this->State;
+  this->Taken = 0.0;
+  const auto status = this->Stepper.Advance(metric, this->State, remaining, this->Taken);
+  if (status != DormandPrince45::Accepted)
+  {
+    this->Termination = status == DormandPrince45::StepTooSmall ? Stagnation : DegenerateMetric;
+    this->State = this->Previous;
+    this->Done = true;
+    return false;
+  }
+  if (!this->State.allFinite())
+  {
+    this->Termination = UnexpectedValue;
+    this->State = this->Previous;
+    this->Done = true;
+    return false;
+  }
+  ++this->StepCount;
+  return true;
+}
+
+void RayMarcher::Hit(const SceneHit& hit)
+{
+  this->DidHit = true;
+  this->LastHit = hit;
+  this->Termination = HitSurface;
+  this->Done = true;
+  // Arc length and velocity at the hit, linear within the step (the segment
+  // is the chord the shader intersects too).
+  this->ArcLength += hit.Fraction * this->Taken;
+  this->HitVelocity =
+    this->Previous.tail<3>() + hit.Fraction * (this->State.tail<3>() - this->Previous.tail<3>());
+}
+
+void RayMarcher::Miss()
+{
+  this->ArcLength += this->Taken;
+}
+
+Vec3 RayMarcher::Position() const
+{
+  return this->DidHit ? this->LastHit.Position : Vec3(this->State.head<3>());
+}
+
+Vec3 RayMarcher::Velocity() const
+{
+  return this->DidHit ? this->HitVelocity : Vec3(this->State.tail<3>());
+}
+
 void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec3& v,
   const RaySettings& settings, RayPath& path, bool recordPath)
 {
   path.Points.clear();
   path.ArcLength.clear();
-  path.Hit = false;
-  path.Length = 0.0;
-  path.Steps = 0;
-  path.FinalVelocity = v;
-  Vec6 y;
-  y << p, v;
   if (recordPath)
   {
     path.Points.push_back(p);
     path.ArcLength.push_back(0.0);
   }
-  GeodesicStepper stepper(settings.Integrator, settings.Step, settings.Tolerance,
-    AdaptiveMinimumStepFactor * settings.Step, AdaptiveMaximumStepFactor * settings.Step);
-  double s = 0.0;
-  for (int n = 0;; ++n)
+  RayMarcher ray(settings);
+  ray.Start(p, v);
+  while (ray.Advance(metric))
   {
-    const double remaining = settings.MaximumLength - s;
-    if (remaining <= 1e-12 * std::max(1.0, settings.MaximumLength))
-    {
-      path.Reason = OutOfLength;
-      break;
-    }
-    if (n >= settings.MaximumSteps)
-    {
-      path.Reason = OutOfSteps;
-      break;
-    }
-    const Vec6 previous = y;
-    double taken = 0.0;
-    const auto status = stepper.Advance(metric, y, remaining, taken);
-    if (status != DormandPrince45::Accepted)
-    {
-      path.Reason = status == DormandPrince45::StepTooSmall ? Stagnation : DegenerateMetric;
-      y = previous;
-      break;
-    }
-    if (!y.allFinite())
-    {
-      path.Reason = UnexpectedValue;
-      y = previous;
-      break;
-    }
-    ++path.Steps;
     SceneHit hit;
-    if (IntersectSegment(scene, previous.head<3>(), y.head<3>(), hit))
+    if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit))
     {
-      path.Hit = true;
-      path.HitInfo = hit;
-      path.Reason = HitSurface;
-      // Arc length and velocity at the hit, linear within the step (the
-      // segment is the chord the shader intersects too).
-      path.Length = s + hit.Fraction * taken;
-      path.FinalVelocity = previous.tail<3>() + hit.Fraction * (y.tail<3>() - previous.tail<3>());
-      if (recordPath)
-      {
-        path.Points.push_back(hit.Position);
-        path.ArcLength.push_back(path.Length);
-      }
-      return;
+      ray.Hit(hit);
+      break;
     }
-    s += taken;
+    ray.Miss();
     if (recordPath)
     {
-      path.Points.push_back(y.head<3>());
-      path.ArcLength.push_back(s);
+      path.Points.push_back(ray.SegmentEnd());
+      path.ArcLength.push_back(ray.Length());
     }
   }
-  path.Length = s;
-  path.FinalVelocity = y.tail<3>();
+  path.Hit = ray.IsHit();
+  path.HitInfo = ray.HitInfo();
+  path.Reason = ray.Reason();
+  path.Steps = ray.Steps();
+  path.Length = ray.Length();
+  path.FinalVelocity = ray.Velocity();
+  if (recordPath && path.Hit)
+  {
+    path.Points.push_back(path.HitInfo.Position);
+    path.ArcLength.push_back(path.Length);
+  }
 }
 } // namespace riemann

@@ -18,6 +18,7 @@
 #include "RiemannScene.h"
 
 #include "GeodesicTrace.h" // For TerminationReason
+#include "Integrators.h" // For GeodesicStepper
 #include "Metric.h"
 
 #include <vector>
@@ -38,6 +39,71 @@ struct RayPath
   /// HitSurface, OutOfLength, OutOfSteps, DegenerateMetric, Stagnation, UnexpectedValue.
   int Reason = NotInitialized;
   int Steps = 0;
+};
+
+/**
+ * The rules of one ray, one step at a time, so that a tracer can advance many
+ * rays and intersect their segments together (the CPU tracer's Embree ray
+ * streams) while keeping exactly TraceRay's rules:
+ * @code
+ * RayMarcher ray(settings);
+ * ray.Start(p, v);
+ * while (ray.Advance(metric))         // false: ended (length, steps, failure)
+ * {
+ *   SceneHit hit;
+ *   if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit)) { ray.Hit(hit); break; }
+ *   ray.Miss();
+ * }
+ * @endcode
+ */
+class RIEMANNRENDERINGRAYTRACING_EXPORT RayMarcher
+{
+public:
+  explicit RayMarcher(const RaySettings& settings);
+
+  /// Start a ray at p with unit-speed velocity v.
+  void Start(const Vec3& p, const Vec3& v);
+
+  /**
+   * Take the next step. True: the segment SegmentStart() -> SegmentEnd() is
+   * to be intersected, then Hit() or Miss() called. False: the ray has ended
+   * (Reason() says why).
+   */
+  bool Advance(const Metric& metric);
+
+  Vec3 SegmentStart() const { return this->Previous.head<3>(); }
+  Vec3 SegmentEnd() const { return this->State.head<3>(); }
+
+  /// The segment hits: the ray ends there (arc length and velocity linear within the step).
+  void Hit(const SceneHit& hit);
+  /// The segment hits nothing: the step is accepted.
+  void Miss();
+
+  bool Ended() const { return this->Done; }
+  bool IsHit() const { return this->DidHit; }
+  int Reason() const { return this->Termination; }
+  int Steps() const { return this->StepCount; }
+  /// Arc length so far, or at the hit.
+  double Length() const { return this->ArcLength; }
+  /// Position at the end (the hit position for a hit).
+  Vec3 Position() const;
+  /// Velocity at the end (dx/ds).
+  Vec3 Velocity() const;
+  const SceneHit& HitInfo() const { return this->LastHit; }
+
+private:
+  RaySettings Settings;
+  GeodesicStepper Stepper;
+  Vec6 State;
+  Vec6 Previous;
+  double ArcLength = 0.0;
+  double Taken = 0.0;
+  int StepCount = 0;
+  int Termination = NotInitialized;
+  bool Done = true;
+  bool DidHit = false;
+  SceneHit LastHit;
+  Vec3 HitVelocity = Vec3::Zero();
 };
 
 /**

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry> // cross
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -364,7 +365,17 @@ Material ParseMaterial(const Json& object, const std::string& path, const Vec3& 
   return material;
 }
 
-SceneObject ParseObject(const Json& object, const std::string& path)
+/// Mesh file extensions that the VTK layer reads (vtkRiemannScene).
+bool IsMeshExtension(std::string extension)
+{
+  for (char& c : extension)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return extension == ".vtp" || extension == ".ply" || extension == ".obj" || extension == ".stl";
+}
+
+SceneObject ParseObject(const Json& object, const std::string& path, const std::string& baseDirectory)
 {
   if (!object.is_object())
   {
@@ -457,10 +468,68 @@ SceneObject ParseObject(const Json& object, const std::string& path)
     lo = result.A;
     hi = result.B;
   }
+  else if (type == "mesh")
+  {
+    CheckKeys(object, path,
+      { "type", "file", "material", "color_array", "color_map", "color_range" });
+    result.Type = ObjectType::Mesh;
+    const std::string filePath = path + ".file";
+    const std::string name = String(Required(object, "file", path), filePath);
+    const std::filesystem::path file = Resolve(name, baseDirectory);
+    if (!IsMeshExtension(file.extension().string()))
+    {
+      Fail(filePath,
+        "unknown mesh format \"" + file.extension().string() + "\" of \"" + name +
+          "\"; expected .vtp, .ply, .obj or .stl");
+    }
+    std::error_code error;
+    if (name.empty() || !std::filesystem::is_regular_file(file, error))
+    {
+      Fail(filePath, "mesh file \"" + name + "\" not found (looked for " + file.string() + ")");
+    }
+    result.MeshFile = file.string();
+    if (object.contains("color_array"))
+    {
+      result.ColorArray = String(object.at("color_array"), path + ".color_array");
+    }
+    if (object.contains("color_map"))
+    {
+      result.ColorMap = String(object.at("color_map"), path + ".color_map");
+      if (result.ColorMap != "cool-to-warm" && result.ColorMap != "viridis" &&
+        result.ColorMap != "grayscale" && result.ColorMap != "rainbow")
+      {
+        Fail(path + ".color_map",
+          "unknown colour map \"" + result.ColorMap +
+            "\"; expected \"cool-to-warm\", \"viridis\", \"grayscale\" or \"rainbow\"");
+      }
+    }
+    if (object.contains("color_range"))
+    {
+      const Json& range = object.at("color_range");
+      const std::string rangePath = path + ".color_range";
+      if (!range.is_array() || range.size() != 2)
+      {
+        Fail(rangePath, "expected [min, max], got " + Describe(range));
+      }
+      result.ColorRange[0] = Number(range[0], rangePath + "[0]");
+      result.ColorRange[1] = Number(range[1], rangePath + "[1]");
+      if (!(result.ColorRange[0] < result.ColorRange[1]))
+      {
+        Fail(rangePath, "expected min < max, got " + range.dump());
+      }
+      result.HasColorRange = true;
+    }
+    result.HasMaterialBounds = object.contains("material") &&
+      object.at("material").is_object() && object.at("material").contains("bounds");
+    // Placeholder bounds until the triangles are known (SetMesh).
+    lo = Vec3::Constant(-1);
+    hi = Vec3::Constant(1);
+  }
   else
   {
     Fail(path + ".type",
-      "unknown object type \"" + type + "\"; expected \"grid\", \"sphere\", \"plane\" or \"box\"");
+      "unknown object type \"" + type +
+        "\"; expected \"grid\", \"sphere\", \"plane\", \"box\" or \"mesh\"");
   }
   if (object.contains("material"))
   {
@@ -473,25 +542,28 @@ SceneObject ParseObject(const Json& object, const std::string& path)
   return result;
 }
 
-void ParseObjects(const Json& list, const std::string& path, Scene& scene)
+void ParseObjects(
+  const Json& list, const std::string& path, Scene& scene, const std::string& baseDirectory)
 {
   if (!list.is_array())
   {
     Fail(path, "expected an array of objects, got " + Describe(list));
   }
-  int counts[4] = { 0, 0, 0, 0 };
-  const int limits[4] = { MaximumGrids, MaximumSpheres, MaximumPlanes, MaximumBoxes };
-  const char* plural[4] = { "grids", "spheres", "planes", "boxes" };
+  int counts[5] = { 0, 0, 0, 0, 0 };
+  const int limits[5] = { MaximumGrids, MaximumSpheres, MaximumPlanes, MaximumBoxes,
+    MaximumMeshes };
+  const char* plural[5] = { "grids", "spheres", "planes", "boxes", "meshes" };
   for (size_t i = 0; i < list.size(); ++i)
   {
     const std::string itemPath = path + "[" + std::to_string(i) + "]";
-    SceneObject object = ParseObject(list[i], itemPath);
+    SceneObject object = ParseObject(list[i], itemPath, baseDirectory);
     const int type = static_cast<int>(object.Type);
     if (++counts[type] > limits[type])
     {
       Fail(itemPath,
         std::string("more than ") + std::to_string(limits[type]) + " " + plural[type] +
-          " (the GPU pass's limit)");
+          (type == static_cast<int>(ObjectType::Mesh) ? std::string(" (the CPU tracer's limit)")
+                                                     : std::string(" (the GPU pass's limit)")));
     }
     scene.Objects.push_back(object);
   }
@@ -821,7 +893,7 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   }
   if (root.contains("objects"))
   {
-    ParseObjects(root.at("objects"), path + ".objects", scene);
+    ParseObjects(root.at("objects"), path + ".objects", scene, baseDirectory);
   }
   return scene;
 }
@@ -916,6 +988,9 @@ bool IntersectSegment(const Scene& scene, const Vec3& a, const Vec3& b, SceneHit
       case ObjectType::Box:
         hits = IntersectBox(a, d, object.A, object.B, t, normal);
         break;
+      case ObjectType::Mesh:
+        // Intersected by the CPU tracer (Embree), not here.
+        break;
     }
     // Strictly smaller: a tie keeps the object listed first.
     if (hits && t < best)
@@ -925,6 +1000,7 @@ bool IntersectSegment(const Scene& scene, const Vec3& a, const Vec3& b, SceneHit
       hit.Fraction = t;
       hit.Normal = normal;
       hit.Object = static_cast<int>(index);
+      hit.Primitive = -1;
     }
   }
   if (found)
@@ -940,7 +1016,25 @@ Vec3 SurfaceColor(const Scene& scene, const SceneHit& hit)
   {
     return Vec3::Zero();
   }
-  const Material& material = scene.Objects[hit.Object].Surface;
+  const SceneObject& object = scene.Objects[hit.Object];
+  if (object.Type == ObjectType::Mesh && object.Mesh >= 0 &&
+    object.Mesh < static_cast<int>(scene.Meshes.size()) && hit.Primitive >= 0)
+  {
+    const TriangleMesh& mesh = *scene.Meshes[object.Mesh];
+    if (!mesh.Colors.empty() && static_cast<std::size_t>(hit.Primitive) < mesh.NumberOfTriangles())
+    {
+      const unsigned int* corner = &mesh.Triangles[3 * static_cast<std::size_t>(hit.Primitive)];
+      const double w[3] = { 1.0 - hit.U - hit.V, hit.U, hit.V };
+      Vec3 color = Vec3::Zero();
+      for (int k = 0; k < 3; ++k)
+      {
+        const float* c = &mesh.Colors[3 * static_cast<std::size_t>(corner[k])];
+        color += w[k] * Vec3(c[0], c[1], c[2]);
+      }
+      return color.cwiseMax(0.0).cwiseMin(1.0);
+    }
+  }
+  const Material& material = object.Surface;
   switch (material.Type)
   {
     case MaterialType::Position:
@@ -968,5 +1062,117 @@ Vec3 SurfaceColor(const Scene& scene, const SceneHit& hit)
     }
   }
   return Vec3::Zero();
+}
+//------------------------------------------------------------------------------
+std::string CheckMesh(const TriangleMesh& mesh)
+{
+  const std::size_t points = mesh.NumberOfPoints();
+  if (mesh.Points.size() % 3 != 0 || mesh.Triangles.size() % 3 != 0)
+  {
+    return "the point or triangle array is not a multiple of 3 long";
+  }
+  if (mesh.NumberOfTriangles() == 0)
+  {
+    return "the mesh has no triangles (empty, or only points and lines)";
+  }
+  if (!mesh.Normals.empty() && mesh.Normals.size() != mesh.Points.size())
+  {
+    return "the normal array does not match the points";
+  }
+  if (!mesh.Colors.empty() && mesh.Colors.size() != mesh.Points.size())
+  {
+    return "the colour array does not match the points";
+  }
+  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+  {
+    if (!std::isfinite(mesh.Points[i]))
+    {
+      return "point " + std::to_string(i / 3) + " has a coordinate that is not finite";
+    }
+  }
+  for (std::size_t i = 0; i < mesh.Triangles.size(); ++i)
+  {
+    if (mesh.Triangles[i] >= points)
+    {
+      return "triangle " + std::to_string(i / 3) + " names point " +
+        std::to_string(mesh.Triangles[i]) + " of " + std::to_string(points);
+    }
+  }
+  return std::string();
+}
+
+namespace
+{
+void MeshBounds(const TriangleMesh& mesh, Vec3& lo, Vec3& hi)
+{
+  lo = Vec3::Constant(Infinity);
+  hi = Vec3::Constant(-Infinity);
+  for (std::size_t i = 0; i < mesh.NumberOfPoints(); ++i)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      lo[axis] = std::min<double>(lo[axis], mesh.Points[3 * i + axis]);
+      hi[axis] = std::max<double>(hi[axis], mesh.Points[3 * i + axis]);
+    }
+  }
+}
+}
+
+void SetMesh(Scene& scene, std::size_t object, std::shared_ptr<const TriangleMesh> mesh)
+{
+  if (object >= scene.Objects.size() || scene.Objects[object].Type != ObjectType::Mesh)
+  {
+    throw SceneDefinitionError(
+      "scene.objects[" + std::to_string(object) + "]: not a mesh object");
+  }
+  SceneObject& target = scene.Objects[object];
+  const std::string where = "scene.objects[" + std::to_string(object) + "]" +
+    (target.MeshFile.empty() ? std::string() : " (" + target.MeshFile + ")");
+  if (!mesh)
+  {
+    throw SceneDefinitionError(where + ": no mesh");
+  }
+  const std::string problem = CheckMesh(*mesh);
+  if (!problem.empty())
+  {
+    throw SceneDefinitionError(where + ": " + problem);
+  }
+  if (!target.HasMaterialBounds)
+  {
+    Vec3 lo;
+    Vec3 hi;
+    MeshBounds(*mesh, lo, hi);
+    SetDefaultBounds(target.Surface, lo, hi);
+  }
+  if (target.Mesh >= 0 && target.Mesh < static_cast<int>(scene.Meshes.size()))
+  {
+    scene.Meshes[target.Mesh] = std::move(mesh);
+  }
+  else
+  {
+    target.Mesh = static_cast<int>(scene.Meshes.size());
+    scene.Meshes.push_back(std::move(mesh));
+  }
+}
+
+std::size_t AddMesh(
+  Scene& scene, std::shared_ptr<const TriangleMesh> mesh, const Material& material, bool keepBounds)
+{
+  SceneObject object;
+  object.Type = ObjectType::Mesh;
+  object.Surface = material;
+  object.HasMaterialBounds = keepBounds;
+  scene.Objects.push_back(object);
+  const std::size_t index = scene.Objects.size() - 1;
+  try
+  {
+    SetMesh(scene, index, std::move(mesh));
+  }
+  catch (...)
+  {
+    scene.Objects.pop_back();
+    throw;
+  }
+  return index;
 }
 } // namespace riemann

@@ -22,7 +22,9 @@
  * {...}},
  *     {"type": "sphere", "center": [0,0,0], "radius": 0.5, "material": {...}},
  *     {"type": "plane", "point": [0,-2,0], "normal": [0,1,0], "material": {...}},
- *     {"type": "box", "min": [-1,-1,-1], "max": [1,1,1], "material": {...}}
+ *     {"type": "box", "min": [-1,-1,-1], "max": [1,1,1], "material": {...}},
+ *     {"type": "mesh", "file": "bunny.ply", "material": {...},   // CPU tracer only
+ *      "color_array": "Elevation", "color_map": "cool-to-warm", "color_range": [0, 1]}
  *   ]
  * }
  * @endcode
@@ -49,6 +51,19 @@
  * plane (point, normal; normalised by the parser, two-sided) and box (min,
  * max) keys are required. Every object accepts "name" and "description".
  *
+ * Meshes (the CPU tracer, vtkRiemannCPURayTracer, only; the GPU pass refuses
+ * a scene that has one): "file" names a .vtp, .ply, .obj or .stl file
+ * (relative to the scene file), checked to exist here; the parser records it
+ * in SceneObject::MeshFile and leaves the triangles to the VTK layer
+ * (vtkRiemannScene reads the file with VTK's readers and calls SetMesh), so
+ * this core stays VTK-free. Colours: an unsigned-char RGB(A) point array of
+ * the file (its active scalars) colours the vertices; "color_array" names a
+ * point array mapped through "color_map" ("cool-to-warm" (default),
+ * "viridis", "grayscale" or "rainbow") over "color_range" (default: the
+ * array's range); otherwise the material applies (default "position" over
+ * the mesh's bounds). A mesh is a surface, not a solid: only its triangles
+ * are hit.
+ *
  * Parsing (ParseScene): unknown keys, wrong types or sizes, and values that
  * make no sense are SceneDefinitionError's whose message starts with the JSON
  * path, e.g. `scene.objects[2].radius: expected a positive number`. A metric
@@ -64,6 +79,8 @@
 #include "ObserverCamera.h"
 #include "RiemannRenderingRayTracingModule.h" // RIEMANNRENDERINGRAYTRACING_EXPORT
 
+#include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -99,8 +116,35 @@ enum class ObjectType : int
   Grid = 0,
   Sphere = 1,
   Plane = 2,
-  Box = 3
+  Box = 3,
+  /// A triangle mesh (CPU tracer only): Scene::Meshes[SceneObject::Mesh].
+  Mesh = 4
 };
+
+/**
+ * The triangles of a mesh object, VTK-free (filled by the VTK layer from any
+ * vtkPolyData). Float coordinates: what Embree intersects.
+ */
+struct TriangleMesh
+{
+  /// x, y, z per vertex.
+  std::vector<float> Points;
+  /// Three vertex indices per triangle.
+  std::vector<unsigned int> Triangles;
+  /// Optional unit normals per vertex (smooth shading); empty for face normals.
+  std::vector<float> Normals;
+  /// Optional RGB in [0, 1] per vertex; empty to use the object's material.
+  std::vector<float> Colors;
+
+  std::size_t NumberOfPoints() const { return this->Points.size() / 3; }
+  std::size_t NumberOfTriangles() const { return this->Triangles.size() / 3; }
+};
+
+/**
+ * Why `mesh` cannot be traced ("" when it can): no triangles, a coordinate
+ * that is not finite, an index out of range, arrays of the wrong size.
+ */
+RIEMANNRENDERINGRAYTRACING_EXPORT std::string CheckMesh(const TriangleMesh& mesh);
 
 struct SceneObject
 {
@@ -117,6 +161,18 @@ struct SceneObject
   /// Grid: clipping box x0,x1,y0,y1,z0,z1.
   double Extent[6] = { -1, 1, -1, 1, -1, 1 };
   Material Surface;
+  /// Mesh: index into Scene::Meshes (-1 until the triangles are set).
+  int Mesh = -1;
+  /// Mesh: the file named by the scene (absolute path), "" for a mesh given as data.
+  std::string MeshFile;
+  /// Mesh: point array mapped through ColorMap ("" for none).
+  std::string ColorArray;
+  std::string ColorMap = "cool-to-warm";
+  /// Mesh: scalar range of the colour map; the array's own range when unset.
+  double ColorRange[2] = { 0, 1 };
+  bool HasColorRange = false;
+  /// Mesh: whether the material's "bounds" were given (else the mesh's bounds).
+  bool HasMaterialBounds = false;
 };
 
 /// How rays are integrated (in Riemannian arc length).
@@ -145,6 +201,8 @@ constexpr int MaximumSpheres = 16;
 constexpr int MaximumPlanes = 8;
 constexpr int MaximumBoxes = 16;
 constexpr int MaximumGrids = 4;
+/// Mesh objects per scene (the CPU tracer's; one Embree geometry each).
+constexpr int MaximumMeshes = 256;
 
 struct Scene
 {
@@ -161,7 +219,34 @@ struct Scene
   RaySettings Rays;
   /// The metric definition named by the scene (JSON text), empty if none.
   std::string MetricDefinition;
+  /// Triangles of the mesh objects (shared: scenes are copied, meshes are big).
+  std::vector<std::shared_ptr<const TriangleMesh>> Meshes;
+
+  /// True when an object is a mesh (the GPU pass cannot draw the scene).
+  bool HasMeshes() const
+  {
+    for (const SceneObject& object : this->Objects)
+    {
+      if (object.Type == ObjectType::Mesh)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
 };
+
+/**
+ * Give mesh object `object` its triangles (checked with CheckMesh; throws
+ * SceneDefinitionError naming the object and the file). Without explicit
+ * material bounds, the position material spans the mesh's bounds.
+ */
+RIEMANNRENDERINGRAYTRACING_EXPORT void SetMesh(
+  Scene& scene, std::size_t object, std::shared_ptr<const TriangleMesh> mesh);
+
+/// Append a mesh object with `material` (its bounds: the mesh's, unless `keepBounds`); returns its index.
+RIEMANNRENDERINGRAYTRACING_EXPORT std::size_t AddMesh(Scene& scene,
+  std::shared_ptr<const TriangleMesh> mesh, const Material& material, bool keepBounds = false);
 
 /// Parse a scene; relative file names resolve against `baseDirectory`. Throws SceneDefinitionError.
 RIEMANNRENDERINGRAYTRACING_EXPORT Scene ParseScene(
@@ -185,6 +270,10 @@ struct SceneHit
   /// defining function), not normalised in g.
   Vec3 Normal = Vec3::Zero();
   int Object = -1;
+  /// Mesh hits: the triangle and the barycentric weights of its 2nd and 3rd vertices.
+  int Primitive = -1;
+  double U = 0.0;
+  double V = 0.0;
 };
 
 /**
@@ -201,6 +290,8 @@ struct SceneHit
  *   entered for a box or bar, and for the two-sided plane its unit normal
  *   turned to face the ray (n . (b - a) <= 0). A segment touching or lying in
  *   the plane hits it.
+ * Mesh objects are not tested here: the CPU tracer intersects them with
+ * Embree (RiemannMeshIntersector.h) and keeps the nearer of the two hits.
  * Returns false (hit unchanged) when nothing is hit.
  */
 RIEMANNRENDERINGRAYTRACING_EXPORT bool IntersectSegment(
@@ -216,6 +307,8 @@ RIEMANNRENDERINGRAYTRACING_EXPORT bool IntersectSegment(
  *   even, else Color2, at q = p - 1e-6 s n (n the unit Normal): a point just
  *   inside the surface, so that a face lying on a checker plane (a box
  *   [-1,1]^3 with size 1) gets one colour rather than rounding noise.
+ * - A mesh with vertex colours: the colours of the hit triangle's vertices
+ *   interpolated with the hit's barycentric weights (the material otherwise).
  */
 RIEMANNRENDERINGRAYTRACING_EXPORT Vec3 SurfaceColor(const Scene& scene, const SceneHit& hit);
 } // namespace riemann

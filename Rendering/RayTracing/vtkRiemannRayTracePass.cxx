@@ -382,6 +382,14 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   }
   const std::shared_ptr<const riemann::Scene> scenePointer = this->Scene->GetSceneSnapshot();
   const riemann::Scene& scene = *scenePointer;
+  if (scene.HasMeshes())
+  {
+    // The shader draws the analytic objects only; triangle meshes are Embree's.
+    this->Fail("mesh objects need --backend cpu: the GPU pass draws grids, spheres, planes and "
+               "boxes; render this scene with vtkRiemannCPURayTracer",
+      renWin, viewport);
+    return;
+  }
 
   riemann::MetricGlsl metricGlsl;
   try

@@ -1,5 +1,6 @@
 #include "vtkRiemannScene.h"
 
+#include "RiemannPolyDataMesh.h"
 #include "RiemannScene.h"
 
 #include "vtkCamera.h"
@@ -42,7 +43,9 @@ bool vtkRiemannScene::SetDefinition(const char* json)
   }
   try
   {
-    auto scene = std::make_shared<const riemann::Scene>(riemann::ParseScene(json, "."));
+    riemann::Scene parsed = riemann::ParseScene(json, ".");
+    riemann::LoadSceneMeshes(parsed); // VTK's readers: the core stays VTK-free
+    auto scene = std::make_shared<const riemann::Scene>(std::move(parsed));
     return this->Install(std::move(scene), json, std::string());
   }
   catch (const std::exception& e)
@@ -61,7 +64,9 @@ bool vtkRiemannScene::SetDefinitionFile(const char* path)
   }
   try
   {
-    auto scene = std::make_shared<const riemann::Scene>(riemann::LoadSceneFile(path));
+    riemann::Scene parsed = riemann::LoadSceneFile(path);
+    riemann::LoadSceneMeshes(parsed);
+    auto scene = std::make_shared<const riemann::Scene>(std::move(parsed));
     // Keep the text for GetDefinition() (LoadSceneFile has read and checked it).
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;

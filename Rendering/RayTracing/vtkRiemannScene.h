@@ -9,6 +9,10 @@
  * the metric the scene is meant for. vtkRiemannRayTracePass (and the CPU
  * tracer) take it with SetScene().
  *
+ * Mesh objects ({"type": "mesh", "file": ...}, CPU tracer only) are read
+ * here with VTK's readers (RiemannPolyDataMesh.h); a file that cannot be read
+ * or holds no triangles makes the definition fail like any other error.
+ *
  * SetDefinition() parses and validates the text; on bad input it returns
  * false, GetLastError() says where and why, and the previous definition is
  * kept. Without a definition the scene is riemann::DefaultScene(): the

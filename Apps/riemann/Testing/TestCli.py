@@ -217,6 +217,52 @@ class RenderTests(unittest.TestCase):
         self.assertEqual(status, 0, err)
 
 
+class CpuRenderTests(unittest.TestCase):
+    """riemann render --backend cpu (the Embree tracer)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_cpu_matches_the_gpu_baselines(self):
+        # The GPU's committed pictures of the paper's figures are the CPU's
+        # references too: mean difference at most 0.5 of 255.
+        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/RayTracing/Testing/Data/Baseline")
+        for name in ("paper-one-bump", "paper-twist"):
+            with self.subTest(name):
+                out = os.path.join(self.dir, name + ".png")
+                status, _, err = run("render", "--backend", "cpu",
+                                     "--scene", os.path.join(DATA, "scenes", name + ".json"),
+                                     "--width", "160", "--height", "120", "--threshold", "0.5",
+                                     "--reference", os.path.join(baseline, name + ".png"), "-o", out)
+                self.assertEqual(status, 0, err)
+                self.assertNotIn("[", err, "no progress bar when stderr is not a terminal")
+
+    def test_exr_channels_and_hit_error(self):
+        out = os.path.join(self.dir, "twist.exr")
+        picture = os.path.join(self.dir, "error.png")
+        status, _, err = run("render", "--backend", "cpu", "--samples", "4",
+                             "--scene", os.path.join(DATA, "scenes", "paper-twist.json"),
+                             "--width", "40", "--height", "30", "--hit-error",
+                             "--hit-error-image", picture, "-o", out)
+        self.assertEqual(status, 0, err)
+        info = subprocess.run(["oiiotool", "--info", "-v", out], capture_output=True, text=True).stdout
+        for channel in ("R, G, B", "HitPosition.X", "HitPosition.Y", "HitPosition.Z", "ArcLength",
+                        "Steps", "ReasonForTermination", "SpeedDrift", "HitError"):
+            self.assertIn(channel, info)
+        # RK4 at step 0.02 (the scene's) against the exact geodesics: median below 1e-4.
+        line = [l for l in err.splitlines() if "hit error against the exact geodesic" in l][0]
+        median = float(line.split("median ")[1].split(",")[0])
+        maximum = float(line.split("max ")[1].split(",")[0])
+        self.assertLess(median, 1e-4, line)
+        self.assertGreaterEqual(maximum, median, line)
+        width, height, _ = png_size_and_pixels(picture)
+        self.assertEqual((width, height), (40, 30))
+
+
 class GlslTests(unittest.TestCase):
     def test_every_example_metric_emits_valid_glsl(self):
         """`riemann info --glsl` for each Data/metrics file compiles as GLSL 3.30 (glslangValidator)."""
@@ -529,7 +575,12 @@ BAD_INPUTS = [
     ("info at a bad point", ["info", "-m", "METRIC", "-p", "1,2,inf"], '{"type": "euclidean"}',
      "--point: expected three finite"),
     ("no subcommand", [], None, "A subcommand is required"),
-    ("render: CPU backend", ["render", "--backend", "cpu", "-o", "OUT.png"], None, "not available yet"),
+    ("render: samples on the GPU", ["render", "--samples", "4", "-o", "OUT.png"], None,
+     "need --backend cpu"),
+    ("render: hit error without a diffeomorphism", ["render", "--backend", "cpu", "--hit-error",
+     "-m", "METRIC", "-o", "OUT.png"], '{"type": "euclidean"}', "no exact reference"),
+    ("render: mesh scene on the GPU", ["render", "--scene", "METRIC", "-o", "OUT.png"],
+     '{"objects": [{"type": "mesh", "file": "nowhere.ply"}]}', "not found"),
     ("render: wrong extension", ["render", "-o", "OUT.txt"], None, "must end in .png or .exr"),
     ("render: bad scene", ["render", "--scene", "METRIC", "-o", "OUT.png"], '{"objects": [{"type": "sphere"}]}',
      "bad scene"),
