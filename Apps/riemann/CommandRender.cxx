@@ -301,10 +301,6 @@ void RunRender(const RenderArguments& args)
   {
     throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
   }
-  if (cpu && args.Bundle > 0)
-  {
-    throw Failure("--bundle draws the GPU pass's rays: use it with --backend gpu", 2);
-  }
   if (!args.Reference.empty() && args.Frames > 1)
   {
     throw Failure("--reference compares one picture: it cannot be used with --frames", 2);

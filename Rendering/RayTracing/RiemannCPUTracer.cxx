@@ -133,19 +133,10 @@ bool CPUTracer::ExactHit(const Vec3& v, Vec3& position, double& length) const
       {
         return false;
       }
-      SceneHit analytic;
-      bool found = IntersectSegment(scene, previous, next, analytic);
-      SceneHit mesh;
-      bool meshFound = false;
-      this->Meshes->Intersect(&previous, &next, 1, &mesh, &meshFound, false);
-      if (meshFound && (!found || mesh.Fraction < analytic.Fraction))
+      SceneHit found;
+      if (IntersectSceneSegment(scene, this->Meshes.get(), previous, next, found))
       {
-        analytic = mesh;
-        found = true;
-      }
-      if (found)
-      {
-        hit = analytic;
+        hit = found;
         hitStart = a;
         (void)b;
         return true;

@@ -223,4 +223,21 @@ void MeshIntersector::Intersect(const Vec3* a, const Vec3* b, std::size_t count,
     found[i] = true;
   }
 }
+bool IntersectSceneSegment(const Scene& scene, const MeshIntersector* meshes, const Vec3& a,
+  const Vec3& b, SceneHit& hit)
+{
+  bool found = IntersectSegment(scene, a, b, hit);
+  if (meshes && !meshes->Empty())
+  {
+    SceneHit mesh;
+    bool meshFound = false;
+    meshes->Intersect(&a, &b, 1, &mesh, &meshFound, false);
+    if (meshFound && (!found || mesh.Fraction < hit.Fraction))
+    {
+      hit = mesh;
+      found = true;
+    }
+  }
+  return found;
+}
 } // namespace riemann

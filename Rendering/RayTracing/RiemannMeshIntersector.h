@@ -60,6 +60,13 @@ private:
   std::unique_ptr<Internals> Impl;
   std::size_t Triangles = 0;
 };
+/**
+ * First hit of the segment a -> b with the whole scene: the analytic objects
+ * (IntersectSegment) and, when `meshes` is given, its triangle meshes; the
+ * nearer wins (the analytic object on a tie). False when nothing is hit.
+ */
+RIEMANNRENDERINGRAYTRACING_EXPORT bool IntersectSceneSegment(const Scene& scene,
+  const MeshIntersector* meshes, const Vec3& a, const Vec3& b, SceneHit& hit);
 } // namespace riemann
 
 #endif

@@ -1,5 +1,7 @@
 #include "RiemannRay.h"
 
+#include "RiemannMeshIntersector.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -97,7 +99,7 @@ Vec3 RayMarcher::Velocity() const
 }
 
 void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec3& v,
-  const RaySettings& settings, RayPath& path, bool recordPath)
+  const RaySettings& settings, RayPath& path, bool recordPath, const MeshIntersector* meshes)
 {
   path.Points.clear();
   path.ArcLength.clear();
@@ -111,7 +113,7 @@ void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec
   while (ray.Advance(metric))
   {
     SceneHit hit;
-    if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit))
+    if (IntersectSceneSegment(scene, meshes, ray.SegmentStart(), ray.SegmentEnd(), hit))
     {
       ray.Hit(hit);
       break;

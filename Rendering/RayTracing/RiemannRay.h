@@ -106,12 +106,16 @@ private:
   Vec3 HitVelocity = Vec3::Zero();
 };
 
+class MeshIntersector;
+
 /**
  * Trace one ray from p with unit-speed velocity v. With `recordPath` false
- * only the end state is kept (no allocation).
+ * only the end state is kept (no allocation). With `meshes` (the scene's
+ * triangle meshes in Embree) each segment is intersected with them too.
  */
 RIEMANNRENDERINGRAYTRACING_EXPORT void TraceRay(const Metric& metric, const Scene& scene,
-  const Vec3& p, const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true);
+  const Vec3& p, const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
+  const MeshIntersector* meshes = nullptr);
 } // namespace riemann
 
 #endif

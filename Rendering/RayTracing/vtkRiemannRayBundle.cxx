@@ -1,6 +1,7 @@
 #include "vtkRiemannRayBundle.h"
 
 #include "ObserverCamera.h"
+#include "RiemannMeshIntersector.h"
 #include "RiemannRay.h"
 #include "RiemannScene.h"
 #include "vtkCamera.h"
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -148,6 +150,21 @@ int vtkRiemannRayBundle::RequestData(
     }
   }
 
+  // Mesh objects (the CPU tracer's) stop the rays here too, through Embree.
+  std::unique_ptr<riemann::MeshIntersector> meshes;
+  if (scene->HasMeshes())
+  {
+    try
+    {
+      meshes = std::make_unique<riemann::MeshIntersector>(*scene);
+    }
+    catch (const std::runtime_error& e)
+    {
+      vtkErrorMacro(<< "The scene's meshes: " << e.what());
+      return 1;
+    }
+  }
+
   std::vector<riemann::RayPath> paths(pixels.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()),
     [&](vtkIdType first, vtkIdType last)
@@ -156,7 +173,8 @@ int vtkRiemannRayBundle::RequestData(
       {
         const riemann::Vec3 v =
           camera->PixelDirection(pixels[k].first, pixels[k].second, this->Width, this->Height);
-        riemann::TraceRay(*metric, *scene, settings.Position, v, rays, paths[k]);
+        riemann::TraceRay(
+          *metric, *scene, settings.Position, v, rays, paths[k], true, meshes.get());
       }
     });
   this->UpdateProgress(1.0);

@@ -2,12 +2,14 @@
 
 #include "RiemannScene.h"
 #include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkCubeSource.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannScene.h"
 #include "vtkSphereSource.h"
@@ -68,6 +70,61 @@ void AddPiece(
         i, c, static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
     }
   }
+  piece->GetPointData()->SetScalars(colors);
+  append->AddInputData(piece);
+}
+}
+
+namespace
+{
+/// A mesh object's triangles, coloured per vertex as the tracer colours them.
+void AddMesh(vtkAppendPolyData* append, const riemann::TriangleMesh& mesh,
+  const riemann::Scene& scene, int object)
+{
+  const vtkIdType pointCount = static_cast<vtkIdType>(mesh.NumberOfPoints());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(pointCount);
+  for (vtkIdType i = 0; i < pointCount; ++i)
+  {
+    points->SetPoint(i, &mesh.Points[3 * i]);
+  }
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(static_cast<vtkIdType>(mesh.NumberOfTriangles()),
+    3 * static_cast<vtkIdType>(mesh.NumberOfTriangles()));
+  for (std::size_t t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    const vtkIdType ids[3] = { mesh.Triangles[3 * t], mesh.Triangles[3 * t + 1],
+      mesh.Triangles[3 * t + 2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(pointCount);
+  riemann::SceneHit hit;
+  hit.Object = object;
+  for (vtkIdType i = 0; i < pointCount; ++i)
+  {
+    riemann::Vec3 color;
+    if (!mesh.Colors.empty())
+    {
+      color = riemann::Vec3(mesh.Colors[3 * i], mesh.Colors[3 * i + 1], mesh.Colors[3 * i + 2]);
+    }
+    else
+    {
+      hit.Position = riemann::Vec3(mesh.Points[3 * i], mesh.Points[3 * i + 1], mesh.Points[3 * i + 2]);
+      color = riemann::SurfaceColor(scene, hit);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      colors->SetTypedComponent(
+        i, c, static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
+    }
+  }
+  vtkNew<vtkPolyData> piece;
+  piece->SetPoints(points);
+  piece->SetPolys(triangles);
   piece->GetPointData()->SetScalars(colors);
   append->AddInputData(piece);
 }
@@ -154,6 +211,13 @@ int vtkRiemannSceneSource::RequestData(
         AddPiece(append, box, scene, object);
         break;
       }
+      case riemann::ObjectType::Mesh:
+        if (o.Mesh >= 0 && o.Mesh < static_cast<int>(scene.Meshes.size()) &&
+          scene.Meshes[o.Mesh])
+        {
+          AddMesh(append, *scene.Meshes[o.Mesh], scene, object);
+        }
+        break;
     }
   }
   if (append->GetNumberOfInputConnections(0) > 0)

@@ -4,7 +4,8 @@
  *
  * For the outside view next to the inside view: the paper's grid of bars as
  * boxes, spheres, planes (as square patches of PlaneSize around their
- * point) and boxes, triangulated, with point data `Colors` (RGB, unsigned
+ * point), boxes and triangle meshes (mesh objects), triangulated, with point
+ * data `Colors` (RGB, unsigned
  * char) from each object's material at the vertex (the position
  * pseudo-colour, solid, or checker), so the same colours as in the inside
  * view identify where rays end.

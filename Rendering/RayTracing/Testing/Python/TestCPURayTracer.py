@@ -9,11 +9,15 @@ back with numpy.
 Run by ctest with /usr/bin/python3 and PYTHONPATH set to the build's package
 folder; exits non-zero on failure.
 """
+import json
+import os
+import tempfile
 import unittest
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 import riemann
 
@@ -67,6 +71,48 @@ class CPURayTracerTests(unittest.TestCase):
         self.assertGreater(len(hits), 100)
         radii = np.linalg.norm(hits, axis=1)
         self.assertLess(np.max(np.abs(radii - 1.0)), 2e-3)
+
+    def test_mesh_file_in_the_bundle_and_the_outside_view(self):
+        # The same sphere as a mesh object of the scene (a .vtp file): the ray
+        # bundle stops on it, and the outside view draws it.
+        sphere = vtkSphereSource()
+        sphere.SetRadius(1.0)
+        sphere.SetThetaResolution(64)
+        sphere.SetPhiResolution(64)
+        with tempfile.TemporaryDirectory() as folder:
+            mesh_path = os.path.join(folder, "sphere.vtp")
+            writer = vtkXMLPolyDataWriter()
+            writer.SetFileName(mesh_path)
+            writer.SetInputConnection(sphere.GetOutputPort())
+            self.assertEqual(writer.Write(), 1)
+            definition = json.loads(SCENE)
+            definition["objects"] = [{"type": "mesh", "file": mesh_path}]
+            scene = riemann.vtkRiemannScene()
+            self.assertTrue(scene.SetDefinition(json.dumps(definition)), scene.GetLastError())
+        metric = riemann.vtkRiemannMetric()
+        self.assertTrue(metric.SetDefinition('{"type": "euclidean"}'), metric.GetLastError())
+
+        bundle = riemann.vtkRiemannRayBundle()
+        bundle.SetMetric(metric)
+        bundle.SetScene(scene)
+        bundle.SetWidth(WIDTH)
+        bundle.SetHeight(HEIGHT)
+        bundle.SetSubgridResolution(9)
+        bundle.Update()
+        cd = bundle.GetOutput().GetCellData()
+        hit = vtk_to_numpy(cd.GetArray("Hit")).astype(bool)
+        positions = vtk_to_numpy(cd.GetArray("HitPosition"))[hit]
+        # The middle of the 9 x 9 sub-grid looks at the sphere; the corners miss it.
+        self.assertGreater(hit.sum(), 4)
+        self.assertLess(hit.sum(), 81)
+        self.assertLess(np.max(np.abs(np.linalg.norm(positions, axis=1) - 1.0)), 2e-3)
+
+        outside = riemann.vtkRiemannSceneSource()
+        outside.SetScene(scene)
+        outside.Update()
+        self.assertEqual(outside.GetOutput().GetNumberOfPoints(), sphere.GetOutput().GetNumberOfPoints())
+        self.assertEqual(outside.GetOutput().GetNumberOfPolys(), sphere.GetOutput().GetNumberOfPolys())
+        self.assertIsNotNone(outside.GetOutput().GetPointData().GetArray("Colors"))
 
     def test_no_metric_gives_empty_output(self):
         tracer = riemann.vtkRiemannCPURayTracer()
