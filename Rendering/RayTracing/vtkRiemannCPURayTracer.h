@@ -135,9 +135,10 @@ public:
   /**
    * Send a tile's segments to Embree as one stream (rtcIntersect1M) rather
    * than one rtcIntersect1 each. Default off: on this project's machine the
-   * stream was slower (1920x1080, 1M triangles: 6.1e6 against 6.7e6 rays x
-   * steps / s; RiemannCpuRayTraceBenchmark), the segments of one step being
-   * short and scattered after a few bends.
+   * stream did not pay (1920x1080, 1M triangles: 6.42e6 against 6.43e6 rays x
+   * steps / s on a quiet machine, 6.1e6 against 6.7e6 under load;
+   * RiemannCpuRayTraceBenchmark), the segments of one step being short and
+   * scattered after a few bends.
    */
   vtkSetMacro(UseRayStreams, bool);
   vtkGetMacro(UseRayStreams, bool);
