@@ -116,11 +116,15 @@ void RunExpmap(const ExpmapArguments& args)
   {
     throw Failure("--step: must be positive and at most --length", 2);
   }
-  if (args.Length / args.Step * static_cast<double>(args.Directions) > 1e9)
+  if (args.Length / args.Step * static_cast<double>(args.Directions) >
+    vtkRiemannExponentialMap::MaximumNumberOfSamples)
   {
-    throw Failure("--step: more than 1e9 points in all (--directions x --length / --step); "
-                  "the bundle would not fit in memory",
-      2);
+    std::ostringstream message;
+    message << "--directions x --length / --step = "
+            << args.Length / args.Step * static_cast<double>(args.Directions)
+            << " samples, more than " << vtkRiemannExponentialMap::MaximumNumberOfSamples
+            << " (about 8 GiB of memory): use fewer directions or a longer step";
+    throw Failure(message.str(), 2);
   }
   double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);

@@ -127,6 +127,16 @@ int vtkRiemannExponentialMap::RequestData(
       return 1;
     }
   }
+  const double samples = static_cast<double>(this->NumberOfDirections) *
+    (this->MaximumPropagation / this->IntegrationStep + 1.0);
+  if (samples > MaximumNumberOfSamples)
+  {
+    vtkErrorMacro(<< "Too many samples: " << this->NumberOfDirections << " directions x "
+                  << this->MaximumPropagation / this->IntegrationStep
+                  << " steps is more than " << MaximumNumberOfSamples
+                  << " (about 8 GiB); use fewer directions or a longer IntegrationStep.");
+    return 1;
+  }
   vtkNew<vtkPolyData> grid;
   std::string message;
   if (!vtkRiemannDirectionGrid::Build(

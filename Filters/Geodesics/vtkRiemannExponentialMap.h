@@ -134,6 +134,11 @@ public:
   /// Include the metric's modification time.
   vtkMTimeType GetMTime() override;
 
+  /// Largest NumberOfDirections x MaximumPropagation / IntegrationStep
+  /// accepted (each sample holds the Jacobi fields, about 280 bytes with its
+  /// output: 3e7 samples are about 8 GiB); beyond, an error.
+  static constexpr double MaximumNumberOfSamples = 3e7;
+
 protected:
   vtkRiemannExponentialMap();
   ~vtkRiemannExponentialMap() override;

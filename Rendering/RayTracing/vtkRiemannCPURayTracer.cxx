@@ -177,6 +177,17 @@ int vtkRiemannCPURayTracer::RequestData(
 
   const int width = this->Width;
   const int height = this->Height;
+  // About 90 bytes per pixel are held at once (the tracer's results and the
+  // output arrays): refuse what would exhaust memory rather than crash.
+  if (static_cast<double>(width) * height > MaximumNumberOfPixels)
+  {
+    vtkErrorMacro(<< "The image is too large: " << width << " x " << height << " = "
+                  << static_cast<double>(width) * height / 1e6 << " million pixels, more than "
+                  << MaximumNumberOfPixels / 1e6 << " million (about "
+                  << 90.0 * MaximumNumberOfPixels / (1 << 30)
+                  << " GiB of memory); render a smaller image.");
+    return 1;
+  }
   riemann::RaySettings rays;
   int projection = this->Projection;
   if (this->UseSceneSettings)

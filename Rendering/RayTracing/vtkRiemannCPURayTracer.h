@@ -105,6 +105,10 @@ public:
   int GetNumberOfAddedMeshes() const;
   ///@}
 
+  /// Largest Width x Height accepted (64 Mi pixels, e.g. 8192 x 8192: about
+  /// 6 GiB of results); larger images are refused with an error.
+  static constexpr double MaximumNumberOfPixels = 67108864.0;
+
   ///@{
   /// Image size in pixels (default 640 x 480).
   vtkSetClampMacro(Width, int, 1, 65536);

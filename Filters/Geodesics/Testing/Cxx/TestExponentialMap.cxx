@@ -284,10 +284,17 @@ TEST(ExponentialMap, ErrorsGiveEmptyOutputs)
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
   EXPECT_EQ(expmap->GetOutput(1)->GetNumberOfPoints(), 0);
   expmap->RemoveAllRadii();
+  expmap->SetNumberOfDirections(1000000);
+  expmap->SetMaximumPropagation(100.0);
+  expmap->Update(); // 1e10 samples: refused before tracing
+  EXPECT_EQ(counter.Errors, 3);
+  EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
+  expmap->SetNumberOfDirections(100);
+  expmap->SetMaximumPropagation(5.0);
   expmap->SetConeAngle(20.0);
   expmap->SetConeAxis(0.0, 0.0, 0.0);
   expmap->Update(); // zero axis
-  EXPECT_EQ(counter.Errors, 3);
+  EXPECT_EQ(counter.Errors, 4);
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
 }
 

@@ -122,6 +122,20 @@ class CPURayTracerTests(unittest.TestCase):
         tracer.Update()
         self.assertEqual(tracer.GetOutput().GetNumberOfPoints(), 0)
 
+    def test_absurd_size_is_refused_before_allocating(self):
+        metric = riemann.vtkRiemannMetric()
+        self.assertTrue(metric.SetDefinition('{"type": "euclidean"}'), metric.GetLastError())
+        tracer = riemann.vtkRiemannCPURayTracer()
+        tracer.SetMetric(metric)
+        tracer.SetWidth(65536)
+        tracer.SetHeight(4096)  # 268 million pixels: about 24 GiB
+        errors = []
+        # An observer takes the error instead of the output window.
+        tracer.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+        tracer.Update()
+        self.assertEqual(len(errors), 1)
+        self.assertEqual(tracer.GetOutput().GetNumberOfPoints(), 0)
+
 
 if __name__ == "__main__":
     unittest.main()
