@@ -12,7 +12,7 @@
 int main(int argc, char** argv)
 {
   CLI::App app{ "riemann: design Riemannian metrics on R^3 and compute with them.\n"
-                "Metrics are JSON files (see Data/metrics/ and ARCHITECTURE.md)." };
+                "Metrics are JSON files (see Data/metrics/, README.md and Common/Metric/MetricDefinition.h)." };
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("riemann 0.1.0"));
   riemann::cli::RegisterTraceCommand(app);
