@@ -14,6 +14,7 @@
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -144,6 +145,37 @@ Image SideBySide(const Image& left, const Image& right)
   return both;
 }
 
+/// Bounds of the outside view's geometry without its planes (drawn as large
+/// patches, they would shrink everything else to a speck), unless the scene
+/// has nothing but planes.
+const double* FramedBounds(vtkPolyData* geometry, vtkRiemannScene* scene)
+{
+  static thread_local double bounds[6];
+  const riemann::Scene description = scene->GetScene();
+  vtkDataArray* objects = geometry->GetCellData()->GetArray("ObjectIndex");
+  vtkBoundingBox box;
+  for (vtkIdType cell = 0; objects && cell < geometry->GetNumberOfCells(); ++cell)
+  {
+    const int object = static_cast<int>(objects->GetTuple1(cell));
+    if (object >= 0 && object < static_cast<int>(description.Objects.size()) &&
+      description.Objects[object].Type != riemann::ObjectType::Plane)
+    {
+      double cellBounds[6];
+      geometry->GetCellBounds(cell, cellBounds);
+      box.AddBounds(cellBounds);
+    }
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(bounds);
+  }
+  else
+  {
+    geometry->GetBounds(bounds);
+  }
+  return bounds;
+}
+
 /// The outside view: the scene as ordinary geometry, the observer, and the
 /// bundle of its curved rays coloured by where they end.
 Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* inside,
@@ -205,7 +237,7 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   vtkNew<vtkTubeFilter> tubes;
   tubes->SetInputData(rayLines);
   geometry->Update();
-  const double* bounds = geometry->GetOutput()->GetBounds();
+  const double* bounds = FramedBounds(geometry->GetOutput(), scene);
   const double size =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
   tubes->SetRadius(0.003 * size);

@@ -3,8 +3,10 @@
 #include "RiemannScene.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlaneSource.h"
@@ -42,6 +44,16 @@ vtkMTimeType vtkRiemannSceneSource::GetMTime()
 
 namespace
 {
+/// Cell data `ObjectIndex`: which scene object (index in "objects") a cell belongs to.
+void AddObjectIndex(vtkPolyData* piece, int object)
+{
+  vtkNew<vtkIntArray> index;
+  index->SetName("ObjectIndex");
+  index->SetNumberOfTuples(piece->GetNumberOfCells());
+  index->FillValue(object);
+  piece->GetCellData()->AddArray(index);
+}
+
 /// Triangulate `piece`, colour its vertices by the object's material, append.
 void AddPiece(
   vtkAppendPolyData* append, vtkPolyDataAlgorithm* source, const riemann::Scene& scene, int object)
@@ -71,6 +83,7 @@ void AddPiece(
     }
   }
   piece->GetPointData()->SetScalars(colors);
+  AddObjectIndex(piece, object);
   append->AddInputData(piece);
 }
 }
@@ -126,6 +139,7 @@ void AddMesh(vtkAppendPolyData* append, const riemann::TriangleMesh& mesh,
   piece->SetPoints(points);
   piece->SetPolys(triangles);
   piece->GetPointData()->SetScalars(colors);
+  AddObjectIndex(piece, object);
   append->AddInputData(piece);
 }
 }

@@ -8,7 +8,8 @@
  * data `Colors` (RGB, unsigned
  * char) from each object's material at the vertex (the position
  * pseudo-colour, solid, or checker), so the same colours as in the inside
- * view identify where rays end.
+ * view identify where rays end, and cell data `ObjectIndex` (the object's
+ * index in the scene's "objects", to pick or threshold one object).
  */
 #ifndef vtkRiemannSceneSource_h
 #define vtkRiemannSceneSource_h
