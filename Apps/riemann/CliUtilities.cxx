@@ -1,7 +1,10 @@
 #include "CliUtilities.h"
 
+#include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkPolyData.h"
 #include "vtkRiemannMetric.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
 #include <cctype>
@@ -81,6 +84,31 @@ void WriteAtomically(const std::string& path, const std::function<bool(const std
     std::remove(temporary.c_str());
     throw Failure("could not write " + path + " (check that its folder exists and is writable)");
   }
+}
+
+bool WritePolyDataFile(vtkPolyData* data, const std::string& path)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  return writer->Write() == 1 && writer->GetErrorCode() == 0;
+}
+
+void WritePolyDataAtomically(vtkPolyData* data, const std::string& path)
+{
+  WriteAtomically(
+    path, [data](const std::string& temporary) { return WritePolyDataFile(data, temporary); });
+}
+
+IntegratorType ParseIntegratorOption(const std::string& name)
+{
+  IntegratorType type;
+  if (!ParseIntegratorName(name, type))
+  {
+    throw Failure("--integrator: \"" + name + "\": expected euler, rk4 or dp45", 2);
+  }
+  return type;
 }
 
 void ErrorCollector::Execute(vtkObject* caller, unsigned long, void* data)

@@ -3,6 +3,8 @@
 #ifndef RiemannCliUtilities_h
 #define RiemannCliUtilities_h
 
+#include "RungeKutta.h" // For IntegratorType
+
 #include "vtkCommand.h"
 #include "vtkSmartPointer.h"
 
@@ -12,6 +14,7 @@
 #include <vector>
 
 class vtkObject;
+class vtkPolyData;
 class vtkRiemannMetric;
 
 namespace riemann
@@ -45,6 +48,15 @@ vtkSmartPointer<vtkRiemannMetric> LoadMetric(const std::string& path);
  * Throws Failure (and removes the temporary file) otherwise.
  */
 void WriteAtomically(const std::string& path, const std::function<bool(const std::string&)>& write);
+
+/// Write `data` as a .vtp file (appended binary); false on failure.
+bool WritePolyDataFile(vtkPolyData* data, const std::string& path);
+
+/// WritePolyDataFile through WriteAtomically: the file whole or not at all.
+void WritePolyDataAtomically(vtkPolyData* data, const std::string& path);
+
+/// "euler", "rk4" or "dp45"; throws Failure (status 2) naming --integrator.
+IntegratorType ParseIntegratorOption(const std::string& name);
 
 /**
  * Collects ErrorEvent messages of the observed VTK objects instead of

@@ -4,7 +4,6 @@
 // --surface, the conjugate locus as surfaces over the direction grid (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
-#include "Integrators.h"
 #include "ProgressBar.h"
 
 #include "vtkDataArray.h"
@@ -13,7 +12,6 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannMetric.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -107,11 +105,7 @@ void RunConjugate(const ConjugateArguments& args)
   double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);
-  IntegratorType integrator;
-  if (!ParseIntegratorName(args.Integrator, integrator))
-  {
-    throw Failure("--integrator: \"" + args.Integrator + "\": expected euler, rk4 or dp45", 2);
-  }
+  const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannConjugateLocus> locus;
@@ -141,24 +135,12 @@ void RunConjugate(const ConjugateArguments& args)
       {
         return WriteCsv(points, temporary);
       }
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetFileName(temporary.c_str());
-      writer->SetInputData(points);
-      writer->SetDataModeToAppended();
-      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+      return WritePolyDataFile(points, temporary);
     });
 
   if (!args.Surface.empty())
   {
-    WriteAtomically(args.Surface,
-      [&](const std::string& temporary)
-      {
-        vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetFileName(temporary.c_str());
-        writer->SetInputData(locus->GetOutput(1));
-        writer->SetDataModeToAppended();
-        return writer->Write() == 1 && writer->GetErrorCode() == 0;
-      });
+    WritePolyDataAtomically(locus->GetOutput(1), args.Surface);
   }
 
   std::set<long long> withPoints;

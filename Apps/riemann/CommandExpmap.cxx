@@ -3,14 +3,12 @@
 // Jacobian) and, with --radii and --wavefronts, the geodesic spheres (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
-#include "Integrators.h"
 #include "ProgressBar.h"
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannMetric.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -75,19 +73,6 @@ std::vector<double> ParseRadii(const std::string& text)
   return radii;
 }
 
-void WritePolyData(vtkPolyData* data, const std::string& path)
-{
-  WriteAtomically(path,
-    [&](const std::string& temporary)
-    {
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetFileName(temporary.c_str());
-      writer->SetInputData(data);
-      writer->SetDataModeToAppended();
-      return writer->Write() == 1 && writer->GetErrorCode() == 0;
-    });
-}
-
 void RunExpmap(const ExpmapArguments& args)
 {
   if (Extension(args.Output) != "vtp")
@@ -129,11 +114,7 @@ void RunExpmap(const ExpmapArguments& args)
   double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);
-  IntegratorType integrator;
-  if (!ParseIntegratorName(args.Integrator, integrator))
-  {
-    throw Failure("--integrator: \"" + args.Integrator + "\": expected euler, rk4 or dp45", 2);
-  }
+  const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
   const std::vector<double> radii =
     args.Radii.empty() ? std::vector<double>() : ParseRadii(args.Radii);
   for (double r : radii)
@@ -169,10 +150,10 @@ void RunExpmap(const ExpmapArguments& args)
   progress->Finish();
   errors->ThrowIfAny("exponential map failed:");
 
-  WritePolyData(expmap->GetOutput(0), args.Output);
+  WritePolyDataAtomically(expmap->GetOutput(0), args.Output);
   if (!args.Wavefronts.empty())
   {
-    WritePolyData(expmap->GetOutput(1), args.Wavefronts);
+    WritePolyDataAtomically(expmap->GetOutput(1), args.Wavefronts);
   }
   std::cerr << "riemann expmap: " << expmap->GetOutput(0)->GetNumberOfLines()
             << " geodesic(s) up to arc length " << args.Length << " -> " << args.Output;

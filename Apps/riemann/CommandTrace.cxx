@@ -16,7 +16,6 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannGeodesicTracer.h"
 #include "vtkRiemannMetric.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -246,11 +245,7 @@ void RunTrace(const TraceArguments& args)
       {
         return WriteCsv(lines, temporary);
       }
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetFileName(temporary.c_str());
-      writer->SetInputData(lines);
-      writer->SetDataModeToAppended();
-      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+      return WritePolyDataFile(lines, temporary);
     });
 
   // A one-line summary on stderr: how many lines, and why they stopped.

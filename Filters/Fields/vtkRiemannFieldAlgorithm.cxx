@@ -7,7 +7,7 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkRiemannMetric.h"
-#include "vtkSMPTools.h"
+#include "vtkRiemannParallelBatches.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
@@ -207,22 +207,7 @@ int vtkRiemannFieldAlgorithm::RequestData(
 bool vtkRiemannFieldAlgorithm::ForEachPointInBatches(
   vtkIdType count, const std::function<void(vtkIdType, vtkIdType)>& work)
 {
-  // VTK events (progress) must not fire from worker threads: batches here.
-  const vtkIdType batch = std::max<vtkIdType>(1024, count / 50);
-  vtkIdType done = 0;
-  this->UpdateProgress(0.0);
-  while (done < count)
-  {
-    if (this->GetAbortExecute())
-    {
-      return false;
-    }
-    const vtkIdType end = std::min(count, done + batch);
-    vtkSMPTools::For(done, end, [&](vtkIdType first, vtkIdType last) { work(first, last); });
-    done = end;
-    this->UpdateProgress(static_cast<double>(done) / count);
-  }
-  return !this->GetAbortExecute();
+  return vtkRiemannForInBatches(this, count, 1024, work) == count && !this->GetAbortExecute();
 }
 
 void vtkRiemannFieldAlgorithm::PrintSelf(ostream& os, vtkIndent indent)

@@ -7,7 +7,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -17,7 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannMetric.h"
-#include "vtkSMPTools.h"
+#include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,30 +93,20 @@ int vtkRiemannConjugateLocus::RequestData(
   options.MaximumSteps =
     static_cast<long long>(std::ceil(this->MaximumPropagation / this->IntegrationStep)) + 1000000;
 
-  // Search in parallel, in batches so that progress and abort are handled on
-  // this thread (VTK events must not fire from worker threads).
+  // Search in parallel (progress and abort between batches).
   const vtkIdType count = static_cast<vtkIdType>(directions.size());
   std::vector<std::vector<riemann::ConjugatePoint>> found(directions.size());
-  const vtkIdType batch = std::max<vtkIdType>(64, count / 50);
   const double tolerance = this->Tolerance;
   const int maximumCount = this->MaximumNumberOfConjugatePoints;
-  vtkIdType done = 0;
-  this->UpdateProgress(0.0);
-  while (done < count && !this->GetAbortExecute())
-  {
-    const vtkIdType end = std::min(count, done + batch);
-    vtkSMPTools::For(done, end,
-      [&](vtkIdType first, vtkIdType last)
+  const vtkIdType done = vtkRiemannForInBatches(this, count, 64,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
       {
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          found[i] = riemann::FindConjugatePoints(
-            *metric, observer, directions[i], options, tolerance, maximumCount);
-        }
-      });
-    done = end;
-    this->UpdateProgress(static_cast<double>(done) / count);
-  }
+        found[i] = riemann::FindConjugatePoints(
+          *metric, observer, directions[i], options, tolerance, maximumCount);
+      }
+    });
 
   vtkIdType pointCount = 0;
   for (vtkIdType i = 0; i < done; ++i)
@@ -185,8 +174,6 @@ void vtkRiemannConjugateLocus::BuildLocusSurfaces(vtkPolyData* grid,
   directionId->SetName("DirectionId");
   cellIndex->SetName("ConjugateIndex");
   std::vector<vtkIdType> local(found.size());
-  vtkCellArray* gridTriangles = grid->GetPolys();
-  vtkNew<vtkIdList> cell;
   for (size_t k = 0; k < deepest; ++k)
   {
     for (size_t i = 0; i < found.size(); ++i)
@@ -202,15 +189,10 @@ void vtkRiemannConjugateLocus::BuildLocusSurfaces(vtkPolyData* grid,
         directionId->InsertNextValue(static_cast<int>(i));
       }
     }
-    for (gridTriangles->InitTraversal(); gridTriangles->GetNextCell(cell);)
+    const vtkIdType appended = vtkRiemannDirectionGrid::AppendTriangles(grid, local, triangles);
+    for (vtkIdType t = 0; t < appended; ++t)
     {
-      const vtkIdType t[3] = { local[cell->GetId(0)], local[cell->GetId(1)],
-        local[cell->GetId(2)] };
-      if (t[0] >= 0 && t[1] >= 0 && t[2] >= 0)
-      {
-        triangles->InsertNextCell(3, t);
-        cellIndex->InsertNextValue(static_cast<int>(k) + 1);
-      }
+      cellIndex->InsertNextValue(static_cast<int>(k) + 1);
     }
   }
   locus->SetPoints(points);

@@ -186,6 +186,25 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
   return true;
 }
 
+vtkIdType vtkRiemannDirectionGrid::AppendTriangles(
+  vtkPolyData* grid, const std::vector<vtkIdType>& surfacePointIds, vtkCellArray* triangles)
+{
+  vtkIdType appended = 0;
+  vtkCellArray* gridTriangles = grid->GetPolys();
+  vtkNew<vtkIdList> cell;
+  for (gridTriangles->InitTraversal(); gridTriangles->GetNextCell(cell);)
+  {
+    const vtkIdType t[3] = { surfacePointIds[cell->GetId(0)], surfacePointIds[cell->GetId(1)],
+      surfacePointIds[cell->GetId(2)] };
+    if (t[0] >= 0 && t[1] >= 0 && t[2] >= 0)
+    {
+      triangles->InsertNextCell(3, t);
+      ++appended;
+    }
+  }
+  return appended;
+}
+
 int vtkRiemannDirectionGrid::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {

@@ -30,6 +30,9 @@
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <string> // For Build
+#include <vector> // For AppendTriangles
+
+class vtkCellArray;
 
 class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannDirectionGrid : public vtkPolyDataAlgorithm
 {
@@ -61,6 +64,15 @@ public:
    */
   VTK_WRAPEXCLUDE static bool Build(int numberOfDirections, const double axis[3], double coneAngle,
     vtkPolyData* grid, std::string& message);
+
+  /**
+   * A surface over the grid: for each triangle of `grid` whose three
+   * directions have a point in the surface (surfacePointIds[direction] >= 0),
+   * append the triangle of those points to `triangles`. Returns how many
+   * were appended.
+   */
+  VTK_WRAPEXCLUDE static vtkIdType AppendTriangles(
+    vtkPolyData* grid, const std::vector<vtkIdType>& surfacePointIds, vtkCellArray* triangles);
 
 protected:
   vtkRiemannDirectionGrid();

@@ -5,7 +5,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -16,7 +15,7 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannMetric.h"
-#include "vtkSMPTools.h"
+#include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
 #include <cmath>
@@ -157,29 +156,20 @@ int vtkRiemannExponentialMap::RequestData(
   options.MaximumLength = this->MaximumPropagation;
   options.MaximumSteps = this->MaximumNumberOfSteps;
 
-  // Trace in parallel, in batches: progress and abort on this thread.
+  // Trace in parallel (progress and abort between batches).
   const vtkIdType count = grid->GetNumberOfPoints();
   std::vector<riemann::JacobiTrace> traces(static_cast<size_t>(count));
-  const vtkIdType batch = std::max<vtkIdType>(64, count / 50);
-  vtkIdType done = 0;
-  this->UpdateProgress(0.0);
-  while (done < count && !this->GetAbortExecute())
-  {
-    const vtkIdType end = std::min(count, done + batch);
-    vtkSMPTools::For(done, end,
-      [&](vtkIdType first, vtkIdType last)
+  const vtkIdType done = vtkRiemannForInBatches(this, count, 64,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
       {
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          double d[3];
-          grid->GetPoint(i, d);
-          riemann::TraceJacobiFields(*metric, observer, riemann::Vec3(d[0], d[1], d[2]), options,
-            traces[i], false, this->Radii);
-        }
-      });
-    done = end;
-    this->UpdateProgress(static_cast<double>(done) / count);
-  }
+        double d[3];
+        grid->GetPoint(i, d);
+        riemann::TraceJacobiFields(*metric, observer, riemann::Vec3(d[0], d[1], d[2]), options,
+          traces[i], false, this->Radii);
+      }
+    });
   if (done < count)
   {
     return 1; // aborted: empty outputs
@@ -253,8 +243,6 @@ int vtkRiemannExponentialMap::RequestData(
   cellRadius->SetName("Radius");
   vtkNew<vtkIntArray> sphereDirection;
   sphereDirection->SetName("DirectionId");
-  vtkCellArray* gridTriangles = grid->GetPolys();
-  vtkNew<vtkIdList> cell;
   std::vector<vtkIdType> local(static_cast<size_t>(count));
   for (double r : this->Radii)
   {
@@ -278,15 +266,10 @@ int vtkRiemannExponentialMap::RequestData(
         sphereDirection->InsertNextValue(static_cast<int>(i));
       }
     }
-    for (gridTriangles->InitTraversal(); gridTriangles->GetNextCell(cell);)
+    const vtkIdType appended = vtkRiemannDirectionGrid::AppendTriangles(grid, local, triangles);
+    for (vtkIdType t = 0; t < appended; ++t)
     {
-      const vtkIdType t[3] = { local[cell->GetId(0)], local[cell->GetId(1)],
-        local[cell->GetId(2)] };
-      if (t[0] >= 0 && t[1] >= 0 && t[2] >= 0)
-      {
-        triangles->InsertNextCell(3, t);
-        cellRadius->InsertNextValue(r);
-      }
+      cellRadius->InsertNextValue(r);
     }
   }
   wavefronts->SetPoints(spherePoints);

@@ -17,7 +17,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannMetric.h"
-#include "vtkSMPTools.h"
+#include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
 #include <array>
@@ -181,45 +181,35 @@ int vtkRiemannGeodesicTracer::RequestData(
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
 
-  // Trace in parallel, in batches so that progress and abort are handled on
-  // this thread (VTK events must not fire from worker threads).
+  // Trace in parallel (progress and abort between batches).
   std::vector<riemann::GeodesicPath> paths(seeds.size());
   // Per path point: determinant and the two singular values (when asked).
   const bool jacobian = this->ComputeTransverseJacobian;
   std::vector<std::vector<std::array<double, 3>>> jacobians(jacobian ? seeds.size() : 0);
   const vtkIdType count = static_cast<vtkIdType>(seeds.size());
-  const vtkIdType batch = std::max<vtkIdType>(256, count / 50);
-  vtkIdType traced = 0;
-  this->UpdateProgress(0.0);
-  while (traced < count && !this->GetAbortExecute())
-  {
-    const vtkIdType end = std::min(count, traced + batch);
-    vtkSMPTools::For(traced, end,
-      [&](vtkIdType first, vtkIdType last)
+  const vtkIdType traced = vtkRiemannForInBatches(this, count, 256,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
       {
-        for (vtkIdType i = first; i < last; ++i)
+        const Seed& seed = seeds[i];
+        riemann::Vec3 velocity;
+        if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
         {
-          const Seed& seed = seeds[i];
-          riemann::Vec3 velocity;
-          if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
-          {
-            paths[i].Clear();
-            continue;
-          }
-          if (jacobian)
-          {
-            TraceWithJacobian(*metric, seed, options, paths[i], jacobians[i]);
-          }
-          else
-          {
-            riemann::TraceGeodesic(
-              *metric, seed.Position, velocity, options, paths[i], seed.Backward);
-          }
+          paths[i].Clear();
+          continue;
         }
-      });
-    traced = end;
-    this->UpdateProgress(static_cast<double>(traced) / count);
-  }
+        if (jacobian)
+        {
+          TraceWithJacobian(*metric, seed, options, paths[i], jacobians[i]);
+        }
+        else
+        {
+          riemann::TraceGeodesic(
+            *metric, seed.Position, velocity, options, paths[i], seed.Backward);
+        }
+      }
+    });
 
   // Assemble the polylines in seed order. A path of one point (a seed outside
   // DomainBounds, a zero length or step budget) makes no line; say so.

@@ -5,6 +5,7 @@
 #include "RiemannScene.h"
 #include "RiemannShading.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannParallelBatches.h"
 #include "vtkRiemannScene.h"
 
 #include "vtkCamera.h"
@@ -17,7 +18,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTimerLog.h"
@@ -266,26 +266,19 @@ int vtkRiemannCPURayTracer::RequestData(
   std::atomic<long long> steps(0);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  const vtkIdType batch = std::max<vtkIdType>(64, tiles / 50);
-  this->UpdateProgress(0.0);
-  for (vtkIdType first = 0; first < tiles && !this->GetAbortExecute(); first += batch)
-  {
-    const vtkIdType last = std::min(tiles, first + batch);
-    vtkSMPTools::For(first, last,
-      [&](vtkIdType begin, vtkIdType end)
+  vtkRiemannForInBatches(this, tiles, 64,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      long long local = 0;
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        long long local = 0;
-        for (vtkIdType t = begin; t < end; ++t)
-        {
-          const int x0 = static_cast<int>(t % tilesX) * tile;
-          const int y0 = static_cast<int>(t / tilesX) * tile;
-          local += tracer->RenderTile(
-            x0, y0, std::min(width, x0 + tile), std::min(height, y0 + tile), pixels.data());
-        }
-        steps += local;
-      });
-    this->UpdateProgress(static_cast<double>(last) / tiles);
-  }
+        const int x0 = static_cast<int>(t % tilesX) * tile;
+        const int y0 = static_cast<int>(t / tilesX) * tile;
+        local += tracer->RenderTile(
+          x0, y0, std::min(width, x0 + tile), std::min(height, y0 + tile), pixels.data());
+      }
+      steps += local;
+    });
   timer->StopTimer();
   this->TraceTime = timer->GetElapsedTime();
   this->NumberOfIntegrationSteps = steps.load();
