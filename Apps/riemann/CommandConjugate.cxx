@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannMetric.h"
 
@@ -116,9 +117,9 @@ void RunConjugate(const ConjugateArguments& args)
   locus->SetNumberOfDirections(static_cast<int>(args.Directions));
   locus->SetConeAxis(axis);
   locus->SetConeAngle(args.ConeAngle);
-  locus->SetMaximumPropagation(args.Length);
-  locus->SetIntegratorType(static_cast<int>(integrator));
-  locus->SetIntegrationStep(args.Step);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
+  locus->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
+  locus->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
   locus->SetTolerance(args.Tolerance);
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
   vtkNew<ProgressBar> progress;

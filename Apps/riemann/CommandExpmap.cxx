@@ -7,6 +7,7 @@
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannMetric.h"
 
@@ -136,10 +137,10 @@ void RunExpmap(const ExpmapArguments& args)
   expmap->SetNumberOfDirections(static_cast<int>(args.Directions));
   expmap->SetConeAxis(axis);
   expmap->SetConeAngle(args.ConeAngle);
-  expmap->SetMaximumPropagation(args.Length);
-  expmap->SetIntegratorType(static_cast<int>(integrator));
-  expmap->SetIntegrationStep(args.Step);
-  expmap->SetMaximumError(args.Tolerance);
+  expmap->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
+  expmap->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
+  expmap->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
+  expmap->GetIntegrationSettings()->SetMaximumError(args.Tolerance);
   for (double r : radii)
   {
     expmap->AddRadius(r);

@@ -26,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannCPURayTracer.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayBundle.h"
@@ -191,11 +192,11 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   bundle->SetSubgridResolution(args.Bundle);
   bundle->SetProjection(pass->GetProjection());
   bundle->SetUseSceneSettings(pass->GetUseSceneSettings());
-  bundle->SetIntegratorType(pass->GetIntegratorType());
-  bundle->SetStepSize(pass->GetStepSize());
-  bundle->SetMaximumNumberOfSteps(pass->GetMaximumNumberOfSteps());
-  bundle->SetMaximumLength(pass->GetMaximumLength());
-  bundle->SetTolerance(pass->GetTolerance());
+  bundle->GetIntegrationSettings()->SetIntegratorType(pass->GetIntegrationSettings()->GetIntegratorType());
+  bundle->GetIntegrationSettings()->SetInitialIntegrationStep(pass->GetIntegrationSettings()->GetInitialIntegrationStep());
+  bundle->GetIntegrationSettings()->SetMaximumNumberOfSteps(pass->GetIntegrationSettings()->GetMaximumNumberOfSteps());
+  bundle->GetIntegrationSettings()->SetMaximumPropagation(pass->GetIntegrationSettings()->GetMaximumPropagation());
+  bundle->GetIntegrationSettings()->SetMaximumError(pass->GetIntegrationSettings()->GetMaximumError());
   bundle->Update();
   errors->ThrowIfAny("tracing the ray bundle failed:");
 
@@ -378,17 +379,17 @@ void RunRender(const RenderArguments& args)
     // Start from the scene's settings and replace what was given.
     pass->SetUseSceneSettings(false);
     static const std::map<std::string, int> integrators = {
-      { "euler", vtkRiemannRayTracePass::EULER }, { "rk4", vtkRiemannRayTracePass::RUNGE_KUTTA4 },
-      { "adaptive", vtkRiemannRayTracePass::ADAPTIVE }
+      { "euler", vtkRiemannIntegrationSettings::EULER }, { "rk4", vtkRiemannIntegrationSettings::RUNGE_KUTTA4 },
+      { "adaptive", vtkRiemannIntegrationSettings::DORMAND_PRINCE45 }
     };
-    pass->SetIntegratorType(args.Integrator.empty() ? static_cast<int>(description.Rays.Integrator)
+    pass->GetIntegrationSettings()->SetIntegratorType(args.Integrator.empty() ? static_cast<int>(description.Rays.Integrator)
                                                     : integrators.at(args.Integrator));
-    pass->SetStepSize(args.Step > 0 ? args.Step : description.Rays.Step);
-    pass->SetMaximumNumberOfSteps(
+    pass->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step > 0 ? args.Step : description.Rays.Step);
+    pass->GetIntegrationSettings()->SetMaximumNumberOfSteps(
       args.MaximumSteps > 0 ? args.MaximumSteps : description.Rays.MaximumSteps);
-    pass->SetMaximumLength(
+    pass->GetIntegrationSettings()->SetMaximumPropagation(
       args.MaximumLength > 0 ? args.MaximumLength : description.Rays.MaximumLength);
-    pass->SetTolerance(description.Rays.Tolerance);
+    pass->GetIntegrationSettings()->SetMaximumError(description.Rays.Tolerance);
   }
   if (args.Equirectangular)
   {
@@ -422,11 +423,11 @@ void RunRender(const RenderArguments& args)
     tracer->SetSamplesPerPixel(args.Samples);
     tracer->SetComputeHitError(args.HitError || !args.HitErrorImage.empty());
     tracer->SetUseSceneSettings(pass->GetUseSceneSettings());
-    tracer->SetIntegratorType(pass->GetIntegratorType());
-    tracer->SetStepSize(pass->GetStepSize());
-    tracer->SetMaximumNumberOfSteps(pass->GetMaximumNumberOfSteps());
-    tracer->SetMaximumLength(pass->GetMaximumLength());
-    tracer->SetTolerance(pass->GetTolerance());
+    tracer->GetIntegrationSettings()->SetIntegratorType(pass->GetIntegrationSettings()->GetIntegratorType());
+    tracer->GetIntegrationSettings()->SetInitialIntegrationStep(pass->GetIntegrationSettings()->GetInitialIntegrationStep());
+    tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(pass->GetIntegrationSettings()->GetMaximumNumberOfSteps());
+    tracer->GetIntegrationSettings()->SetMaximumPropagation(pass->GetIntegrationSettings()->GetMaximumPropagation());
+    tracer->GetIntegrationSettings()->SetMaximumError(pass->GetIntegrationSettings()->GetMaximumError());
     tracer->SetProjection(pass->GetProjection());
     // A bar where someone watches (a terminal) or the wait is long; tests stay quiet.
     const double rays = static_cast<double>(args.Width) * args.Height * args.Samples;

@@ -14,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannGeodesicTracer.h"
 #include "vtkRiemannMetric.h"
 
@@ -194,8 +195,8 @@ void RunTrace(const TraceArguments& args)
     throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
   }
   static const std::map<std::string, int> integrators = {
-    { "euler", vtkRiemannGeodesicTracer::EULER }, { "rk4", vtkRiemannGeodesicTracer::RUNGE_KUTTA4 },
-    { "dp45", vtkRiemannGeodesicTracer::DORMAND_PRINCE45 }
+    { "euler", vtkRiemannIntegrationSettings::EULER }, { "rk4", vtkRiemannIntegrationSettings::RUNGE_KUTTA4 },
+    { "dp45", vtkRiemannIntegrationSettings::DORMAND_PRINCE45 }
   };
   static const std::map<std::string, int> propagations = {
     { "forward", vtkRiemannGeodesicTracer::FORWARD },
@@ -207,12 +208,12 @@ void RunTrace(const TraceArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(tracer);
   tracer->SetMetric(metric);
-  tracer->SetIntegratorType(integrators.at(args.Integrator));
+  tracer->GetIntegrationSettings()->SetIntegratorType(integrators.at(args.Integrator));
   tracer->SetIntegrationDirection(propagations.at(args.Propagation));
-  tracer->SetInitialIntegrationStep(args.Step);
-  tracer->SetMaximumError(args.Tolerance);
-  tracer->SetMaximumPropagation(args.Length);
-  tracer->SetMaximumNumberOfSteps(args.MaximumSteps);
+  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
+  tracer->GetIntegrationSettings()->SetMaximumError(args.Tolerance);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
+  tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   if (!args.SeedsFile.empty())
   {

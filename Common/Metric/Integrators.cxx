@@ -21,6 +21,12 @@ const char* IntegratorName(IntegratorType type)
 
 bool ParseIntegratorName(const std::string& name, IntegratorType& type)
 {
+  // The renderers' word before the vocabulary was unified (deprecated).
+  if (name == "adaptive")
+  {
+    type = IntegratorType::DormandPrince45;
+    return true;
+  }
   for (IntegratorType t :
     { IntegratorType::Euler, IntegratorType::RungeKutta4, IntegratorType::DormandPrince45 })
   {

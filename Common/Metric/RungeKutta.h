@@ -31,7 +31,7 @@ enum class IntegratorType : int
 
 /// "euler", "rk4", "dp45".
 RIEMANNCOMMONMETRIC_EXPORT const char* IntegratorName(IntegratorType type);
-/// Parses "euler", "rk4" or "dp45"; false for anything else.
+/// Parses "euler", "rk4" or "dp45" ("adaptive": dp45, deprecated); false for anything else.
 RIEMANNCOMMONMETRIC_EXPORT bool ParseIntegratorName(const std::string& name, IntegratorType& type);
 
 /// The outcome of one step, shared by every state size.

@@ -5,9 +5,11 @@
  * vtkRiemannConjugateLocus (a source: no input) shoots geodesics of a
  * vtkRiemannMetric from the Observer in NumberOfDirections directions and
  * finds, along each, the first MaximumNumberOfConjugatePoints conjugate points
- * up to MaximumPropagation (arc length) with riemann::FindConjugatePoints
- * (JacobiField.h: the Jacobi fields integrated with IntegratorType and
- * IntegrationStep, roots refined to Tolerance).
+ * up to the settings' MaximumPropagation (arc length) with
+ * riemann::FindConjugatePoints (JacobiField.h: the Jacobi fields integrated as
+ * GetIntegrationSettings() says, roots refined to Tolerance). This filter's
+ * default settings: DORMAND_PRINCE45 with MaximumError 1e-9, steps of at most
+ * 0.1 (no step jumps over two conjugate points), MaximumPropagation 10.
  *
  * Directions are those of vtkRiemannDirectionGrid: a Fibonacci lattice over
  * the unit sphere or, when ConeAngle < 180 degrees, over the spherical cap of
@@ -28,34 +30,28 @@
  *
  * Directions are processed in parallel with vtkSMPTools, in batches so that
  * progress is reported and AbortExecute honoured on the calling thread.
- * Without a valid metric the filter reports an error and produces empty output.
+ * Without a valid metric, or with an unusable setting, the filter reports an
+ * error (GetLastError) and produces empty output.
  */
 #ifndef vtkRiemannConjugateLocus_h
 #define vtkRiemannConjugateLocus_h
 
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannGeodesicAlgorithm.h"
 
 #include <vector> // For BuildLocusSurfaces
 
-class vtkRiemannMetric;
 namespace riemann
 {
 struct ConjugatePoint;
 }
 
-class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannConjugateLocus : public vtkPolyDataAlgorithm
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannConjugateLocus : public vtkRiemannGeodesicAlgorithm
 {
 public:
   static vtkRiemannConjugateLocus* New();
-  vtkTypeMacro(vtkRiemannConjugateLocus, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRiemannConjugateLocus, vtkRiemannGeodesicAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The metric (required).
-  virtual void SetMetric(vtkRiemannMetric* metric);
-  vtkGetObjectMacro(Metric, vtkRiemannMetric);
-  ///@}
 
   ///@{
   /// The point whose conjugate locus is sought. Default (0, 0, 0).
@@ -79,52 +75,6 @@ public:
   ///@}
 
   ///@{
-  /// Arc length searched along each geodesic. Default 10.
-  vtkSetClampMacro(MaximumPropagation, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumPropagation, double);
-  ///@}
-
-  /// Integrators (vtkRiemannGeodesicTracer's numbering).
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    DORMAND_PRINCE45 = 2
-  };
-
-  ///@{
-  /// Integrator of the Jacobi fields. Default DORMAND_PRINCE45: on the round
-  /// sphere it finds all of 10,000 double conjugate points to 1e-8 and is
-  /// faster than RK4 at step 0.01, which gives up on 16 of them: they pass near
-  /// the chart's point at infinity, where the fixed step drifts g(v, v) past
-  /// the search's trust limit (Testing/Benchmarks/README.md).
-  vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
-  vtkGetMacro(IntegratorType, int);
-  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
-  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
-  void SetIntegratorTypeToDormandPrince45() { this->SetIntegratorType(DORMAND_PRINCE45); }
-  ///@}
-
-  ///@{
-  /// Step in arc length (fixed, or initial for DP45). Default 0.01.
-  vtkSetClampMacro(IntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(IntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Largest adaptive step (DP45): short enough that no step jumps over two
-  /// conjugate points. Default 0.1.
-  vtkSetClampMacro(MaximumIntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumIntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Per-step error tolerance of DP45. Default 1e-9.
-  vtkSetClampMacro(MaximumError, double, 1e-15, 1.0);
-  vtkGetMacro(MaximumError, double);
-  ///@}
-
-  ///@{
   /// Arc-length tolerance of the root finding. Default 1e-8.
   vtkSetClampMacro(Tolerance, double, 1e-15, 1.0);
   vtkGetMacro(Tolerance, double);
@@ -135,9 +85,6 @@ public:
   vtkSetMacro(MaximumNumberOfConjugatePoints, int);
   vtkGetMacro(MaximumNumberOfConjugatePoints, int);
   ///@}
-
-  /// Include the metric's modification time.
-  vtkMTimeType GetMTime() override;
 
 protected:
   vtkRiemannConjugateLocus();
@@ -150,16 +97,10 @@ protected:
   void BuildLocusSurfaces(vtkPolyData* grid,
     const std::vector<std::vector<riemann::ConjugatePoint>>& found, vtkPolyData* locus);
 
-  vtkRiemannMetric* Metric = nullptr;
   double Observer[3] = { 0.0, 0.0, 0.0 };
   int NumberOfDirections = 100;
   double ConeAxis[3] = { 0.0, 0.0, 1.0 };
   double ConeAngle = 180.0;
-  double MaximumPropagation = 10.0;
-  int IntegratorType = DORMAND_PRINCE45;
-  double IntegrationStep = 0.01;
-  double MaximumIntegrationStep = 0.1;
-  double MaximumError = 1e-9;
   double Tolerance = 1e-8;
   int MaximumNumberOfConjugatePoints = 1;
 

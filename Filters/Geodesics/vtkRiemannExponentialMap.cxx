@@ -14,7 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
-#include "vtkRiemannMetric.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
@@ -23,18 +23,19 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannExponentialMap);
-vtkCxxSetObjectMacro(vtkRiemannExponentialMap, Metric, vtkRiemannMetric);
 
 vtkRiemannExponentialMap::vtkRiemannExponentialMap()
 {
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(2);
+  // Defaults of this filter: a bundle of moderate length, fine steps.
+  vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
+  settings->SetMaximumPropagation(5.0);
+  settings->SetMaximumIntegrationStep(0.1);
+  settings->SetMaximumNumberOfSteps(100000);
 }
 
-vtkRiemannExponentialMap::~vtkRiemannExponentialMap()
-{
-  this->SetMetric(nullptr);
-}
+vtkRiemannExponentialMap::~vtkRiemannExponentialMap() = default;
 
 void vtkRiemannExponentialMap::AddRadius(double radius)
 {
@@ -54,16 +55,6 @@ void vtkRiemannExponentialMap::RemoveAllRadii()
 double vtkRiemannExponentialMap::GetRadius(int i) const
 {
   return i >= 0 && i < this->GetNumberOfRadii() ? this->Radii[i] : 0.0;
-}
-
-vtkMTimeType vtkRiemannExponentialMap::GetMTime()
-{
-  vtkMTimeType time = this->Superclass::GetMTime();
-  if (this->Metric)
-  {
-    time = std::max(time, this->Metric->GetMTime());
-  }
-  return time;
 }
 
 namespace
@@ -106,10 +97,9 @@ int vtkRiemannExponentialMap::RequestData(
   vtkPolyData* wavefronts = vtkPolyData::GetData(outputVector, 1);
   bundle->Initialize();
   wavefronts->Initialize();
-  if (!this->Metric || !this->Metric->HasDefinition())
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric)
   {
-    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
-                     "definition.");
     return 1;
   }
   const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
@@ -126,14 +116,15 @@ int vtkRiemannExponentialMap::RequestData(
       return 1;
     }
   }
-  const double samples = static_cast<double>(this->NumberOfDirections) *
-    (this->MaximumPropagation / this->IntegrationStep + 1.0);
+  const double stepsPerGeodesic = this->IntegrationSettings->GetMaximumPropagation() /
+    this->IntegrationSettings->GetInitialIntegrationStep();
+  const double samples = static_cast<double>(this->NumberOfDirections) * (stepsPerGeodesic + 1.0);
   if (samples > MaximumNumberOfSamples)
   {
     vtkErrorMacro(<< "Too many samples: " << this->NumberOfDirections << " directions x "
-                  << this->MaximumPropagation / this->IntegrationStep
+                  << stepsPerGeodesic
                   << " steps is more than " << MaximumNumberOfSamples
-                  << " (about 8 GiB); use fewer directions or a longer IntegrationStep.");
+                  << " (about 8 GiB); use fewer directions or a longer InitialIntegrationStep.");
     return 1;
   }
   vtkNew<vtkPolyData> grid;
@@ -144,17 +135,8 @@ int vtkRiemannExponentialMap::RequestData(
     vtkErrorMacro(<< "ConeAxis: " << message << ".");
     return 1;
   }
-  // Hold the metric for the whole computation (SetDefinition may replace it).
-  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
 
-  riemann::GeodesicOptions options;
-  options.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
-  options.Step = this->IntegrationStep;
-  options.MinimumStep = std::min(1e-7, this->MaximumIntegrationStep);
-  options.MaximumStep = this->MaximumIntegrationStep;
-  options.Tolerance = this->MaximumError;
-  options.MaximumLength = this->MaximumPropagation;
-  options.MaximumSteps = this->MaximumNumberOfSteps;
+  const riemann::GeodesicOptions options = this->MakeGeodesicOptions();
 
   // Trace in parallel (progress and abort between batches).
   const vtkIdType count = grid->GetNumberOfPoints();
@@ -246,10 +228,11 @@ int vtkRiemannExponentialMap::RequestData(
   std::vector<vtkIdType> local(static_cast<size_t>(count));
   for (double r : this->Radii)
   {
-    if (r > this->MaximumPropagation)
+    if (r > this->IntegrationSettings->GetMaximumPropagation())
     {
       vtkWarningMacro(<< "Radius " << r << " is beyond MaximumPropagation ("
-                      << this->MaximumPropagation << "): no wavefront there.");
+                      << this->IntegrationSettings->GetMaximumPropagation()
+                      << "): no wavefront there.");
       continue;
     }
     for (vtkIdType i = 0; i < count; ++i)
@@ -285,7 +268,6 @@ int vtkRiemannExponentialMap::RequestData(
 void vtkRiemannExponentialMap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Metric: " << this->Metric << "\n";
   os << indent << "Observer: " << this->Observer[0] << " " << this->Observer[1] << " "
      << this->Observer[2] << "\n";
   os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
@@ -298,10 +280,4 @@ void vtkRiemannExponentialMap::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << r;
   }
   os << "\n";
-  os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
-  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
-  os << indent << "IntegrationStep: " << this->IntegrationStep << "\n";
-  os << indent << "MaximumIntegrationStep: " << this->MaximumIntegrationStep << "\n";
-  os << indent << "MaximumError: " << this->MaximumError << "\n";
-  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
 }

@@ -7,8 +7,9 @@
  * vtkRiemannMetric from Observer over the triangulated direction grid of
  * vtkRiemannDirectionGrid (NumberOfDirections over the unit sphere, or over
  * the cap of half-angle ConeAngle around ConeAxis), each integrated with its
- * two Jacobi fields (riemann::TraceJacobiFields: IntegratorType, step and
- * tolerance as vtkRiemannGeodesicTracer's) up to MaximumPropagation.
+ * two Jacobi fields (riemann::TraceJacobiFields) as GetIntegrationSettings()
+ * says, up to its MaximumPropagation (this filter's defaults: RUNGE_KUTTA4,
+ * step 0.01, adaptive steps of at most 0.1, MaximumPropagation 5).
  *
  * Output port 0, the ray bundle: one polyline per direction, with point data
  * `ArcLength`, `SpeedDrift`, `TransverseJacobian` (signed determinant of
@@ -36,32 +37,17 @@
 #define vtkRiemannExponentialMap_h
 
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannGeodesicAlgorithm.h"
 
 #include <vector> // For Radii
 
-class vtkRiemannMetric;
 
-class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannExponentialMap : public vtkPolyDataAlgorithm
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannExponentialMap : public vtkRiemannGeodesicAlgorithm
 {
 public:
   static vtkRiemannExponentialMap* New();
-  vtkTypeMacro(vtkRiemannExponentialMap, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRiemannExponentialMap, vtkRiemannGeodesicAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /// Integrators (vtkRiemannGeodesicTracer's numbering).
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    DORMAND_PRINCE45 = 2
-  };
-
-  ///@{
-  /// The metric (required).
-  virtual void SetMetric(vtkRiemannMetric* metric);
-  vtkGetObjectMacro(Metric, vtkRiemannMetric);
-  ///@}
 
   ///@{
   /// The point where the exponential map is taken. Default (0, 0, 0).
@@ -92,49 +78,7 @@ public:
   double GetRadius(int i) const;
   ///@}
 
-  ///@{
-  /// Arc length of each geodesic. Default 5.
-  vtkSetClampMacro(MaximumPropagation, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumPropagation, double);
-  ///@}
-
-  ///@{
-  /// Integrator (default RUNGE_KUTTA4).
-  vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
-  vtkGetMacro(IntegratorType, int);
-  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
-  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
-  void SetIntegratorTypeToDormandPrince45() { this->SetIntegratorType(DORMAND_PRINCE45); }
-  ///@}
-
-  ///@{
-  /// Step in arc length (fixed, or initial for DP45). Default 0.01.
-  vtkSetClampMacro(IntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(IntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Largest adaptive step (DP45). Default 0.1.
-  vtkSetClampMacro(MaximumIntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumIntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Per-step error tolerance of DP45. Default 1e-8.
-  vtkSetClampMacro(MaximumError, double, 1e-15, 1.0);
-  vtkGetMacro(MaximumError, double);
-  ///@}
-
-  ///@{
-  /// Steps after which each geodesic stops. Default 100000.
-  vtkSetClampMacro(MaximumNumberOfSteps, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
-  ///@}
-
-  /// Include the metric's modification time.
-  vtkMTimeType GetMTime() override;
-
-  /// Largest NumberOfDirections x MaximumPropagation / IntegrationStep
+  /// Largest NumberOfDirections x MaximumPropagation / InitialIntegrationStep
   /// accepted (each sample holds the Jacobi fields, about 280 bytes with its
   /// output: 3e7 samples are about 8 GiB); beyond, an error.
   static constexpr double MaximumNumberOfSamples = 3e7;
@@ -146,18 +90,11 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  vtkRiemannMetric* Metric = nullptr;
   double Observer[3] = { 0.0, 0.0, 0.0 };
   int NumberOfDirections = 400;
   double ConeAxis[3] = { 0.0, 0.0, 1.0 };
   double ConeAngle = 180.0;
   std::vector<double> Radii;
-  double MaximumPropagation = 5.0;
-  int IntegratorType = RUNGE_KUTTA4;
-  double IntegrationStep = 0.01;
-  double MaximumIntegrationStep = 0.1;
-  double MaximumError = 1e-8;
-  vtkIdType MaximumNumberOfSteps = 100000;
 
 private:
   vtkRiemannExponentialMap(const vtkRiemannExponentialMap&) = delete;

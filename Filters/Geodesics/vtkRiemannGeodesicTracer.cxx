@@ -16,7 +16,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRiemannMetric.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
@@ -24,7 +24,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannGeodesicTracer);
-vtkCxxSetObjectMacro(vtkRiemannGeodesicTracer, Metric, vtkRiemannMetric);
 
 // The public enums mirror the core's numbering, which is part of the file formats.
 static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
@@ -34,7 +33,7 @@ static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
     static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) ==
       static_cast<int>(riemann::OutOfLength),
   "termination codes must match the core");
-static_assert(vtkRiemannGeodesicTracer::DORMAND_PRINCE45 ==
+static_assert(vtkRiemannIntegrationSettings::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),
   "integrator codes must match the core");
 
@@ -45,7 +44,6 @@ vtkRiemannGeodesicTracer::vtkRiemannGeodesicTracer()
 
 vtkRiemannGeodesicTracer::~vtkRiemannGeodesicTracer()
 {
-  this->SetMetric(nullptr);
   this->SetDirectionArrayName(nullptr);
 }
 
@@ -54,16 +52,6 @@ int vtkRiemannGeodesicTracer::FillInputPortInformation(int, vtkInformation* info
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
-}
-
-vtkMTimeType vtkRiemannGeodesicTracer::GetMTime()
-{
-  vtkMTimeType time = this->Superclass::GetMTime();
-  if (this->Metric)
-  {
-    time = std::max(time, this->Metric->GetMTime());
-  }
-  return time;
 }
 
 namespace
@@ -106,14 +94,11 @@ int vtkRiemannGeodesicTracer::RequestData(
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!this->Metric || !this->Metric->HasDefinition())
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric)
   {
-    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
-                     "definition.");
     return 1;
   }
-  // Hold the metric for the whole computation (SetDefinition may replace it).
-  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
 
   // Gather seeds: the input's points with their directions, or the start ivars.
   std::vector<Seed> seeds;
@@ -170,14 +155,7 @@ int vtkRiemannGeodesicTracer::RequestData(
     }
   }
 
-  riemann::GeodesicOptions options;
-  options.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
-  options.Step = this->InitialIntegrationStep;
-  options.MinimumStep = std::min(this->MinimumIntegrationStep, this->MaximumIntegrationStep);
-  options.MaximumStep = this->MaximumIntegrationStep;
-  options.Tolerance = this->MaximumError;
-  options.MaximumLength = this->MaximumPropagation;
-  options.MaximumSteps = this->MaximumNumberOfSteps;
+  riemann::GeodesicOptions options = this->MakeGeodesicOptions();
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
 
@@ -237,8 +215,7 @@ int vtkRiemannGeodesicTracer::RequestData(
   if (stillborn > 0)
   {
     vtkWarningMacro(<< stillborn << " of " << traced
-                    << " geodesics made no step: seed outside DomainBounds, or "
-                       "MaximumPropagation or MaximumNumberOfSteps is 0.");
+                    << " geodesics made no step: the seed is outside DomainBounds.");
   }
 
   vtkNew<vtkPoints> points;
@@ -317,7 +294,6 @@ int vtkRiemannGeodesicTracer::RequestData(
 void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Metric: " << this->Metric << "\n";
   os << indent << "StartPosition: " << this->StartPosition[0] << " " << this->StartPosition[1]
      << " " << this->StartPosition[2] << "\n";
   os << indent << "StartDirection: " << this->StartDirection[0] << " " << this->StartDirection[1]
@@ -325,14 +301,7 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "DirectionArrayName: " << (this->DirectionArrayName ? this->DirectionArrayName : "(none)")
      << "\n";
-  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
   os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
-  os << indent << "InitialIntegrationStep: " << this->InitialIntegrationStep << "\n";
-  os << indent << "MinimumIntegrationStep: " << this->MinimumIntegrationStep << "\n";
-  os << indent << "MaximumIntegrationStep: " << this->MaximumIntegrationStep << "\n";
-  os << indent << "MaximumError: " << this->MaximumError << "\n";
-  os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
-  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "UseDomainBounds: " << this->UseDomainBounds << "\n";
   os << indent << "DomainBounds: " << this->DomainBounds[0] << " " << this->DomainBounds[1] << " "
      << this->DomainBounds[2] << " " << this->DomainBounds[3] << " " << this->DomainBounds[4] << " "

@@ -11,9 +11,12 @@
  *   StartPosition and/or StartDirection ivars are used.
  * - Directions are coordinate vectors; each is normalised to unit speed in g
  *   at its seed, so every length here is Riemannian arc length.
- * - IntegratorType: EULER (the paper's), RUNGE_KUTTA4 (default) or
- *   DORMAND_PRINCE45 (adaptive, with MaximumError as the per-step tolerance
- *   and the step bounded by Minimum/MaximumIntegrationStep).
+ * - How each geodesic is integrated is GetIntegrationSettings()'s
+ *   (vtkRiemannIntegrationSettings, vtkStreamTracer's words): IntegratorType
+ *   EULER (the paper's), RUNGE_KUTTA4 (default) or DORMAND_PRINCE45
+ *   (adaptive, with MaximumError as the per-step tolerance and the step
+ *   bounded by Minimum/MaximumIntegrationStep); defaults: step 0.01,
+ *   MaximumPropagation 10, MaximumNumberOfSteps 10000.
  * - IntegrationDirection FORWARD, BACKWARD or BOTH (two lines per seed; the
  *   backward one has negative ArcLength, as vtkStreamTracer's IntegrationTime).
  * - Each line stops at MaximumPropagation (arc length), after
@@ -40,30 +43,22 @@
  * derivatives of the Christoffel symbols).
  *
  * Seeds are traced in parallel with vtkSMPTools; progress is reported and
- * AbortExecute honoured between batches of seeds. Without a valid metric the
- * filter reports an error and produces empty output.
+ * AbortExecute honoured between batches of seeds. Without a valid metric, or
+ * with an unusable setting, the filter reports an error (GetLastError) and
+ * produces empty output.
  */
 #ifndef vtkRiemannGeodesicTracer_h
 #define vtkRiemannGeodesicTracer_h
 
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannGeodesicAlgorithm.h"
 
-class vtkRiemannMetric;
-
-class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicTracer : public vtkPolyDataAlgorithm
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicTracer : public vtkRiemannGeodesicAlgorithm
 {
 public:
   static vtkRiemannGeodesicTracer* New();
-  vtkTypeMacro(vtkRiemannGeodesicTracer, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRiemannGeodesicTracer, vtkRiemannGeodesicAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    DORMAND_PRINCE45 = 2
-  };
 
   enum Directions
   {
@@ -86,12 +81,6 @@ public:
   };
 
   ///@{
-  /// The metric whose geodesics are traced (required).
-  virtual void SetMetric(vtkRiemannMetric* metric);
-  vtkGetObjectMacro(Metric, vtkRiemannMetric);
-  ///@}
-
-  ///@{
   /// Seed used when there is no input dataset.
   vtkSetVector3Macro(StartPosition, double);
   vtkGetVector3Macro(StartPosition, double);
@@ -110,53 +99,12 @@ public:
   ///@}
 
   ///@{
-  /// Integrator (default RUNGE_KUTTA4).
-  vtkSetClampMacro(IntegratorType, int, EULER, DORMAND_PRINCE45);
-  vtkGetMacro(IntegratorType, int);
-  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
-  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
-  void SetIntegratorTypeToDormandPrince45() { this->SetIntegratorType(DORMAND_PRINCE45); }
-  ///@}
-
-  ///@{
   /// FORWARD (default), BACKWARD or BOTH.
   vtkSetClampMacro(IntegrationDirection, int, FORWARD, BOTH);
   vtkGetMacro(IntegrationDirection, int);
   void SetIntegrationDirectionToForward() { this->SetIntegrationDirection(FORWARD); }
   void SetIntegrationDirectionToBackward() { this->SetIntegrationDirection(BACKWARD); }
   void SetIntegrationDirectionToBoth() { this->SetIntegrationDirection(BOTH); }
-  ///@}
-
-  ///@{
-  /// Step in arc length (fixed for Euler/RK4, initial for DP45). Default 0.01.
-  vtkSetClampMacro(InitialIntegrationStep, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(InitialIntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Bounds of the adaptive step (DP45). Defaults 1e-7 and 0.5.
-  vtkSetClampMacro(MinimumIntegrationStep, double, 1e-15, VTK_DOUBLE_MAX);
-  vtkGetMacro(MinimumIntegrationStep, double);
-  vtkSetClampMacro(MaximumIntegrationStep, double, 1e-15, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumIntegrationStep, double);
-  ///@}
-
-  ///@{
-  /// Per-step error tolerance of DP45 (mixed absolute/relative). Default 1e-8.
-  vtkSetClampMacro(MaximumError, double, 1e-15, 1.0);
-  vtkGetMacro(MaximumError, double);
-  ///@}
-
-  ///@{
-  /// Arc length at which each geodesic stops. Default 10.
-  vtkSetClampMacro(MaximumPropagation, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumPropagation, double);
-  ///@}
-
-  ///@{
-  /// Steps after which each geodesic stops. Default 10000.
-  vtkSetClampMacro(MaximumNumberOfSteps, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
   ///@}
 
   ///@{
@@ -176,9 +124,6 @@ public:
   vtkBooleanMacro(ComputeTransverseJacobian, bool);
   ///@}
 
-  /// Include the metric's modification time.
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkRiemannGeodesicTracer();
   ~vtkRiemannGeodesicTracer() override;
@@ -187,18 +132,10 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  vtkRiemannMetric* Metric = nullptr;
   double StartPosition[3] = { 0.0, 0.0, 0.0 };
   double StartDirection[3] = { 1.0, 0.0, 0.0 };
   char* DirectionArrayName = nullptr;
-  int IntegratorType = RUNGE_KUTTA4;
   int IntegrationDirection = FORWARD;
-  double InitialIntegrationStep = 0.01;
-  double MinimumIntegrationStep = 1e-7;
-  double MaximumIntegrationStep = 0.5;
-  double MaximumError = 1e-8;
-  double MaximumPropagation = 10.0;
-  vtkIdType MaximumNumberOfSteps = 10000;
   bool UseDomainBounds = false;
   double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
   bool ComputeTransverseJacobian = false;

@@ -4,7 +4,9 @@
 #include "RiemannPolyDataMesh.h"
 #include "RiemannScene.h"
 #include "RiemannShading.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannObserverSettings.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkRiemannScene.h"
 
@@ -45,9 +47,11 @@ public:
 };
 
 vtkRiemannCPURayTracer::vtkRiemannCPURayTracer()
-  : Internals(new vtkInternals)
+  : IntegrationSettings(vtkRiemannIntegrationSettings::New())
+  , Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(0);
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
 }
 
 vtkRiemannCPURayTracer::~vtkRiemannCPURayTracer()
@@ -55,13 +59,23 @@ vtkRiemannCPURayTracer::~vtkRiemannCPURayTracer()
   this->SetMetric(nullptr);
   this->SetScene(nullptr);
   this->SetCamera(nullptr);
+  this->IntegrationSettings->Delete();
+}
+
+void vtkRiemannCPURayTracer::SetIntegrationSettings(vtkRiemannIntegrationSettings* settings)
+{
+  if (vtkRiemannIntegrationSettings::Share(this, this->IntegrationSettings, settings))
+  {
+    this->Modified();
+  }
 }
 
 vtkMTimeType vtkRiemannCPURayTracer::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
   for (vtkObject* object : { static_cast<vtkObject*>(this->Metric),
-         static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera) })
+         static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera),
+         static_cast<vtkObject*>(this->IntegrationSettings) })
   {
     if (object)
     {
@@ -188,41 +202,17 @@ int vtkRiemannCPURayTracer::RequestData(
                   << " GiB of memory); render a smaller image.");
     return 1;
   }
-  riemann::RaySettings rays;
-  int projection = this->Projection;
-  if (this->UseSceneSettings)
+  const std::string settingsError = this->IntegrationSettings->CheckSettings();
+  if (!this->UseSceneSettings && !settingsError.empty())
   {
-    rays = scene->Rays;
-    if (scene->HasCamera)
-    {
-      projection = static_cast<int>(scene->Camera.Mode);
-    }
+    vtkErrorMacro(<< "Integration settings: " << settingsError << ".");
+    return 1;
   }
-  else
-  {
-    rays.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
-    rays.Step = this->StepSize;
-    rays.MaximumSteps = this->MaximumNumberOfSteps;
-    rays.MaximumLength = this->MaximumLength;
-    rays.Tolerance = this->Tolerance;
-  }
-  riemann::CameraSettings camera = scene->Camera;
-  if (this->Camera)
-  {
-    camera.Position = riemann::Vec3(this->Camera->GetPosition());
-    camera.LookAt = riemann::Vec3(this->Camera->GetFocalPoint());
-    camera.ViewUp = riemann::Vec3(this->Camera->GetViewUp());
-    double angle = this->Camera->GetViewAngle();
-    if (this->Camera->GetUseHorizontalViewAngle())
-    {
-      // As the pass: a horizontal angle becomes the vertical one of this aspect.
-      const double aspect = static_cast<double>(width) / height;
-      angle = vtkMath::DegreesFromRadians(
-        2.0 * std::atan(std::tan(0.5 * vtkMath::RadiansFromDegrees(angle)) / aspect));
-    }
-    camera.ViewAngle = angle;
-  }
-  camera.Mode = static_cast<riemann::Projection>(projection);
+  const riemann::RaySettings rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
+  const riemann::CameraSettings camera = vtkRiemannCameraSettings(this->Camera,
+    static_cast<double>(width) / height, scene->Camera,
+    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
 
   std::shared_ptr<riemann::EnvironmentMap> environment;
   if (!scene->EnvironmentImage.empty())
@@ -346,11 +336,8 @@ void vtkRiemannCPURayTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseRayStreams: " << (this->UseRayStreams ? "On" : "Off") << "\n";
   os << indent << "ComputeHitError: " << (this->ComputeHitError ? "On" : "Off") << "\n";
   os << indent << "UseSceneSettings: " << (this->UseSceneSettings ? "On" : "Off") << "\n";
-  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
-  os << indent << "StepSize: " << this->StepSize << "\n";
-  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
-  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "IntegrationSettings:\n";
+  this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Projection: " << this->Projection << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfIntegrationSteps: " << this->NumberOfIntegrationSteps << "\n";

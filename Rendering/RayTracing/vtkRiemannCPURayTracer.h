@@ -39,8 +39,9 @@
  *
  * Camera: SetCamera() (a vtkCamera: position, focal point, view up, view
  * angle, as the pass reads its renderer's), else the scene's camera.
- * Integrator and projection: from the scene when UseSceneSettings is on
- * (the default), else from this object's settings, as the pass.
+ * Integration and projection: from the scene when UseSceneSettings is on
+ * (the default), else from GetIntegrationSettings() and Projection, as the
+ * pass (vtkRiemannObserverSettings.h; the same defaults).
  *
  * Errors (no metric, a degenerate metric at the eye, a mesh that cannot be
  * built, bad sizes) are reported with vtkErrorMacro and give an empty
@@ -58,6 +59,7 @@
 #include <memory> // For std::unique_ptr
 
 class vtkCamera;
+class vtkRiemannIntegrationSettings;
 class vtkPolyData;
 class vtkRiemannMetric;
 class vtkRiemannScene;
@@ -156,13 +158,7 @@ public:
   vtkBooleanMacro(ComputeHitError, bool);
   ///@}
 
-  /// Integrators and projections (the pass's numbering).
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    ADAPTIVE = 2
-  };
+  /// Projections (the pass's numbering).
   enum Projections
   {
     PERSPECTIVE = 0,
@@ -170,20 +166,20 @@ public:
   };
 
   ///@{
-  /// Integrator and projection from the scene (default on), else from the settings below.
+  /// Integration and projection from the scene (default on), else from the settings below.
   vtkSetMacro(UseSceneSettings, bool);
   vtkGetMacro(UseSceneSettings, bool);
   vtkBooleanMacro(UseSceneSettings, bool);
-  vtkSetClampMacro(IntegratorType, int, EULER, ADAPTIVE);
-  vtkGetMacro(IntegratorType, int);
-  vtkSetClampMacro(StepSize, double, 1e-6, VTK_DOUBLE_MAX);
-  vtkGetMacro(StepSize, double);
-  vtkSetClampMacro(MaximumNumberOfSteps, int, 1, VTK_INT_MAX);
-  vtkGetMacro(MaximumNumberOfSteps, int);
-  vtkSetClampMacro(MaximumLength, double, 1e-6, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumLength, double);
-  vtkSetClampMacro(Tolerance, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// How rays are integrated when UseSceneSettings is off (shareable, never null).
+  void SetIntegrationSettings(vtkRiemannIntegrationSettings* settings);
+  vtkGetObjectMacro(IntegrationSettings, vtkRiemannIntegrationSettings);
+  ///@}
+
+  ///@{
+  /// PERSPECTIVE (default) or EQUIRECTANGULAR, when UseSceneSettings is off or the scene has no camera.
   vtkSetClampMacro(Projection, int, PERSPECTIVE, EQUIRECTANGULAR);
   vtkGetMacro(Projection, int);
   ///@}
@@ -214,11 +210,7 @@ protected:
   bool UseRayStreams = false;
   bool ComputeHitError = false;
   bool UseSceneSettings = true;
-  int IntegratorType = RUNGE_KUTTA4;
-  double StepSize = 0.02;
-  int MaximumNumberOfSteps = 1000;
-  double MaximumLength = 30.0;
-  double Tolerance = 1e-4;
+  vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   int Projection = PERSPECTIVE;
   vtkIdType NumberOfRays = 0;
   vtkIdType NumberOfIntegrationSteps = 0;

@@ -15,7 +15,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRiemannMetric.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannObserverSettings.h"
 #include "vtkRiemannScene.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -28,18 +29,17 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannRayBundle);
-vtkCxxSetObjectMacro(vtkRiemannRayBundle, Metric, vtkRiemannMetric);
 vtkCxxSetObjectMacro(vtkRiemannRayBundle, Scene, vtkRiemannScene);
 vtkCxxSetObjectMacro(vtkRiemannRayBundle, Camera, vtkCamera);
 
 vtkRiemannRayBundle::vtkRiemannRayBundle()
 {
   this->SetNumberOfInputPorts(0);
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
 }
 
 vtkRiemannRayBundle::~vtkRiemannRayBundle()
 {
-  this->SetMetric(nullptr);
   this->SetScene(nullptr);
   this->SetCamera(nullptr);
 }
@@ -52,8 +52,7 @@ int vtkRiemannRayBundle::FillInputPortInformation(int, vtkInformation*)
 vtkMTimeType vtkRiemannRayBundle::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Metric), static_cast<vtkObject*>(this->Scene),
-         static_cast<vtkObject*>(this->Camera) })
+  for (vtkObject* o : { static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera) })
   {
     if (o)
     {
@@ -68,37 +67,20 @@ int vtkRiemannRayBundle::RequestData(
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!this->Metric || !this->Metric->HasDefinition())
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric)
   {
-    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
-                     "definition.");
     return 1;
   }
-  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
   const std::shared_ptr<const riemann::Scene> scene = this->Scene
     ? this->Scene->GetSceneSnapshot()
     : std::make_shared<const riemann::Scene>(riemann::DefaultScene());
 
-  // The camera and projection follow the same rules as vtkRiemannRayTracePass:
-  // the vtkCamera if given, else the scene's camera (else the default scene's);
-  // the projection from the scene's camera when UseSceneSettings.
-  riemann::CameraSettings settings =
-    scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera;
-  if (this->Camera)
-  {
-    const double* p = this->Camera->GetPosition();
-    const double* f = this->Camera->GetFocalPoint();
-    const double* u = this->Camera->GetViewUp();
-    settings.Position = riemann::Vec3(p[0], p[1], p[2]);
-    settings.LookAt = riemann::Vec3(f[0], f[1], f[2]);
-    settings.ViewUp = riemann::Vec3(u[0], u[1], u[2]);
-    settings.ViewAngle = this->Camera->GetViewAngle();
-  }
-  if (!(this->UseSceneSettings && scene->HasCamera))
-  {
-    settings.Mode = this->Projection == EQUIRECTANGULAR ? riemann::Projection::Equirectangular
-                                                        : riemann::Projection::Perspective;
-  }
+  // The camera, projection and integration follow the pass's rules.
+  const riemann::CameraSettings settings = vtkRiemannCameraSettings(this->Camera,
+    static_cast<double>(this->Width) / this->Height,
+    scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera,
+    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
   std::unique_ptr<riemann::ObserverCamera> camera;
   try
   {
@@ -110,15 +92,8 @@ int vtkRiemannRayBundle::RequestData(
     return 1;
   }
 
-  riemann::RaySettings rays = scene->Rays;
-  if (!this->UseSceneSettings)
-  {
-    rays.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
-    rays.Step = this->StepSize;
-    rays.MaximumSteps = this->MaximumNumberOfSteps;
-    rays.MaximumLength = this->MaximumLength;
-    rays.Tolerance = this->Tolerance;
-  }
+  const riemann::RaySettings rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
 
   // The pixels: an N x N sub-grid (block centres), or a strided region.
   std::vector<std::pair<int, int>> pixels;
@@ -259,7 +234,6 @@ int vtkRiemannRayBundle::RequestData(
 void vtkRiemannRayBundle::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Metric: " << this->Metric << "\n";
   os << indent << "Scene: " << this->Scene << "\n";
   os << indent << "Camera: " << this->Camera << "\n";
   os << indent << "Width x Height: " << this->Width << " x " << this->Height << "\n";
@@ -269,9 +243,4 @@ void vtkRiemannRayBundle::PrintSelf(ostream& os, vtkIndent indent)
      << this->PixelRegion[1] << ", " << this->PixelRegion[2] << ".." << this->PixelRegion[3]
      << ", stride " << this->PixelStride << ")\n";
   os << indent << "UseSceneSettings: " << this->UseSceneSettings << "\n";
-  os << indent << "IntegratorType: " << this->IntegratorType << "\n";
-  os << indent << "StepSize: " << this->StepSize << "\n";
-  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
-  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
 }

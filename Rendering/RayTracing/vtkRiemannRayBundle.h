@@ -20,33 +20,28 @@
  * `ReasonForTermination` (vtkRiemannGeodesicTracer's codes; 9 = hit).
  *
  * The camera is a vtkCamera (SetCamera); without one, the scene's camera,
- * else the default scene's. Integration settings, and the projection of the
- * scene's camera, come from the scene unless UseSceneSettings is off, exactly
- * as for vtkRiemannRayTracePass.
+ * else the default scene's. The integration (the scene's "integrator" block)
+ * and the projection of the scene's camera come from the scene unless
+ * UseSceneSettings is off; then GetIntegrationSettings() (defaults as the
+ * pass's: RUNGE_KUTTA4, step 0.02, MaximumPropagation 30, 1000 steps,
+ * MaximumError 1e-4) and Projection apply, exactly as for
+ * vtkRiemannRayTracePass (vtkRiemannObserverSettings.h).
  */
 #ifndef vtkRiemannRayBundle_h
 #define vtkRiemannRayBundle_h
 
 #include "RiemannRenderingRayTracingModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannGeodesicAlgorithm.h"
 
 class vtkCamera;
-class vtkRiemannMetric;
 class vtkRiemannScene;
 
-class RIEMANNRENDERINGRAYTRACING_EXPORT vtkRiemannRayBundle : public vtkPolyDataAlgorithm
+class RIEMANNRENDERINGRAYTRACING_EXPORT vtkRiemannRayBundle : public vtkRiemannGeodesicAlgorithm
 {
 public:
   static vtkRiemannRayBundle* New();
-  vtkTypeMacro(vtkRiemannRayBundle, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRiemannRayBundle, vtkRiemannGeodesicAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    ADAPTIVE = 2
-  };
 
   enum Projections
   {
@@ -55,9 +50,7 @@ public:
   };
 
   ///@{
-  /// The metric (required), the scene (optional: the default scene) and the camera.
-  virtual void SetMetric(vtkRiemannMetric* metric);
-  vtkGetObjectMacro(Metric, vtkRiemannMetric);
+  /// The scene (optional: the default scene) and the camera (the metric: SetMetric).
   virtual void SetScene(vtkRiemannScene* scene);
   vtkGetObjectMacro(Scene, vtkRiemannScene);
   virtual void SetCamera(vtkCamera* camera);
@@ -96,24 +89,10 @@ public:
   ///@}
 
   ///@{
-  /// Take the integrator, step and limits from the scene (default on).
+  /// Take the integration settings from the scene (default on), else GetIntegrationSettings().
   vtkSetMacro(UseSceneSettings, bool);
   vtkGetMacro(UseSceneSettings, bool);
   vtkBooleanMacro(UseSceneSettings, bool);
-  ///@}
-
-  ///@{
-  /// Used when UseSceneSettings is off.
-  vtkSetClampMacro(IntegratorType, int, EULER, ADAPTIVE);
-  vtkGetMacro(IntegratorType, int);
-  vtkSetClampMacro(StepSize, double, 1e-9, VTK_DOUBLE_MAX);
-  vtkGetMacro(StepSize, double);
-  vtkSetClampMacro(MaximumNumberOfSteps, int, 1, 1000000);
-  vtkGetMacro(MaximumNumberOfSteps, int);
-  vtkSetClampMacro(MaximumLength, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumLength, double);
-  vtkSetClampMacro(Tolerance, double, 1e-15, 1.0);
-  vtkGetMacro(Tolerance, double);
   ///@}
 
   vtkMTimeType GetMTime() override;
@@ -126,7 +105,6 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  vtkRiemannMetric* Metric = nullptr;
   vtkRiemannScene* Scene = nullptr;
   vtkCamera* Camera = nullptr;
   int Width = 640;
@@ -137,11 +115,6 @@ protected:
   int PixelStride = 1;
   bool UsePixelRegion = false;
   bool UseSceneSettings = true;
-  int IntegratorType = RUNGE_KUTTA4;
-  double StepSize = 0.02;
-  int MaximumNumberOfSteps = 1000;
-  double MaximumLength = 30.0;
-  double Tolerance = 1e-4;
 
 private:
   vtkRiemannRayBundle(const vtkRiemannRayBundle&) = delete;

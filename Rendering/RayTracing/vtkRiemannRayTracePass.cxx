@@ -1,6 +1,8 @@
 #include "vtkRiemannRayTracePass.h"
 
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannObserverSettings.h"
 #include "vtkRiemannScene.h"
 
 #include "GlslSource.h"
@@ -8,6 +10,7 @@
 #include "ObserverCamera.h"
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
+#include "RiemannSceneUniforms.h"
 
 // GLSL embedded at build time (vtk_encode_string).
 #include "RiemannRayTraceFS.h"
@@ -224,6 +227,85 @@ public:
   vtkSmartPointer<vtkTextureObject> HitTexture;
   vtkNew<vtkFloatArray> HitImage;
 
+  /// Keep a built program, dropping the least recently used beyond the cache's size.
+  std::map<std::string, CachedProgram>::iterator StoreProgram(
+    const std::string& source, std::unique_ptr<vtkOpenGLQuadHelper> quad)
+  {
+    if (this->Programs.size() >= MaximumCachedPrograms)
+    {
+      auto oldest = this->Programs.begin();
+      for (auto it = this->Programs.begin(); it != this->Programs.end(); ++it)
+      {
+        oldest = it->second.LastUse < oldest->second.LastUse ? it : oldest;
+      }
+      this->Programs.erase(oldest);
+    }
+    auto stored = this->Programs.emplace(source, CachedProgram()).first;
+    stored->second.Quad = std::move(quad);
+    return stored;
+  }
+
+  /// Read the environment image at `path` into a texture (EnvironmentError says why not).
+  void LoadEnvironment(const std::string& path, vtkOpenGLRenderWindow* window)
+  {
+    this->EnvironmentPath = path;
+    this->EnvironmentError.clear();
+    if (this->Environment)
+    {
+      this->Environment->ReleaseGraphicsResources(window);
+      this->Environment = nullptr;
+    }
+    std::vector<float> rgb;
+    int width = 0;
+    int height = 0;
+    if (!ReadEnvironmentImage(path, rgb, width, height, this->EnvironmentError))
+    {
+      return;
+    }
+    vtkNew<vtkTextureObject> texture;
+    texture->SetContext(window);
+    texture->SetWrapS(vtkTextureObject::Repeat);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetMinificationFilter(vtkTextureObject::Linear);
+    texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    // Rows top first: texture coordinate t = 0 is the top (latitude +90).
+    if (texture->Create2DFromRaw(width, height, 3, VTK_FLOAT, rgb.data()))
+    {
+      this->Environment = texture;
+    }
+    else
+    {
+      this->EnvironmentError = "could not upload the texture";
+    }
+  }
+
+  /// The float texture and framebuffer of the hit capture, at this size.
+  void ReadyHitTarget(vtkOpenGLRenderWindow* window, int width, int height)
+  {
+    if (!this->HitTexture)
+    {
+      this->HitTexture = vtkSmartPointer<vtkTextureObject>::New();
+      this->HitTexture->SetContext(window);
+    }
+    if (static_cast<int>(this->HitTexture->GetWidth()) != width ||
+      static_cast<int>(this->HitTexture->GetHeight()) != height)
+    {
+      this->HitTexture->ReleaseGraphicsResources(window);
+      this->HitTexture->SetContext(window);
+      this->HitTexture->SetInternalFormat(GL_RGBA32F);
+      this->HitTexture->SetFormat(GL_RGBA);
+      this->HitTexture->SetDataType(GL_FLOAT);
+      this->HitTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->HitTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->HitTexture->Allocate2D(width, height, 4, VTK_FLOAT);
+    }
+    if (!this->HitFramebuffer)
+    {
+      this->HitFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->HitFramebuffer->SetContext(window);
+    }
+  }
+
   void Release(vtkWindow* window)
   {
     this->Programs.clear(); // each quad helper frees its VAO
@@ -251,8 +333,10 @@ public:
 
 //------------------------------------------------------------------------------
 vtkRiemannRayTracePass::vtkRiemannRayTracePass()
-  : Internals(new vtkInternals)
+  : IntegrationSettings(vtkRiemannIntegrationSettings::New())
+  , Internals(new vtkInternals)
 {
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
   this->Internals->HitImage->SetName("Hits");
   this->Internals->HitImage->SetNumberOfComponents(4);
 }
@@ -265,14 +349,23 @@ vtkRiemannRayTracePass::~vtkRiemannRayTracePass()
   this->SetMetric(nullptr);
   this->SetScene(nullptr);
   this->SetExtraShaderCode(nullptr);
+  this->IntegrationSettings->Delete();
 }
 
 vtkCxxSetObjectMacro(vtkRiemannRayTracePass, Metric, vtkRiemannMetric);
 vtkCxxSetObjectMacro(vtkRiemannRayTracePass, Scene, vtkRiemannScene);
 
+void vtkRiemannRayTracePass::SetIntegrationSettings(vtkRiemannIntegrationSettings* settings)
+{
+  if (vtkRiemannIntegrationSettings::Share(this, this->IntegrationSettings, settings))
+  {
+    this->Modified();
+  }
+}
+
 vtkMTimeType vtkRiemannRayTracePass::GetMTime()
 {
-  vtkMTimeType time = this->Superclass::GetMTime();
+  vtkMTimeType time = std::max(this->Superclass::GetMTime(), this->IntegrationSettings->GetMTime());
   if (this->Metric)
   {
     time = std::max(time, this->Metric->GetMTime());
@@ -326,157 +419,185 @@ void vtkRiemannRayTracePass::Fail(
 }
 
 //------------------------------------------------------------------------------
+struct vtkRiemannRayTracePass::FrameState
+{
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  /// x, y, width, height of the image in the target.
+  int Viewport[4] = { 0, 0, 0, 0 };
+  std::shared_ptr<const riemann::Metric> Metric;
+  std::shared_ptr<const riemann::Scene> Scene;
+  riemann::MetricGlsl MetricGlsl;
+  riemann::RaySettings Rays;
+  riemann::CameraSettings Camera;
+  std::unique_ptr<riemann::ObserverCamera> Observer;
+  vtkOpenGLQuadHelper* Quad = nullptr;
+};
+
+//------------------------------------------------------------------------------
 void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  vtkRenderer* renderer = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin =
-    vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
-  if (!renWin)
+  FrameState frame;
+  if (!this->PrepareFrame(s, frame))
   {
-    this->Fail("the renderer has no OpenGL render window", nullptr, nullptr);
     return;
   }
+  vtkShaderProgram* program = this->ReadyProgram(frame);
+  if (!program || !this->SetMetricUniforms(program, frame))
+  {
+    return;
+  }
+  this->SetSceneUniforms(program, frame);
+  this->SetObserverUniforms(program, frame);
+  const bool useEnvironment = this->ActivateEnvironment(program, frame);
+  this->DrawView(program, frame);
+  if (this->CaptureHits)
+  {
+    this->CaptureHitImage(program, frame);
+  }
+  if (useEnvironment)
+  {
+    this->Internals->Environment->Deactivate();
+  }
+  this->LastError.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& frame)
+{
+  // The window, and the image: the renderer's viewport in the window, or the
+  // whole target of an enclosing pass's framebuffer.
+  frame.Renderer = s->GetRenderer();
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(
+    frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr);
+  if (!frame.Window)
+  {
+    this->Fail("the renderer has no OpenGL render window", nullptr, nullptr);
+    return false;
+  }
   vtkInternals& internals = *this->Internals;
-  if (internals.Context && internals.Context != renWin)
+  if (internals.Context && internals.Context != frame.Window)
   {
     internals.Release(nullptr); // another window: start afresh in this one
   }
-  internals.Context = renWin;
-
-  // The image: the renderer's viewport in the window, or the whole target
-  // of an enclosing pass's framebuffer.
-  int viewport[4];
+  internals.Context = frame.Window;
+  int* viewport = frame.Viewport;
   if (s->GetFrameBuffer())
   {
-    int size[2];
-    s->GetWindowSize(size);
-    viewport[0] = 0;
-    viewport[1] = 0;
-    viewport[2] = size[0];
-    viewport[3] = size[1];
+    s->GetWindowSize(viewport + 2);
   }
   else
   {
-    renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+    frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   }
   if (viewport[2] <= 0 || viewport[3] <= 0)
   {
-    return;
+    return false;
   }
-  const double aspect = static_cast<double>(viewport[2]) / viewport[3];
 
-  // ---- what to render -------------------------------------------------------
-  const std::shared_ptr<const riemann::Metric> metric = this->GetCoreMetric();
-  if (!metric)
+  // What to render: the metric (as GLSL) and the scene's analytic objects.
+  frame.Metric = this->GetCoreMetric();
+  if (!frame.Metric)
   {
     this->Fail(this->Metric ? "the metric has no definition: call SetDefinition() on it"
                             : "no metric: call SetMetric() with a vtkRiemannMetric",
-      renWin, viewport);
-    return;
+      frame.Window, viewport);
+    return false;
   }
   if (!this->Scene)
   {
-    this->Fail("no scene: call SetScene() with a vtkRiemannScene", renWin, viewport);
-    return;
+    this->Fail("no scene: call SetScene() with a vtkRiemannScene", frame.Window, viewport);
+    return false;
   }
-  const std::shared_ptr<const riemann::Scene> scenePointer = this->Scene->GetSceneSnapshot();
-  const riemann::Scene& scene = *scenePointer;
-  if (scene.HasMeshes())
+  frame.Scene = this->Scene->GetSceneSnapshot();
+  if (frame.Scene->HasMeshes())
   {
     // The shader draws the analytic objects only; triangle meshes are Embree's.
     this->Fail("mesh objects need --backend cpu: the GPU pass draws grids, spheres, planes and "
                "boxes; render this scene with vtkRiemannCPURayTracer",
-      renWin, viewport);
-    return;
+      frame.Window, viewport);
+    return false;
   }
-
-  riemann::MetricGlsl metricGlsl;
   try
   {
-    metricGlsl = riemann::EmitMetricGlsl(*metric);
+    frame.MetricGlsl = riemann::EmitMetricGlsl(*frame.Metric);
   }
   catch (const riemann::GlslUnsupportedError& e)
   {
-    this->Fail(
-      std::string("the GLSL backend cannot express this metric: ") + e.what(), renWin, viewport);
-    return;
+    this->Fail(std::string("the GLSL backend cannot express this metric: ") + e.what(),
+      frame.Window, viewport);
+    return false;
   }
   catch (const std::exception& e)
   {
-    this->Fail(std::string("could not write the metric's GLSL: ") + e.what(), renWin, viewport);
-    return;
+    this->Fail(
+      std::string("could not write the metric's GLSL: ") + e.what(), frame.Window, viewport);
+    return false;
   }
 
-  riemann::RaySettings rays;
-  int projection = this->Projection;
-  if (this->UseSceneSettings)
+  // How rays go, and from where (vtkRiemannObserverSettings.h: as the CPU tracer).
+  if (!this->UseSceneSettings)
   {
-    rays = scene.Rays;
-    if (scene.HasCamera)
+    const std::string settingsError = this->IntegrationSettings->CheckSettings();
+    if (!settingsError.empty())
     {
-      projection = static_cast<int>(scene.Camera.Mode);
+      this->Fail("integration settings: " + settingsError, frame.Window, viewport);
+      return false;
     }
   }
-  else
-  {
-    rays.Integrator = static_cast<riemann::IntegratorType>(this->IntegratorType);
-    rays.Step = this->StepSize;
-    rays.MaximumSteps = this->MaximumNumberOfSteps;
-    rays.MaximumLength = this->MaximumLength;
-    rays.Tolerance = this->Tolerance;
-  }
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  riemann::CameraSettings cameraSettings;
-  cameraSettings.Position = riemann::Vec3(camera->GetPosition());
-  cameraSettings.LookAt = riemann::Vec3(camera->GetFocalPoint());
-  cameraSettings.ViewUp = riemann::Vec3(camera->GetViewUp());
-  double viewAngle = camera->GetViewAngle();
-  if (camera->GetUseHorizontalViewAngle())
-  {
-    viewAngle = 2.0 * std::atan(std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle)) / aspect);
-    viewAngle = vtkMath::DegreesFromRadians(viewAngle);
-  }
-  cameraSettings.ViewAngle = viewAngle;
-  cameraSettings.Mode = static_cast<riemann::Projection>(projection);
-  std::unique_ptr<riemann::ObserverCamera> observer;
+  frame.Rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *frame.Scene, this->IntegrationSettings);
+  frame.Camera = vtkRiemannCameraSettings(frame.Renderer->GetActiveCamera(),
+    static_cast<double>(viewport[2]) / viewport[3], riemann::CameraSettings(),
+    vtkRiemannResolveProjection(this->UseSceneSettings, *frame.Scene, this->Projection));
   try
   {
-    observer.reset(new riemann::ObserverCamera(*metric, cameraSettings));
+    frame.Observer.reset(new riemann::ObserverCamera(*frame.Metric, frame.Camera));
   }
   catch (const std::exception& e)
   {
-    this->Fail(std::string("cannot place the observer: ") + e.what(), renWin, viewport);
-    return;
+    this->Fail(std::string("cannot place the observer: ") + e.what(), frame.Window, viewport);
+    return false;
   }
+  return true;
+}
 
-  // ---- the program ----------------------------------------------------------
-  const int maximumObjects = riemann::MaximumSpheres + riemann::MaximumPlanes +
-    riemann::MaximumBoxes + riemann::MaximumGrids;
+//------------------------------------------------------------------------------
+std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& frame) const
+{
   std::ostringstream constants;
   constants << "// Scene limits (RiemannScene.h).\n"
             << "#define RT_MAX_SPHERES " << riemann::MaximumSpheres << "\n"
             << "#define RT_MAX_PLANES " << riemann::MaximumPlanes << "\n"
             << "#define RT_MAX_BOXES " << riemann::MaximumBoxes << "\n"
             << "#define RT_MAX_GRIDS " << riemann::MaximumGrids << "\n"
-            << "#define RT_MAX_OBJECTS " << maximumObjects << "\n"
+            << "#define RT_MAX_OBJECTS " << riemann::MaximumSceneUniformObjects << "\n"
             << "// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).\n"
-            << "#define RT_INTEGRATOR " << static_cast<int>(rays.Integrator) << "\n";
+            << "#define RT_INTEGRATOR " << static_cast<int>(frame.Rays.Integrator) << "\n";
   std::string source = RiemannRayTraceFS;
   Replace(source, "//RT::Constants::Dec", constants.str());
-  Replace(source, "//RT::Metric::Impl", metricGlsl.Source);
+  Replace(source, "//RT::Metric::Impl", frame.MetricGlsl.Source);
   Replace(source, "//RT::Scene::Impl", RiemannRayTraceScene);
   Replace(source, "//RT::Integrators::Impl", RiemannRayTraceIntegrators);
   Replace(source, "//RT::Extra::Impl",
     this->ExtraShaderCode ? std::string("// ExtraShaderCode\n") + this->ExtraShaderCode : "");
+  return source;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string source = this->ComposeFragmentSource(frame);
   this->FragmentShaderSource = source;
 
+  // Programs are cached by source; one that failed is not tried again.
   const auto failed = internals.FailedPrograms.find(source);
   if (failed != internals.FailedPrograms.end())
   {
-    this->Fail(failed->second, renWin, viewport);
-    return;
+    this->Fail(failed->second, frame.Window, frame.Viewport);
+    return nullptr;
   }
   auto found = internals.Programs.find(source);
   if (found != internals.Programs.end() && !found->second.Quad->Program)
@@ -487,58 +608,59 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   }
   if (found == internals.Programs.end())
   {
-    ++this->NumberOfShaderCompilations;
     std::string message;
-    const std::string log = CheckFragmentShader(source);
-    std::unique_ptr<vtkOpenGLQuadHelper> quad;
-    if (!log.empty())
-    {
-      message = "the ray-tracing shader failed to compile: " + log;
-    }
-    else
-    {
-      std::string vtkMessages;
-      {
-        ScopedOutputCollector collector;
-        quad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, source.c_str(), ""));
-        vtkMessages = collector.Summary();
-      }
-      Trim(vtkMessages);
-      if (!quad->Program || !quad->Program->GetCompiled())
-      {
-        message = "the ray-tracing shader failed to compile or link: " +
-          (vtkMessages.empty() ? std::string("(no log)") : vtkMessages);
-      }
-    }
-    if (!message.empty())
+    std::unique_ptr<vtkOpenGLQuadHelper> quad = this->BuildProgram(source, frame, message);
+    if (!quad)
     {
       internals.FailedPrograms[source] = message;
-      this->Fail(message, renWin, viewport);
-      return;
+      this->Fail(message, frame.Window, frame.Viewport);
+      return nullptr;
     }
-    if (internals.Programs.size() >= MaximumCachedPrograms)
-    {
-      auto oldest = internals.Programs.begin();
-      for (auto it = internals.Programs.begin(); it != internals.Programs.end(); ++it)
-      {
-        oldest = it->second.LastUse < oldest->second.LastUse ? it : oldest;
-      }
-      internals.Programs.erase(oldest);
-    }
-    found = internals.Programs.emplace(source, vtkInternals::CachedProgram()).first;
-    found->second.Quad = std::move(quad);
+    found = internals.StoreProgram(source, std::move(quad));
   }
   found->second.LastUse = ++internals.UseCounter;
-  vtkOpenGLQuadHelper* quad = found->second.Quad.get();
-  vtkShaderProgram* program = renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  frame.Quad = found->second.Quad.get();
+  vtkShaderProgram* program = frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
   if (!program)
   {
-    this->Fail("the ray-tracing shader could not be bound", renWin, viewport);
-    return;
+    this->Fail("the ray-tracing shader could not be bound", frame.Window, frame.Viewport);
   }
+  return program;
+}
 
-  // ---- uniforms: metric -----------------------------------------------------
-  for (const riemann::GlslUniform& uniform : metricGlsl.Uniforms)
+//------------------------------------------------------------------------------
+std::unique_ptr<vtkOpenGLQuadHelper> vtkRiemannRayTracePass::BuildProgram(
+  const std::string& source, const FrameState& frame, std::string& message)
+{
+  ++this->NumberOfShaderCompilations;
+  // The fragment shader alone first: its log, without VTK's listing of the source.
+  const std::string log = CheckFragmentShader(source);
+  if (!log.empty())
+  {
+    message = "the ray-tracing shader failed to compile: " + log;
+    return nullptr;
+  }
+  std::string vtkMessages;
+  std::unique_ptr<vtkOpenGLQuadHelper> quad;
+  {
+    ScopedOutputCollector collector;
+    quad.reset(new vtkOpenGLQuadHelper(frame.Window, nullptr, source.c_str(), ""));
+    vtkMessages = collector.Summary();
+  }
+  Trim(vtkMessages);
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    message = "the ray-tracing shader failed to compile or link: " +
+      (vtkMessages.empty() ? std::string("(no log)") : vtkMessages);
+    return nullptr;
+  }
+  return quad;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::SetMetricUniforms(vtkShaderProgram* program, FrameState& frame)
+{
+  for (const riemann::GlslUniform& uniform : frame.MetricGlsl.Uniforms)
   {
     float values[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
     const std::size_t count = std::min<std::size_t>(uniform.Values.size(), 9);
@@ -563,263 +685,188 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
     {
       this->Fail("the metric's GLSL has a uniform of unexpected type or size: " + uniform.Type +
           " " + uniform.Name,
-        renWin, viewport);
-      return;
+        frame.Window, frame.Viewport);
+      return false;
     }
   }
+  return true;
+}
 
-  // ---- uniforms: scene ------------------------------------------------------
-  const int objectCount =
-    static_cast<int>(std::min<std::size_t>(scene.Objects.size(), maximumObjects));
-  if (static_cast<std::size_t>(objectCount) < scene.Objects.size())
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame)
+{
+  const riemann::SceneUniforms packed = riemann::PackSceneUniforms(*frame.Scene);
+  if (packed.Truncated)
   {
-    vtkWarningMacro(<< "the scene has " << scene.Objects.size()
-                    << " objects; the GPU pass draws the first " << maximumObjects);
+    vtkWarningMacro(<< "the scene has " << frame.Scene->Objects.size()
+                    << " objects; the GPU pass draws the first "
+                    << riemann::MaximumSceneUniformObjects);
   }
-  {
-    std::vector<int> types(maximumObjects, 0);
-    std::vector<int> materialTypes(maximumObjects, 0);
-    std::vector<float> a(3 * maximumObjects, 0.0f);
-    std::vector<float> b(3 * maximumObjects, 0.0f);
-    std::vector<float> p(3 * maximumObjects, 0.0f);
-    std::vector<float> color(3 * maximumObjects, 0.0f);
-    std::vector<float> color2(3 * maximumObjects, 0.0f);
-    std::vector<float> size(maximumObjects, 1.0f);
-    std::vector<float> lo(3 * maximumObjects, 0.0f);
-    std::vector<float> hi(3 * maximumObjects, 0.0f);
-    for (int i = 0; i < objectCount; ++i)
-    {
-      const riemann::SceneObject& object = scene.Objects[i];
-      types[i] = static_cast<int>(object.Type);
-      if (object.Type == riemann::ObjectType::Grid)
-      {
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          a[3 * i + axis] = static_cast<float>(object.Extent[2 * axis]);
-          b[3 * i + axis] = static_cast<float>(object.Extent[2 * axis + 1]);
-        }
-      }
-      else
-      {
-        ToFloat(object.A, &a[3 * i]);
-        ToFloat(object.B, &b[3 * i]);
-      }
-      p[3 * i] = static_cast<float>(object.Radius);
-      p[3 * i + 1] = static_cast<float>(object.Spacing);
-      p[3 * i + 2] = static_cast<float>(object.Thickness);
-      const riemann::Material& material = object.Surface;
-      materialTypes[i] = static_cast<int>(material.Type);
-      ToFloat(material.Color, &color[3 * i]);
-      ToFloat(material.Color2, &color2[3 * i]);
-      size[i] = static_cast<float>(material.Size);
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        lo[3 * i + axis] = static_cast<float>(material.Bounds[2 * axis]);
-        hi[3 * i + axis] = static_cast<float>(material.Bounds[2 * axis + 1]);
-      }
-    }
-    program->SetUniformi("rt_object_count", objectCount);
-    program->SetUniform1iv("rt_object_type", maximumObjects, types.data());
-    program->SetUniform3fv("rt_object_a", maximumObjects, a.data());
-    program->SetUniform3fv("rt_object_b", maximumObjects, b.data());
-    program->SetUniform3fv("rt_object_p", maximumObjects, p.data());
-    program->SetUniform1iv("rt_material_type", maximumObjects, materialTypes.data());
-    program->SetUniform3fv("rt_material_color", maximumObjects, color.data());
-    program->SetUniform3fv("rt_material_color2", maximumObjects, color2.data());
-    program->SetUniform1fv("rt_material_size", maximumObjects, size.data());
-    program->SetUniform3fv("rt_material_lo", maximumObjects, lo.data());
-    program->SetUniform3fv("rt_material_hi", maximumObjects, hi.data());
-  }
+  const int slots = riemann::MaximumSceneUniformObjects;
+  program->SetUniformi("rt_object_count", packed.ObjectCount);
+  program->SetUniform1iv("rt_object_type", slots, packed.ObjectType.data());
+  program->SetUniform3fv("rt_object_a", slots, packed.A.data());
+  program->SetUniform3fv("rt_object_b", slots, packed.B.data());
+  program->SetUniform3fv("rt_object_p", slots, packed.P.data());
+  program->SetUniform1iv("rt_material_type", slots, packed.MaterialType.data());
+  program->SetUniform3fv("rt_material_color", slots, packed.Color.data());
+  program->SetUniform3fv("rt_material_color2", slots, packed.Color2.data());
+  program->SetUniform1fv("rt_material_size", slots, packed.Size.data());
+  program->SetUniform3fv("rt_material_lo", slots, packed.Low.data());
+  program->SetUniform3fv("rt_material_hi", slots, packed.High.data());
 
-  // ---- uniforms: observer, integration, shading ----------------------------
+  const riemann::Scene& scene = *frame.Scene;
   float v3[3];
-  ToFloat(cameraSettings.Position, v3);
-  program->SetUniform3f("rt_eye", v3);
-  ToFloat(observer->GetForward(), v3);
-  program->SetUniform3f("rt_forward", v3);
-  ToFloat(observer->GetUp(), v3);
-  program->SetUniform3f("rt_up", v3);
-  ToFloat(observer->GetRight(), v3);
-  program->SetUniform3f("rt_right", v3);
-  program->SetUniformf("rt_tan_half_angle",
-    static_cast<float>(std::tan(0.5 * vtkMath::RadiansFromDegrees(cameraSettings.ViewAngle))));
-  program->SetUniformi("rt_projection", projection);
-
-  program->SetUniformf("rt_step", static_cast<float>(rays.Step));
-  program->SetUniformi("rt_max_steps", rays.MaximumSteps);
-  program->SetUniformf("rt_max_length", static_cast<float>(rays.MaximumLength));
-  program->SetUniformf("rt_tolerance", static_cast<float>(rays.Tolerance));
-  // The adaptive step's range, as riemann::TraceRay.
-  program->SetUniformf(
-    "rt_min_step", static_cast<float>(riemann::AdaptiveMinimumStepFactor * rays.Step));
-  program->SetUniformf(
-    "rt_max_step", static_cast<float>(riemann::AdaptiveMaximumStepFactor * rays.Step));
-
   ToFloat(scene.Background, v3);
   program->SetUniform3f("rt_background", v3);
   ToFloat(scene.FogColor, v3);
   program->SetUniform3f("rt_fog_color", v3);
   program->SetUniformf("rt_fog_density", static_cast<float>(scene.FogDensity));
   program->SetUniformi("rt_observer_light", scene.ObserverLight ? 1 : 0);
+}
 
-  // ---- environment image ----------------------------------------------------
-  bool useEnvironment = false;
-  if (!scene.EnvironmentImage.empty())
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::SetObserverUniforms(
+  vtkShaderProgram* program, const FrameState& frame)
+{
+  // The g-orthonormal frame at the eye.
+  float v3[3];
+  ToFloat(frame.Camera.Position, v3);
+  program->SetUniform3f("rt_eye", v3);
+  ToFloat(frame.Observer->GetForward(), v3);
+  program->SetUniform3f("rt_forward", v3);
+  ToFloat(frame.Observer->GetUp(), v3);
+  program->SetUniform3f("rt_up", v3);
+  ToFloat(frame.Observer->GetRight(), v3);
+  program->SetUniform3f("rt_right", v3);
+  program->SetUniformf("rt_tan_half_angle",
+    static_cast<float>(std::tan(0.5 * vtkMath::RadiansFromDegrees(frame.Camera.ViewAngle))));
+  program->SetUniformi("rt_projection", static_cast<int>(frame.Camera.Mode));
+
+  // The integration; the adaptive step's range as riemann::TraceRay's.
+  const riemann::RaySettings& rays = frame.Rays;
+  program->SetUniformf("rt_step", static_cast<float>(rays.Step));
+  program->SetUniformi("rt_max_steps", rays.MaximumSteps);
+  program->SetUniformf("rt_max_length", static_cast<float>(rays.MaximumLength));
+  program->SetUniformf("rt_tolerance", static_cast<float>(rays.Tolerance));
+  program->SetUniformf(
+    "rt_min_step", static_cast<float>(riemann::AdaptiveMinimumStepFactor * rays.Step));
+  program->SetUniformf(
+    "rt_max_step", static_cast<float>(riemann::AdaptiveMaximumStepFactor * rays.Step));
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::ActivateEnvironment(
+  vtkShaderProgram* program, const FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string& path = frame.Scene->EnvironmentImage;
+  if (!path.empty() && path != internals.EnvironmentPath)
   {
-    if (scene.EnvironmentImage != internals.EnvironmentPath)
+    internals.LoadEnvironment(path, frame.Window);
+    if (!internals.EnvironmentError.empty())
     {
-      internals.EnvironmentPath = scene.EnvironmentImage;
-      internals.EnvironmentError.clear();
-      if (internals.Environment)
-      {
-        internals.Environment->ReleaseGraphicsResources(renWin);
-        internals.Environment = nullptr;
-      }
-      std::vector<float> rgb;
-      int width = 0;
-      int height = 0;
-      std::string error;
-      if (ReadEnvironmentImage(scene.EnvironmentImage, rgb, width, height, error))
-      {
-        vtkNew<vtkTextureObject> texture;
-        texture->SetContext(renWin);
-        texture->SetWrapS(vtkTextureObject::Repeat);
-        texture->SetWrapT(vtkTextureObject::ClampToEdge);
-        texture->SetMinificationFilter(vtkTextureObject::Linear);
-        texture->SetMagnificationFilter(vtkTextureObject::Linear);
-        // Rows top first: texture coordinate t = 0 is the top (latitude +90).
-        if (texture->Create2DFromRaw(width, height, 3, VTK_FLOAT, rgb.data()))
-        {
-          internals.Environment = texture;
-        }
-        else
-        {
-          internals.EnvironmentError = "could not upload the texture";
-        }
-      }
-      else
-      {
-        internals.EnvironmentError = error;
-      }
-      if (!internals.EnvironmentError.empty())
-      {
-        // Reported once per image; the background colour stands in for it.
-        vtkErrorMacro(<< "cannot use the environment image " << scene.EnvironmentImage << ": "
-                      << internals.EnvironmentError << " (the background colour is shown instead)");
-      }
+      // Reported once per image; the background colour stands in for it.
+      vtkErrorMacro(<< "cannot use the environment image " << path << ": "
+                    << internals.EnvironmentError << " (the background colour is shown instead)");
     }
-    useEnvironment = internals.Environment != nullptr;
   }
+  const bool useEnvironment = !path.empty() && internals.Environment != nullptr;
   if (useEnvironment)
   {
     internals.Environment->Activate();
     program->SetUniformi("rt_environment", internals.Environment->GetTextureUnit());
   }
   program->SetUniformi("rt_use_environment", useEnvironment ? 1 : 0);
+  return useEnvironment;
+}
 
-  // ---- draw -----------------------------------------------------------------
-  vtkOpenGLState* ostate = renWin->GetState();
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameState& frame)
+{
+  const int* viewport = frame.Viewport;
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+
+  float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("rt_viewport", window);
+  program->SetUniformi("rt_output", 0);
+  frame.Quad->Render();
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::CaptureHitImage(vtkShaderProgram* program, const FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = frame.Viewport[2];
+  const int height = frame.Viewport[3];
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+
+  // The same rays into a float target: (x, y, z, arc length) per pixel.
+  internals.ReadyHitTarget(frame.Window, width, height);
+  ostate->PushFramebufferBindings();
+  internals.HitFramebuffer->Bind();
+  internals.HitFramebuffer->AddColorAttachment(0, internals.HitTexture);
+  internals.HitFramebuffer->ActivateDrawBuffer(0);
+  internals.HitFramebuffer->ActivateReadBuffer(0);
+  const char* status = nullptr;
+  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+  if (complete)
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-
-    float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
-      static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
-    program->SetUniform4f("rt_viewport", window);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    float target[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
+    program->SetUniform4f("rt_viewport", target);
+    program->SetUniformi("rt_output", 1);
+    frame.Quad->Render();
     program->SetUniformi("rt_output", 0);
-    quad->Render();
-
-    if (this->CaptureHits)
-    {
-      const int width = viewport[2];
-      const int height = viewport[3];
-      if (!internals.HitTexture)
-      {
-        internals.HitTexture = vtkSmartPointer<vtkTextureObject>::New();
-        internals.HitTexture->SetContext(renWin);
-      }
-      if (static_cast<int>(internals.HitTexture->GetWidth()) != width ||
-        static_cast<int>(internals.HitTexture->GetHeight()) != height)
-      {
-        internals.HitTexture->ReleaseGraphicsResources(renWin);
-        internals.HitTexture->SetContext(renWin);
-        internals.HitTexture->SetInternalFormat(GL_RGBA32F);
-        internals.HitTexture->SetFormat(GL_RGBA);
-        internals.HitTexture->SetDataType(GL_FLOAT);
-        internals.HitTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-        internals.HitTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-        internals.HitTexture->Allocate2D(width, height, 4, VTK_FLOAT);
-      }
-      if (!internals.HitFramebuffer)
-      {
-        internals.HitFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-        internals.HitFramebuffer->SetContext(renWin);
-      }
-      ostate->PushFramebufferBindings();
-      internals.HitFramebuffer->Bind();
-      internals.HitFramebuffer->AddColorAttachment(0, internals.HitTexture);
-      internals.HitFramebuffer->ActivateDrawBuffer(0);
-      internals.HitFramebuffer->ActivateReadBuffer(0);
-      const char* status = nullptr;
-      const bool complete =
-        vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
-      if (complete)
-      {
-        ostate->vtkglViewport(0, 0, width, height);
-        ostate->vtkglScissor(0, 0, width, height);
-        float target[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
-        program->SetUniform4f("rt_viewport", target);
-        program->SetUniformi("rt_output", 1);
-        quad->Render();
-        program->SetUniformi("rt_output", 0);
-        internals.HitImage->SetNumberOfComponents(4);
-        internals.HitImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-        ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, internals.HitImage->GetPointer(0));
-        this->HitImageWidth = width;
-        this->HitImageHeight = height;
-      }
-      ostate->PopFramebufferBindings();
-      if (!complete)
-      {
-        this->HitImageWidth = 0;
-        this->HitImageHeight = 0;
-        internals.HitImage->SetNumberOfTuples(0);
-        vtkErrorMacro(<< "hit capture: the float framebuffer is incomplete ("
-                      << (status ? status : "unknown status") << ")");
-      }
-      internals.HitImage->Modified();
-    }
+    internals.HitImage->SetNumberOfComponents(4);
+    internals.HitImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, internals.HitImage->GetPointer(0));
+    this->HitImageWidth = width;
+    this->HitImageHeight = height;
   }
-  if (useEnvironment)
+  ostate->PopFramebufferBindings();
+  if (!complete)
   {
-    internals.Environment->Deactivate();
+    this->HitImageWidth = 0;
+    this->HitImageHeight = 0;
+    internals.HitImage->SetNumberOfTuples(0);
+    vtkErrorMacro(<< "hit capture: the float framebuffer is incomplete ("
+                  << (status ? status : "unknown status") << ")");
   }
-  this->LastError.clear();
+  internals.HitImage->Modified();
 }
 
 //------------------------------------------------------------------------------
 void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* integrators[] = { "Euler", "RungeKutta4", "Adaptive" };
   static const char* projections[] = { "Perspective", "Equirectangular" };
   os << indent << "Metric: " << this->Metric << "\n";
   os << indent << "Scene: " << this->Scene << "\n";
   os << indent << "UseSceneSettings: " << (this->UseSceneSettings ? "On" : "Off") << "\n";
-  os << indent << "IntegratorType: " << integrators[this->IntegratorType] << "\n";
-  os << indent << "StepSize: " << this->StepSize << "\n";
-  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
-  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "IntegrationSettings:\n";
+  this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Projection: " << projections[this->Projection] << "\n";
   os << indent << "CaptureHits: " << (this->CaptureHits ? "On" : "Off") << "\n";
   os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";

@@ -26,15 +26,16 @@
  * width about the up axis, latitude up the height) around the observer.
  *
  * Rays: integrated in Riemannian arc length with Euler (the paper's), RK4, or
- * adaptive Dormand-Prince 5(4) (steps between 1e-6 and 100 times StepSize,
- * as riemann::TraceRay) with the same rules as riemann::TraceRay: after each
- * step the chord is intersected with the scene (the GLSL mirrors
- * riemann::IntersectSegment), and the ray stops at the first hit, at
- * MaximumLength, after MaximumNumberOfSteps, or where the integration fails.
- * With UseSceneSettings on (the default) the integrator, step, limits and
- * tolerance come from the scene's "integrator" block and the projection from
- * its "camera" block (when it has one); with it off, from this pass's own
- * settings.
+ * adaptive Dormand-Prince 5(4) (steps between 1e-6 and 4 times
+ * InitialIntegrationStep, as riemann::TraceRay) with the same rules as
+ * riemann::TraceRay: after each step the chord is intersected with the scene
+ * (the GLSL mirrors riemann::IntersectSegment), and the ray stops at the
+ * first hit, at MaximumPropagation, after MaximumNumberOfSteps, or where the
+ * integration fails. With UseSceneSettings on (the default) the integration
+ * comes from the scene's "integrator" block and the projection from its
+ * "camera" block (when it has one); with it off, from
+ * GetIntegrationSettings() (vtkRiemannIntegrationSettings, shared vocabulary
+ * with the filters) and Projection.
  *
  * Shading: the material colour (riemann::SurfaceColor); with the scene's
  * "observer" lighting, times the Lambert cosine between the arriving velocity
@@ -86,9 +87,12 @@
 #include <string> // For std::string
 
 class vtkFloatArray;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkRiemannIntegrationSettings;
 class vtkRiemannMetric;
+class vtkShaderProgram;
 class vtkRiemannScene;
 
 namespace riemann
@@ -124,14 +128,6 @@ public:
   vtkGetObjectMacro(Scene, vtkRiemannScene);
   ///@}
 
-  /// Integrators (riemann::IntegratorType's numbering).
-  enum Integrators
-  {
-    EULER = 0,
-    RUNGE_KUTTA4 = 1,
-    ADAPTIVE = 2
-  };
-
   /// Projections (riemann::Projection's numbering).
   enum Projections
   {
@@ -151,36 +147,15 @@ public:
   ///@}
 
   ///@{
-  /// Integrator (when UseSceneSettings is off): EULER, RUNGE_KUTTA4 (default) or ADAPTIVE.
-  vtkSetClampMacro(IntegratorType, int, EULER, ADAPTIVE);
-  vtkGetMacro(IntegratorType, int);
-  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
-  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
-  void SetIntegratorTypeToAdaptive() { this->SetIntegratorType(ADAPTIVE); }
-  ///@}
-
-  ///@{
-  /// Step in arc length (the initial step of ADAPTIVE); default 0.02.
-  vtkSetClampMacro(StepSize, double, 1e-6, VTK_DOUBLE_MAX);
-  vtkGetMacro(StepSize, double);
-  ///@}
-
-  ///@{
-  /// Steps per ray at most; default 1000.
-  vtkSetClampMacro(MaximumNumberOfSteps, int, 1, VTK_INT_MAX);
-  vtkGetMacro(MaximumNumberOfSteps, int);
-  ///@}
-
-  ///@{
-  /// Arc length per ray at most; default 30.
-  vtkSetClampMacro(MaximumLength, double, 1e-6, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumLength, double);
-  ///@}
-
-  ///@{
-  /// Per-step tolerance of ADAPTIVE (mixed absolute/relative); default 1e-4.
-  vtkSetClampMacro(Tolerance, double, 1e-12, VTK_DOUBLE_MAX);
-  vtkGetMacro(Tolerance, double);
+  /**
+   * How rays are integrated when UseSceneSettings is off (shareable with the
+   * ray bundle and the CPU tracer; never null). Defaults: RUNGE_KUTTA4, step
+   * 0.02, MaximumPropagation 30, 1000 steps, MaximumError 1e-4. The
+   * adaptive step is bounded relative to InitialIntegrationStep (1e-6 to 4
+   * times; riemann::AdaptiveMaximumStepFactor), not by Minimum/MaximumIntegrationStep.
+   */
+  void SetIntegrationSettings(vtkRiemannIntegrationSettings* settings);
+  vtkGetObjectMacro(IntegrationSettings, vtkRiemannIntegrationSettings);
   ///@}
 
   ///@{
@@ -242,11 +217,7 @@ protected:
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannScene* Scene = nullptr;
   bool UseSceneSettings = true;
-  int IntegratorType = RUNGE_KUTTA4;
-  double StepSize = 0.02;
-  int MaximumNumberOfSteps = 1000;
-  double MaximumLength = 30.0;
-  double Tolerance = 1e-4;
+  vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   int Projection = PERSPECTIVE;
   bool CaptureHits = false;
   char* ExtraShaderCode = nullptr;
@@ -262,6 +233,28 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  /// What one frame draws: window, viewport, metric, scene, rays and observer.
+  struct FrameState;
+
+  ///@{
+  /// The steps of Render(), in order. Each returns false after Fail().
+  bool PrepareFrame(const vtkRenderState* s, FrameState& frame);
+  vtkShaderProgram* ReadyProgram(FrameState& frame);
+  bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
+  void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
+  void SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame);
+  bool ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame);
+  void DrawView(vtkShaderProgram* program, const FrameState& frame);
+  void CaptureHitImage(vtkShaderProgram* program, const FrameState& frame);
+  ///@}
+
+  /// The fragment shader of this frame: fixed GLSL + the metric's + the integrator.
+  std::string ComposeFragmentSource(const FrameState& frame) const;
+
+  /// Compile and link `source`; null with `message` (the GLSL log) on failure.
+  std::unique_ptr<vtkOpenGLQuadHelper> BuildProgram(
+    const std::string& source, const FrameState& frame, std::string& message);
 
   /// Report an error that prevents drawing the view, and clear the view to red.
   void Fail(const std::string& message, vtkOpenGLRenderWindow* renWin, const int viewport[4]);

@@ -13,6 +13,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
@@ -68,8 +69,8 @@ int main(int argc, char** argv)
   vtkNew<vtkRiemannRayTracePass> pass;
   pass->SetMetric(metric);
   pass->SetUseSceneSettings(false);
-  pass->SetStepSize(0.02);
-  pass->SetMaximumLength(1e9);
+  pass->GetIntegrationSettings()->SetInitialIntegrationStep(0.02);
+  pass->GetIntegrationSettings()->SetMaximumPropagation(1e9);
   vtkNew<vtkRenderer> renderer;
   renderer->SetPass(pass);
   vtkNew<vtkRenderWindow> window;
@@ -90,12 +91,12 @@ int main(int argc, char** argv)
   {
     pass->SetScene(scene.Object);
     scene.Object->ApplyCamera(renderer->GetActiveCamera());
-    for (int integrator : { vtkRiemannRayTracePass::EULER, vtkRiemannRayTracePass::RUNGE_KUTTA4 })
+    for (int integrator : { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
     {
-      pass->SetIntegratorType(integrator);
+      pass->GetIntegrationSettings()->SetIntegratorType(integrator);
       for (int steps : { 100, 300, 1000 })
       {
-        pass->SetMaximumNumberOfSteps(steps);
+        pass->GetIntegrationSettings()->SetMaximumNumberOfSteps(steps);
         if (first)
         {
           window->Render(); // compile the shader outside the timings
@@ -130,7 +131,7 @@ int main(int argc, char** argv)
             static_cast<double>(width) * height * steps / median);
         }
         std::printf("| %s | %s | %d | %.3f | %.2f | %s |\n", scene.Name,
-          integrator == vtkRiemannRayTracePass::EULER ? "euler" : "rk4", steps, median,
+          integrator == vtkRiemannIntegrationSettings::EULER ? "euler" : "rk4", steps, median,
           1.0 / median, throughput);
         std::fflush(stdout);
       }

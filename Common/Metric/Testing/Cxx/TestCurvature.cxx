@@ -47,7 +47,7 @@ std::filesystem::path DataDirectory()
       return dir;
     }
   }
-  return std::filesystem::path(__FILE__).parent_path() / ".." / ".." / ".." / ".." / "Data";
+  return std::filesystem::path(RIEMANN_TEST_DATA_DIR);
 }
 
 /// Every check a space of constant sectional curvature K must pass.

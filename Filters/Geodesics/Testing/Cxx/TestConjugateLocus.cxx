@@ -6,6 +6,7 @@
 // - Twist metric (flat, a pull-back of Euclidean space: Hadamard): no
 //   conjugate points at all.
 // - No metric: an error and empty output.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannMetric.h"
 
@@ -58,8 +59,8 @@ int CheckSphereAntipode(double step)
   locus->SetMetric(metric);
   locus->SetObserver(Observer[0], Observer[1], Observer[2]);
   locus->SetNumberOfDirections(200);
-  locus->SetIntegrationStep(step);
-  locus->SetMaximumPropagation(4.0);
+  locus->GetIntegrationSettings()->SetInitialIntegrationStep(step);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(4.0);
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(&progressEvents);
@@ -132,7 +133,7 @@ TEST(ConjugateLocus, SphereSecondConjugatePointInACone)
   locus->SetNumberOfDirections(10);
   locus->SetConeAxis(1.0, 1.0, 0.0);
   locus->SetConeAngle(30.0);
-  locus->SetMaximumPropagation(7.0);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(7.0);
   locus->SetMaximumNumberOfConjugatePoints(2);
   locus->Update();
   vtkPolyData* output = locus->GetOutput();
@@ -154,8 +155,8 @@ TEST(ConjugateLocus, HadamardTwistHasNoConjugatePoints)
   locus->SetMetric(metric);
   locus->SetObserver(Observer[0], Observer[1], Observer[2]);
   locus->SetNumberOfDirections(200);
-  locus->SetIntegrationStep(0.01);
-  locus->SetMaximumPropagation(8.0);
+  locus->GetIntegrationSettings()->SetInitialIntegrationStep(0.01);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(8.0);
   locus->SetMaximumNumberOfConjugatePoints(0);
   ErrorCounter counter;
   vtkNew<vtkCallbackCommand> callback;

@@ -9,6 +9,7 @@
 //   (measured on S^3 in R^4, independently of the library), its transverse
 //   Jacobian is sin^2 r, and at r = pi it collapses to the antipode, which is
 //   also the whole first conjugate locus.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannExponentialMap.h"
@@ -186,8 +187,8 @@ TEST(ExponentialMap, EuclideanWavefrontsAreRoundSpheres)
   expmap->SetNumberOfDirections(100);
   expmap->AddRadius(0.5);
   expmap->AddRadius(1.25);
-  expmap->SetMaximumPropagation(2.0);
-  expmap->SetIntegrationStep(0.1);
+  expmap->GetIntegrationSettings()->SetMaximumPropagation(2.0);
+  expmap->GetIntegrationSettings()->SetInitialIntegrationStep(0.1);
   expmap->Update();
 
   vtkPolyData* bundle = expmap->GetOutput(0);
@@ -217,20 +218,20 @@ TEST(ExponentialMap, UnitSphereWavefrontsAndAntipode)
 {
   const double observer[3] = { 0.2, 0.1, -0.3 };
   for (const int integrator :
-    { vtkRiemannExponentialMap::RUNGE_KUTTA4, vtkRiemannExponentialMap::DORMAND_PRINCE45 })
+    { vtkRiemannIntegrationSettings::RUNGE_KUTTA4, vtkRiemannIntegrationSettings::DORMAND_PRINCE45 })
   {
     SCOPED_TRACE("integrator " + std::to_string(integrator));
     vtkNew<vtkRiemannExponentialMap> expmap;
     expmap->SetMetric(MakeMetric(SphereJson));
     expmap->SetObserver(observer[0], observer[1], observer[2]);
     expmap->SetNumberOfDirections(60);
-    expmap->SetIntegratorType(integrator);
-    expmap->SetMaximumError(1e-10);
+    expmap->GetIntegrationSettings()->SetIntegratorType(integrator);
+    expmap->GetIntegrationSettings()->SetMaximumError(1e-10);
     for (const double r : { 1.0, 2.0, vtkMath::Pi() })
     {
       expmap->AddRadius(r);
     }
-    expmap->SetMaximumPropagation(3.5);
+    expmap->GetIntegrationSettings()->SetMaximumPropagation(3.5);
     expmap->Update();
     vtkPolyData* fronts = expmap->GetOutput(1);
     ASSERT_EQ(fronts->GetNumberOfPoints(), 180);
@@ -263,7 +264,7 @@ TEST(ExponentialMap, UnitSphereWavefrontsAndAntipode)
     }
     // Fixed-step RK4 is less accurate where geodesics run through large
     // coordinates (near the point at infinity of the projection).
-    EXPECT_LT(worst, integrator == vtkRiemannExponentialMap::RUNGE_KUTTA4 ? 1e-4 : 1e-7);
+    EXPECT_LT(worst, integrator == vtkRiemannIntegrationSettings::RUNGE_KUTTA4 ? 1e-4 : 1e-7);
   }
 }
 
@@ -285,12 +286,12 @@ TEST(ExponentialMap, ErrorsGiveEmptyOutputs)
   EXPECT_EQ(expmap->GetOutput(1)->GetNumberOfPoints(), 0);
   expmap->RemoveAllRadii();
   expmap->SetNumberOfDirections(1000000);
-  expmap->SetMaximumPropagation(100.0);
+  expmap->GetIntegrationSettings()->SetMaximumPropagation(100.0);
   expmap->Update(); // 1e10 samples: refused before tracing
   EXPECT_EQ(counter.Errors, 3);
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
   expmap->SetNumberOfDirections(100);
-  expmap->SetMaximumPropagation(5.0);
+  expmap->GetIntegrationSettings()->SetMaximumPropagation(5.0);
   expmap->SetConeAngle(20.0);
   expmap->SetConeAxis(0.0, 0.0, 0.0);
   expmap->Update(); // zero axis
@@ -305,9 +306,9 @@ TEST(ConjugateLocus, SphereLocusSurfaceCollapsesToTheAntipode)
   locus->SetMetric(MakeMetric(SphereJson));
   locus->SetObserver(observer[0], observer[1], observer[2]);
   locus->SetNumberOfDirections(50);
-  locus->SetMaximumPropagation(4.0);
-  locus->SetIntegratorTypeToDormandPrince45();
-  locus->SetIntegrationStep(0.01);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(4.0);
+  locus->GetIntegrationSettings()->SetIntegratorTypeToDormandPrince45();
+  locus->GetIntegrationSettings()->SetInitialIntegrationStep(0.01);
   locus->Update();
   vtkPolyData* surface = locus->GetOutput(1);
   ASSERT_EQ(surface->GetNumberOfPoints(), 50);

@@ -8,6 +8,7 @@
 //   with arc length s(x) = int n dx (closed form with erf), and every ray keeps
 //   the angular momentum n^2 (x × v) (the rotations are Killing fields);
 // - the parallel filter against a serial loop over the core's TraceGeodesic.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannGeodesicTracer.h"
 #include "vtkRiemannMetric.h"
 
@@ -301,9 +302,9 @@ TEST(GeodesicTracer, TwistMatchesExactGeodesics)
   MessageLog log(tracer);
   tracer->SetMetric(metric);
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetIntegratorTypeToRungeKutta4();
-  tracer->SetInitialIntegrationStep(0.01);
-  tracer->SetMaximumPropagation(3.0);
+  tracer->GetIntegrationSettings()->SetIntegratorTypeToRungeKutta4();
+  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(0.01);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(3.0);
   tracer->Update();
   EXPECT_TRUE(log.Errors.empty() && log.Warnings.empty());
 
@@ -352,7 +353,7 @@ TEST(GeodesicTracer, StartPositionWithoutInput)
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetStartPosition(p.data());
   tracer->SetStartDirection(d.data());
-  tracer->SetMaximumPropagation(2.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(2.0);
   tracer->Update();
   const auto lines = Lines(tracer->GetOutput());
   ASSERT_EQ(lines.size(), 1u);
@@ -370,7 +371,7 @@ TEST(GeodesicTracer, BothDirections)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(length);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(length);
   tracer->SetIntegrationDirectionToBoth();
   tracer->Update();
 
@@ -456,7 +457,7 @@ TEST(GeodesicTracer, NoMetricGivesErrorAndEmptyOutput)
   // Defining the metric afterwards re-executes the filter (the metric's
   // modification time is part of the filter's).
   ASSERT_TRUE(metric->SetDefinition(TwistJson)) << metric->GetLastError();
-  tracer->SetMaximumPropagation(1.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(1.0);
   tracer->Update();
   EXPECT_EQ(log.Errors.size(), 2u);
   EXPECT_EQ(tracer->GetOutput()->GetNumberOfLines(), seeds->GetNumberOfPoints());
@@ -470,7 +471,7 @@ TEST(GeodesicTracer, MetricChangeReexecutes)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(metric);
   tracer->SetInputData(MakeSeeds({ p }, { d }));
-  tracer->SetMaximumPropagation(2.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(2.0);
   tracer->Update();
   auto lines = Lines(tracer->GetOutput());
   ASSERT_EQ(lines.size(), 1u);
@@ -496,7 +497,7 @@ TEST(GeodesicTracer, ZeroDirectionSeedIsSkipped)
   MessageLog log(tracer);
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(1.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(1.0);
   tracer->Update();
   EXPECT_TRUE(log.Errors.empty());
   ASSERT_EQ(log.Warnings.size(), 1u);
@@ -570,7 +571,7 @@ TEST(GeodesicTracer, SeedsWithoutDirectionArrayUseStartDirection)
   tracer->SetMetric(MakeMetric(EuclideanJson));
   tracer->SetInputData(seeds);
   tracer->SetStartDirection(d.data());
-  tracer->SetMaximumPropagation(1.5);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(1.5);
   tracer->Update();
   EXPECT_EQ(log.Warnings.size(), 1u);
   const auto lines = Lines(tracer->GetOutput());
@@ -589,7 +590,7 @@ TEST(GeodesicTracer, ProgressReachesOne)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(0.5);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(0.5);
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&progress);
@@ -617,7 +618,7 @@ TEST(GeodesicTracer, AbortFromProgressObserverStopsEarly)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(EightGaussiansJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(5.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(5.0);
   // Abort at the first report between 0 and 1 (after the first batch of
   // seeds), then count the reports that still come: none should, as the
   // filter stops tracing instead of finishing the other batches.
@@ -662,7 +663,7 @@ TEST(GeodesicTracer, AbortFromProgressObserverStopsEarly)
 
   // The abort flag does not stick: a later run traces every seed.
   tracer->RemoveObserver(observer);
-  tracer->SetMaximumPropagation(0.2);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(0.2);
   tracer->Update();
   EXPECT_EQ(tracer->GetOutput()->GetNumberOfLines(), count);
 }
@@ -695,10 +696,10 @@ TEST(GeodesicTracer, ParallelEqualsSerialCore)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(EightGaussiansJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(2.0);
-  tracer->SetInitialIntegrationStep(0.02);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(2.0);
+  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(0.02);
   tracer->SetIntegrationDirectionToBoth();
-  ASSERT_EQ(tracer->GetMaximumNumberOfSteps(), options.MaximumSteps);
+  ASSERT_EQ(tracer->GetIntegrationSettings()->GetMaximumNumberOfSteps(), options.MaximumSteps);
 
   // Every SMP backend this VTK has (TBB is Debian's default, with as many
   // threads as cores), then back to the default.
@@ -753,8 +754,8 @@ TEST(GeodesicTracer, DomainBoundsStopLines)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(EuclideanJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetInitialIntegrationStep(h);
-  tracer->SetMaximumPropagation(10.0);
+  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(h);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(10.0);
   tracer->UseDomainBoundsOn();
   const double bounds[6] = { -1, 1, -1, 1, -1, 1 };
   tracer->SetDomainBounds(bounds);
@@ -780,7 +781,7 @@ TEST(GeodesicTracer, DomainBoundsStopLines)
 
   // The same seeds without bounds run to the full length.
   tracer->UseDomainBoundsOff();
-  tracer->SetMaximumPropagation(3.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(3.0);
   tracer->Update();
   for (const Line& line : Lines(tracer->GetOutput()))
   {
@@ -794,9 +795,9 @@ TEST(GeodesicTracer, MaximumNumberOfSteps)
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetStartPosition(0.2, 0.1, 0.0);
   tracer->SetStartDirection(1.0, 1.0, 1.0);
-  tracer->SetInitialIntegrationStep(0.01);
-  tracer->SetMaximumPropagation(10.0);
-  tracer->SetMaximumNumberOfSteps(37);
+  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(0.01);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(10.0);
+  tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(37);
   tracer->Update();
   const auto lines = Lines(tracer->GetOutput());
   ASSERT_EQ(lines.size(), 1u);
@@ -810,17 +811,17 @@ TEST(GeodesicTracer, EuclideanLinesAreStraight)
   const std::vector<V3> points{ { 0, 0, 0 }, { 1, -2, 3 }, { -0.5, 0.25, 0.125 } };
   const std::vector<V3> dirs{ { 1, 0, 0 }, { 0.3, -4, 2 }, { -1e-3, 2e-3, 5e-4 } };
   const double length = 4.0;
-  for (int integrator : { vtkRiemannGeodesicTracer::EULER, vtkRiemannGeodesicTracer::RUNGE_KUTTA4,
-         vtkRiemannGeodesicTracer::DORMAND_PRINCE45 })
+  for (int integrator : { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4,
+         vtkRiemannIntegrationSettings::DORMAND_PRINCE45 })
   {
     SCOPED_TRACE("integrator " + std::to_string(integrator));
     vtkNew<vtkRiemannGeodesicTracer> tracer;
     MessageLog log(tracer);
     tracer->SetMetric(MakeMetric(EuclideanJson));
     tracer->SetInputData(MakeSeeds(points, dirs));
-    tracer->SetIntegratorType(integrator);
-    tracer->SetInitialIntegrationStep(0.05);
-    tracer->SetMaximumPropagation(length);
+    tracer->GetIntegrationSettings()->SetIntegratorType(integrator);
+    tracer->GetIntegrationSettings()->SetInitialIntegrationStep(0.05);
+    tracer->GetIntegrationSettings()->SetMaximumPropagation(length);
     tracer->Update();
     EXPECT_TRUE(log.Errors.empty() && log.Warnings.empty());
     const auto lines = Lines(tracer->GetOutput());
@@ -863,7 +864,7 @@ TEST(GeodesicTracer, ConformalLens)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(metric);
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(4.5);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(4.5);
   tracer->Update();
   const auto lines = Lines(tracer->GetOutput());
   ASSERT_EQ(lines.size(), points.size());
@@ -920,9 +921,9 @@ TEST(GeodesicTracer, DormandPrince45OnTwist)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetIntegratorTypeToDormandPrince45();
-  tracer->SetMaximumError(1e-9);
-  tracer->SetMaximumPropagation(3.0);
+  tracer->GetIntegrationSettings()->SetIntegratorTypeToDormandPrince45();
+  tracer->GetIntegrationSettings()->SetMaximumError(1e-9);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(3.0);
   tracer->Update();
   const auto lines = Lines(tracer->GetOutput());
   ASSERT_EQ(lines.size(), points.size());
@@ -948,14 +949,14 @@ TEST(GeodesicTracer, TransverseJacobianOnTheUnitSphere)
   const std::vector<V3> points = { { 0.5, 0.0, 0.0 }, { 0.1, -0.2, 0.3 } };
   const std::vector<V3> dirs = { { 0.2, 1.0, 0.5 }, { 1.0, 1.0, 0.0 } };
   tracer->SetInputData(MakeSeeds(points, dirs));
-  tracer->SetMaximumPropagation(3.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(3.0);
   tracer->SetIntegrationDirectionToBoth();
-  for (const int integrator : { vtkRiemannGeodesicTracer::EULER,
-         vtkRiemannGeodesicTracer::RUNGE_KUTTA4, vtkRiemannGeodesicTracer::DORMAND_PRINCE45 })
+  for (const int integrator : { vtkRiemannIntegrationSettings::EULER,
+         vtkRiemannIntegrationSettings::RUNGE_KUTTA4, vtkRiemannIntegrationSettings::DORMAND_PRINCE45 })
   {
     SCOPED_TRACE("integrator " + std::to_string(integrator));
-    tracer->SetIntegratorType(integrator);
-    tracer->SetInitialIntegrationStep(integrator == vtkRiemannGeodesicTracer::EULER ? 0.001 : 0.01);
+    tracer->GetIntegrationSettings()->SetIntegratorType(integrator);
+    tracer->GetIntegrationSettings()->SetInitialIntegrationStep(integrator == vtkRiemannIntegrationSettings::EULER ? 0.001 : 0.01);
     tracer->ComputeTransverseJacobianOff();
     tracer->Update();
     vtkNew<vtkPolyData> plain;
@@ -972,7 +973,7 @@ TEST(GeodesicTracer, TransverseJacobianOnTheUnitSphere)
     ASSERT_NE(singular, nullptr);
     ASSERT_EQ(singular->GetNumberOfComponents(), 2);
     ASSERT_EQ(output->GetNumberOfLines(), 4);
-    const double tolerance = integrator == vtkRiemannGeodesicTracer::EULER ? 5e-3 : 1e-6;
+    const double tolerance = integrator == vtkRiemannIntegrationSettings::EULER ? 5e-3 : 1e-6;
     double worst = 0.0;
     for (vtkIdType k = 0; k < output->GetNumberOfPoints(); ++k)
     {
@@ -982,7 +983,7 @@ TEST(GeodesicTracer, TransverseJacobianOnTheUnitSphere)
       worst = std::max(worst, std::abs(singular->GetComponent(k, 1) - std::abs(std::sin(s))));
     }
     EXPECT_LT(worst, tolerance);
-    if (integrator != vtkRiemannGeodesicTracer::DORMAND_PRINCE45)
+    if (integrator != vtkRiemannIntegrationSettings::DORMAND_PRINCE45)
     {
       // Fixed steps: the geodesic part of the Jacobi system is the geodesic
       // flow itself, so the points are the same.
@@ -1005,7 +1006,7 @@ TEST(GeodesicTracer, TransverseJacobianOfAFlatMetricIsSSquared)
   vtkNew<vtkRiemannGeodesicTracer> tracer;
   tracer->SetMetric(MakeMetric(TwistJson));
   tracer->SetInputData(MakeSeeds(TwistSeedPoints(), TwistSeedDirections()));
-  tracer->SetMaximumPropagation(3.0);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(3.0);
   tracer->ComputeTransverseJacobianOn();
   tracer->Update();
   vtkPolyData* output = tracer->GetOutput();

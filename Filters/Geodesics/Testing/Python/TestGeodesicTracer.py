@@ -20,6 +20,7 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 import riemann
 
 Tracer = riemann.vtkRiemannGeodesicTracer
+Settings = riemann.vtkRiemannIntegrationSettings
 TWIST = '{"type": "diffeo", "preset": "twist", "rate": 1}'
 
 SEEDS = np.array([[1.0, 0.0, -1.0], [0.3, -0.7, 0.2], [-1.2, 0.5, 0.9], [0.0, 0.0, 0.0],
@@ -105,18 +106,18 @@ def speed_squared(metric, p, v):
 
 class TracerTest(unittest.TestCase):
     def test_constants(self):
-        self.assertEqual((Tracer.EULER, Tracer.RUNGE_KUTTA4, Tracer.DORMAND_PRINCE45), (0, 1, 2))
+        self.assertEqual((Settings.EULER, Settings.RUNGE_KUTTA4, Settings.DORMAND_PRINCE45), (0, 1, 2))
         self.assertEqual((Tracer.FORWARD, Tracer.BACKWARD, Tracer.BOTH), (0, 1, 2))
         self.assertEqual((Tracer.OUT_OF_DOMAIN, Tracer.NOT_INITIALIZED, Tracer.UNEXPECTED_VALUE,
                           Tracer.OUT_OF_LENGTH, Tracer.OUT_OF_STEPS, Tracer.STAGNATION,
                           Tracer.DEGENERATE_METRIC, Tracer.HIT_SURFACE),
                          (1, 2, 3, 4, 5, 6, 8, 9))
         t = Tracer()
-        self.assertEqual(t.GetIntegratorType(), Tracer.RUNGE_KUTTA4)  # the default
-        t.SetIntegratorTypeToDormandPrince45()
-        self.assertEqual(t.GetIntegratorType(), Tracer.DORMAND_PRINCE45)
-        t.SetIntegratorTypeToEuler()
-        self.assertEqual(t.GetIntegratorType(), Tracer.EULER)
+        self.assertEqual(t.GetIntegrationSettings().GetIntegratorType(), Settings.RUNGE_KUTTA4)  # the default
+        t.GetIntegrationSettings().SetIntegratorTypeToDormandPrince45()
+        self.assertEqual(t.GetIntegrationSettings().GetIntegratorType(), Settings.DORMAND_PRINCE45)
+        t.GetIntegrationSettings().SetIntegratorTypeToEuler()
+        self.assertEqual(t.GetIntegrationSettings().GetIntegratorType(), Settings.EULER)
         t.SetIntegrationDirectionToBoth()
         self.assertEqual(t.GetIntegrationDirection(), Tracer.BOTH)
         self.assertEqual(t.GetDirectionArrayName(), 'Direction')
@@ -129,11 +130,12 @@ class TracerTest(unittest.TestCase):
         t = Tracer()
         t.SetMetric(metric)
         t.SetInputData(make_seeds(SEEDS, DIRECTIONS))
-        t.SetIntegratorType(integrator)
-        t.SetInitialIntegrationStep(step)
-        t.SetMaximumPropagation(length)
+        t.GetIntegrationSettings().SetIntegratorType(integrator)
+        t.GetIntegrationSettings().SetInitialIntegrationStep(step)
+        t.GetIntegrationSettings().SetMaximumPropagation(length)
         for name, value in settings.items():
-            getattr(t, 'Set' + name)(value)
+            owner = t.GetIntegrationSettings() if hasattr(Settings, 'Set' + name) else t
+            getattr(owner, 'Set' + name)(value)
         errors = []
         t.AddObserver(vtkCommand.ErrorEvent, lambda obj, event: errors.append(event))
         t.AddObserver(vtkCommand.WarningEvent, lambda obj, event: errors.append(event))
@@ -143,7 +145,7 @@ class TracerTest(unittest.TestCase):
 
     def test_rk4_twist_endpoints(self):
         length = 3.0
-        metric, output = self.trace(Tracer.RUNGE_KUTTA4, length)
+        metric, output = self.trace(Settings.RUNGE_KUTTA4, length)
         a = arrays_of(output)
         lines = lines_of(output)
         self.assertEqual(len(lines), len(SEEDS))
@@ -174,7 +176,7 @@ class TracerTest(unittest.TestCase):
 
     def test_dormand_prince_twist_endpoints(self):
         length = 3.0
-        _, output = self.trace(Tracer.DORMAND_PRINCE45, length, MaximumError=1e-9)
+        _, output = self.trace(Settings.DORMAND_PRINCE45, length, MaximumError=1e-9)
         a = arrays_of(output)
         lines = lines_of(output)
         self.assertEqual(len(lines), len(SEEDS))
@@ -189,7 +191,7 @@ class TracerTest(unittest.TestCase):
     def test_euler_converges_at_first_order(self):
         errors = []
         for step in (0.02, 0.01):
-            _, output = self.trace(Tracer.EULER, 1.0, step)
+            _, output = self.trace(Settings.EULER, 1.0, step)
             a = arrays_of(output)
             first, count = lines_of(output)[0]
             errors.append(np.linalg.norm(a['points'][first + count - 1]
@@ -198,7 +200,7 @@ class TracerTest(unittest.TestCase):
         self.assertAlmostEqual(math.log2(errors[0] / errors[1]), 1.0, delta=0.15)
 
     def test_both_directions(self):
-        _, output = self.trace(Tracer.RUNGE_KUTTA4, 2.0, IntegrationDirection=Tracer.BOTH)
+        _, output = self.trace(Settings.RUNGE_KUTTA4, 2.0, IntegrationDirection=Tracer.BOTH)
         a = arrays_of(output)
         lines = lines_of(output)
         self.assertEqual(len(lines), 2 * len(SEEDS))
@@ -231,7 +233,7 @@ class TracerTest(unittest.TestCase):
         t = Tracer()
         t.SetMetric(make_metric(TWIST))
         t.SetInputData(make_seeds(points, directions))
-        t.SetMaximumPropagation(0.3)
+        t.GetIntegrationSettings().SetMaximumPropagation(0.3)
         progress = []
         t.AddObserver(vtkCommand.ProgressEvent,
                       lambda obj, event: progress.append(obj.GetProgress()))

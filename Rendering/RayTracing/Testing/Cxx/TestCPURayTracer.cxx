@@ -11,6 +11,7 @@
 // - the exact reference of the twist (Phi^-1 of straight lines): RK4's hit error
 //   is far below Euler's; the tracer's exact hits match an independent one;
 // - anti-aliasing is deterministic; errors give empty output.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannCPURayTracer.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
@@ -66,7 +67,7 @@ fs::path DataDirectory()
   {
     return dir;
   }
-  return fs::path(__FILE__).parent_path() / "../../../../Data";
+  return fs::path(RIEMANN_TEST_DATA_DIR);
 }
 
 fs::path TemporaryDirectory(const std::string& name)
@@ -539,7 +540,7 @@ TEST(CPURayTracer, TwistHitErrorAgainstTheExactReference)
   ASSERT_TRUE(metric->SetDefinition(TwistJson));
   std::array<double, 2> median{};
   std::array<double, 2> maximum{};
-  for (int method : { vtkRiemannCPURayTracer::EULER, vtkRiemannCPURayTracer::RUNGE_KUTTA4 })
+  for (int method : { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
   {
     vtkNew<vtkRiemannCPURayTracer> tracer;
     tracer->SetMetric(metric);
@@ -548,10 +549,10 @@ TEST(CPURayTracer, TwistHitErrorAgainstTheExactReference)
     tracer->SetHeight(24);
     tracer->SetComputeHitError(true);
     tracer->UseSceneSettingsOff();
-    tracer->SetIntegratorType(method);
-    tracer->SetStepSize(0.02);
-    tracer->SetMaximumNumberOfSteps(1500);
-    tracer->SetMaximumLength(30);
+    tracer->GetIntegrationSettings()->SetIntegratorType(method);
+    tracer->GetIntegrationSettings()->SetInitialIntegrationStep(0.02);
+    tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(1500);
+    tracer->GetIntegrationSettings()->SetMaximumPropagation(30);
     tracer->Update();
     vtkDataArray* error = tracer->GetOutput()->GetPointData()->GetArray("HitError");
     ASSERT_NE(error, nullptr);
@@ -568,7 +569,7 @@ TEST(CPURayTracer, TwistHitErrorAgainstTheExactReference)
     }
     ASSERT_GT(values.size(), 32u * 24u / 2);
     std::sort(values.begin(), values.end());
-    const int k = method == vtkRiemannCPURayTracer::EULER ? 0 : 1;
+    const int k = method == vtkRiemannIntegrationSettings::EULER ? 0 : 1;
     median[k] = values[values.size() / 2];
     // The maximum over the pixels that are not on a bar edge (99th percentile).
     maximum[k] = values[static_cast<std::size_t>(0.99 * (values.size() - 1))];

@@ -18,6 +18,7 @@
 //   by the escaping ray's direction.
 //
 // Rendering runs on Mesa llvmpipe under Xvfb: images stay tiny.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
@@ -387,20 +388,20 @@ TEST(RayTracePass, TwistHitsEulerVersusRungeKutta)
   ASSERT_TRUE(view.Scene->SetDefinition(sceneJson)) << view.Scene->GetLastError();
   view.SetCamera(Vec3(1.0, 0.5, 2.5), Vec3(0, 0, -0.5), Vec3(0, 1, 0), 50);
   view.Pass->UseSceneSettingsOff();
-  view.Pass->SetStepSize(step);
-  view.Pass->SetMaximumLength(maximumLength);
-  view.Pass->SetMaximumNumberOfSteps(2000);
-  view.Pass->SetTolerance(tolerance);
+  view.Pass->GetIntegrationSettings()->SetInitialIntegrationStep(step);
+  view.Pass->GetIntegrationSettings()->SetMaximumPropagation(maximumLength);
+  view.Pass->GetIntegrationSettings()->SetMaximumNumberOfSteps(2000);
+  view.Pass->GetIntegrationSettings()->SetMaximumError(tolerance);
   view.Pass->CaptureHitsOn();
   ErrorObserver errors(view.Pass);
 
   // GPU hits of each integrator, same step, same program.
-  const int integrators[3] = { vtkRiemannRayTracePass::EULER, vtkRiemannRayTracePass::RUNGE_KUTTA4,
-    vtkRiemannRayTracePass::ADAPTIVE };
+  const int integrators[3] = { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4,
+    vtkRiemannIntegrationSettings::DORMAND_PRINCE45 };
   std::vector<float> gpu[3];
   for (int k = 0; k < 3; ++k)
   {
-    view.Pass->SetIntegratorType(integrators[k]);
+    view.Pass->GetIntegrationSettings()->SetIntegratorType(integrators[k]);
     view.Render();
     ASSERT_EQ(view.Pass->GetHitImageWidth(), width);
     gpu[k].assign(view.Pass->GetHitImage()->GetPointer(0),
@@ -409,7 +410,7 @@ TEST(RayTracePass, TwistHitsEulerVersusRungeKutta)
   EXPECT_TRUE(errors.Messages.empty()) << errors.All();
   // The integrator is the one compile-time choice (one program each, cached).
   EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3);
-  view.Pass->SetIntegratorType(integrators[0]);
+  view.Pass->GetIntegrationSettings()->SetIntegratorType(integrators[0]);
   view.Render();
   EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3) << "switching back reuses the program";
 
@@ -641,9 +642,9 @@ TEST(RayTracePass, EquirectangularCentreSeesThePerspectiveCentre)
     "objects": [{"type": "grid", "spacing": 1, "thickness": 0.12, "extent": [-2, 2, -2, 2, -2, 2]}]})"));
   view.SetCamera(Vec3(0.25, 0.15, 5), Vec3(0.25, 0.15, 0), Vec3(0, 1, 0), 40);
   view.Pass->UseSceneSettingsOff();
-  view.Pass->SetStepSize(0.05);
-  view.Pass->SetMaximumNumberOfSteps(400);
-  view.Pass->SetMaximumLength(15);
+  view.Pass->GetIntegrationSettings()->SetInitialIntegrationStep(0.05);
+  view.Pass->GetIntegrationSettings()->SetMaximumNumberOfSteps(400);
+  view.Pass->GetIntegrationSettings()->SetMaximumPropagation(15);
   view.Pass->CaptureHitsOn();
   ErrorObserver errors(view.Pass);
 
@@ -685,7 +686,7 @@ TEST(RayTracePass, SceneSettingsDriveTheIntegrator)
   const auto short_ = view.Render();
   EXPECT_EQ(view.Pixel(short_, 16, 12), (std::array<int, 3>{ 102, 51, 0 }));
   view.Pass->UseSceneSettingsOff();
-  view.Pass->SetMaximumLength(10);
+  view.Pass->GetIntegrationSettings()->SetMaximumPropagation(10);
   const auto long_ = view.Render();
   EXPECT_EQ(view.Pixel(long_, 16, 12), (std::array<int, 3>{ 51, 153, 255 }));
 }

@@ -35,7 +35,7 @@ fs::path DataDirectory()
       return fs::path(dir);
     }
   }
-  return fs::path(__FILE__).parent_path() / ".." / ".." / ".." / ".." / "Data";
+  return fs::path(RIEMANN_TEST_DATA_DIR);
 }
 
 fs::path ScratchDirectory()

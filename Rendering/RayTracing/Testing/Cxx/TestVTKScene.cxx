@@ -20,7 +20,7 @@ std::filesystem::path DataDirectory()
   const char* dir = std::getenv("RIEMANN_DATA_DIR");
   return dir && *dir
     ? std::filesystem::path(dir)
-    : std::filesystem::path(__FILE__).parent_path() / ".." / ".." / ".." / ".." / "Data";
+    : std::filesystem::path(RIEMANN_TEST_DATA_DIR);
 }
 }
 

@@ -1,0 +1,81 @@
+#include "vtkRiemannGeodesicAlgorithm.h"
+
+#include "GeodesicTrace.h"
+#include "Metric.h"
+#include "vtkObjectFactory.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+
+#include <algorithm>
+
+vtkCxxSetObjectMacro(vtkRiemannGeodesicAlgorithm, Metric, vtkRiemannMetric);
+
+vtkRiemannGeodesicAlgorithm::vtkRiemannGeodesicAlgorithm()
+  : IntegrationSettings(vtkRiemannIntegrationSettings::New())
+{
+}
+
+vtkRiemannGeodesicAlgorithm::~vtkRiemannGeodesicAlgorithm()
+{
+  this->SetMetric(nullptr);
+  this->IntegrationSettings->Delete();
+}
+
+void vtkRiemannGeodesicAlgorithm::SetIntegrationSettings(vtkRiemannIntegrationSettings* settings)
+{
+  if (vtkRiemannIntegrationSettings::Share(this, this->IntegrationSettings, settings))
+  {
+    this->Modified();
+  }
+}
+
+vtkMTimeType vtkRiemannGeodesicAlgorithm::GetMTime()
+{
+  vtkMTimeType time = std::max(this->Superclass::GetMTime(), this->IntegrationSettings->GetMTime());
+  if (this->Metric)
+  {
+    time = std::max(time, this->Metric->GetMTime());
+  }
+  return time;
+}
+
+void vtkRiemannGeodesicAlgorithm::ReportError(const std::string& message)
+{
+  this->LastError = message;
+  vtkErrorMacro(<< message);
+}
+
+std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricAndSettings()
+{
+  this->LastError.clear();
+  if (!this->Metric || !this->Metric->HasDefinition())
+  {
+    this->ReportError(
+      "No metric: call SetMetric() with a vtkRiemannMetric that has a valid definition.");
+    return nullptr;
+  }
+  const std::string settingsError = this->IntegrationSettings->CheckSettings();
+  if (!settingsError.empty())
+  {
+    this->ReportError("Integration settings: " + settingsError + ".");
+    return nullptr;
+  }
+  // Held for the whole computation (SetDefinition may replace it meanwhile).
+  return this->Metric->GetMetric();
+}
+
+riemann::GeodesicOptions vtkRiemannGeodesicAlgorithm::MakeGeodesicOptions() const
+{
+  riemann::GeodesicOptions options;
+  this->IntegrationSettings->ApplyTo(options);
+  return options;
+}
+
+void vtkRiemannGeodesicAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "IntegrationSettings:\n";
+  this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "LastError: " << this->LastError << "\n";
+}

@@ -1,0 +1,92 @@
+/**
+ * @class   vtkRiemannGeodesicAlgorithm
+ * @brief   Base of the filters that integrate geodesics of a metric: the
+ *          metric, the integration settings, and their checks, once.
+ *
+ * vtkRiemannGeodesicTracer, vtkRiemannExponentialMap, vtkRiemannConjugateLocus
+ * and vtkRiemannRayBundle derive from it, as the field filters derive from
+ * vtkRiemannFieldAlgorithm. It holds:
+ *
+ * - the metric (SetMetric, required);
+ * - the integration settings (GetIntegrationSettings: integrator, steps,
+ *   error, propagation and step limits in vtkStreamTracer's words; see
+ *   vtkRiemannIntegrationSettings), which several filters and renderers may
+ *   share (SetIntegrationSettings);
+ * - GetMTime over both.
+ *
+ * A subclass's RequestData starts with CheckMetricAndSettings(): on a missing
+ * metric or an unusable setting it reports one error through vtkErrorMacro
+ * (also kept in GetLastError()) and the filter produces empty output.
+ */
+#ifndef vtkRiemannGeodesicAlgorithm_h
+#define vtkRiemannGeodesicAlgorithm_h
+
+#include "RiemannFiltersGeodesicsModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
+
+#include <memory> // For std::shared_ptr
+#include <string> // For std::string
+
+class vtkRiemannIntegrationSettings;
+class vtkRiemannMetric;
+namespace riemann
+{
+class Metric;
+struct GeodesicOptions;
+}
+
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicAlgorithm : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkRiemannGeodesicAlgorithm, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The metric whose geodesics are integrated (required).
+  virtual void SetMetric(vtkRiemannMetric* metric);
+  vtkGetObjectMacro(Metric, vtkRiemannMetric);
+  ///@}
+
+  ///@{
+  /**
+   * How geodesics are integrated. Each filter starts with its own settings
+   * object (with the filter's defaults); setting another one shares it (null
+   * is ignored).
+   */
+  virtual void SetIntegrationSettings(vtkRiemannIntegrationSettings* settings);
+  vtkGetObjectMacro(IntegrationSettings, vtkRiemannIntegrationSettings);
+  ///@}
+
+  /// Why the last execution produced no output ("" after one that did).
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+  /// Include the metric's and the settings' modification times.
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkRiemannGeodesicAlgorithm();
+  ~vtkRiemannGeodesicAlgorithm() override;
+
+  /**
+   * The core metric when there is one and every integration setting is
+   * usable; otherwise null, after reporting the problem (ReportError).
+   */
+  VTK_WRAPEXCLUDE std::shared_ptr<const riemann::Metric> CheckMetricAndSettings();
+
+  /// The core's geodesic options from the integration settings.
+  VTK_WRAPEXCLUDE riemann::GeodesicOptions MakeGeodesicOptions() const;
+
+  /// vtkErrorMacro with `message`, kept for GetLastError().
+  void ReportError(const std::string& message);
+
+  vtkRiemannMetric* Metric = nullptr;
+  vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
+  std::string LastError;
+
+private:
+  vtkRiemannGeodesicAlgorithm(const vtkRiemannGeodesicAlgorithm&) = delete;
+  void operator=(const vtkRiemannGeodesicAlgorithm&) = delete;
+};
+
+#endif
