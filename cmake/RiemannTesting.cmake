@@ -37,8 +37,9 @@ function (riemann_add_gtest_dir dir name)
 
   add_executable(${name} ${sources})
   target_link_libraries(${name} PRIVATE ${arg_LIBRARIES} GTest::gtest_main)
-  # Tests may include helpers that sit next to them.
-  target_include_directories(${name} PRIVATE "${dir}")
+  # Tests may include helpers that sit next to them, or the cross-module
+  # ones of Testing/Cxx (RenderingTestUtilities.h).
+  target_include_directories(${name} PRIVATE "${dir}" "${CMAKE_SOURCE_DIR}/Testing/Cxx")
   # Where the shipped data is when RIEMANN_DATA_DIR is not set (a test run
   # by hand): an absolute path, unlike __FILE__ under ccache or a moved test.
   target_compile_definitions(${name} PRIVATE "RIEMANN_TEST_DATA_DIR=\"${CMAKE_SOURCE_DIR}/Data\"")

@@ -204,7 +204,7 @@ class RenderTests(unittest.TestCase):
         self.assertGreater(abs(frames[1].astype(int) - frames[2].astype(int)).mean(), 0.5)
 
     def test_reference_mismatch_fails(self):
-        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/RayTracing/Testing/Data/Baseline")
+        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/OpenGL/Testing/Data/Baseline")
         out = os.path.join(self.dir, "x.png")
         status, _, err = run("render", "--scene", os.path.join(DATA, "scenes", "paper-grid.json"),
                              "--width", "160", "--height", "120",
@@ -230,7 +230,7 @@ class CpuRenderTests(unittest.TestCase):
     def test_cpu_matches_the_gpu_baselines(self):
         # The GPU's committed pictures of the paper's figures are the CPU's
         # references too: mean difference at most 0.5 of 255.
-        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/RayTracing/Testing/Data/Baseline")
+        baseline = os.path.join(os.path.dirname(__file__), "../../../Rendering/OpenGL/Testing/Data/Baseline")
         for name in ("paper-one-bump", "paper-twist"):
             with self.subTest(name):
                 out = os.path.join(self.dir, name + ".png")

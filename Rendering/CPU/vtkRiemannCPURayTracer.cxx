@@ -1,0 +1,346 @@
+#include "vtkRiemannCPURayTracer.h"
+
+#include "RiemannCPUTracer.h"
+#include "RiemannImageIO.h"
+#include "RiemannPolyDataMesh.h"
+#include "RiemannScene.h"
+#include "RiemannShading.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannObserverSettings.h"
+#include "vtkRiemannParallelBatches.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTimerLog.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannCPURayTracer);
+vtkCxxSetObjectMacro(vtkRiemannCPURayTracer, Metric, vtkRiemannMetric);
+vtkCxxSetObjectMacro(vtkRiemannCPURayTracer, Scene, vtkRiemannScene);
+vtkCxxSetObjectMacro(vtkRiemannCPURayTracer, Camera, vtkCamera);
+
+class vtkRiemannCPURayTracer::vtkInternals
+{
+public:
+  struct AddedMesh
+  {
+    vtkSmartPointer<vtkPolyData> Data;
+    riemann::MeshColoring Coloring;
+  };
+  std::vector<AddedMesh> Meshes;
+};
+
+vtkRiemannCPURayTracer::vtkRiemannCPURayTracer()
+  : IntegrationSettings(vtkRiemannIntegrationSettings::New())
+  , Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(0);
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
+}
+
+vtkRiemannCPURayTracer::~vtkRiemannCPURayTracer()
+{
+  this->SetMetric(nullptr);
+  this->SetScene(nullptr);
+  this->SetCamera(nullptr);
+  this->IntegrationSettings->Delete();
+}
+
+void vtkRiemannCPURayTracer::SetIntegrationSettings(vtkRiemannIntegrationSettings* settings)
+{
+  if (vtkRiemannIntegrationSettings::Share(this, this->IntegrationSettings, settings))
+  {
+    this->Modified();
+  }
+}
+
+vtkMTimeType vtkRiemannCPURayTracer::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  for (vtkObject* object : { static_cast<vtkObject*>(this->Metric),
+         static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera),
+         static_cast<vtkObject*>(this->IntegrationSettings) })
+  {
+    if (object)
+    {
+      time = std::max(time, object->GetMTime());
+    }
+  }
+  for (const auto& mesh : this->Internals->Meshes)
+  {
+    time = std::max(time, mesh.Data->GetMTime());
+  }
+  return time;
+}
+
+void vtkRiemannCPURayTracer::AddMesh(vtkPolyData* mesh, const char* colorArray, const char* colorMap)
+{
+  if (!mesh)
+  {
+    vtkErrorMacro(<< "AddMesh: no mesh (null)");
+    return;
+  }
+  vtkInternals::AddedMesh added;
+  added.Data = vtkSmartPointer<vtkPolyData>::New();
+  added.Data->ShallowCopy(mesh);
+  added.Coloring.Array = colorArray ? colorArray : "";
+  added.Coloring.ColorMap = colorMap ? colorMap : "cool-to-warm";
+  this->Internals->Meshes.push_back(added);
+  this->Modified();
+}
+
+void vtkRiemannCPURayTracer::RemoveAllMeshes()
+{
+  if (!this->Internals->Meshes.empty())
+  {
+    this->Internals->Meshes.clear();
+    this->Modified();
+  }
+}
+
+int vtkRiemannCPURayTracer::GetNumberOfAddedMeshes() const
+{
+  return static_cast<int>(this->Internals->Meshes.size());
+}
+
+int vtkRiemannCPURayTracer::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  const int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  const double spacing[3] = { 1, 1, 1 };
+  const double origin[3] = { 0, 0, 0 };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 3);
+  return 1;
+}
+
+namespace
+{
+vtkSmartPointer<vtkFloatArray> NewFloatArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+vtkSmartPointer<vtkIntArray> NewIntArray(const char* name, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+} // namespace
+
+int vtkRiemannCPURayTracer::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector, 0);
+  output->Initialize();
+  this->NumberOfRays = 0;
+  this->NumberOfIntegrationSteps = 0;
+  this->TraceTime = 0.0;
+  this->NumberOfTriangles = 0;
+
+  const std::shared_ptr<const riemann::Metric> metric =
+    this->Metric ? this->Metric->GetMetric() : nullptr;
+  if (!metric)
+  {
+    vtkErrorMacro(<< (this->Metric ? "the metric has no definition: call SetDefinition() on it"
+                                   : "no metric: call SetMetric() with a vtkRiemannMetric"));
+    return 1;
+  }
+
+  // The scene: the vtkRiemannScene's (or the default), plus the added meshes.
+  auto scene = std::make_shared<riemann::Scene>(
+    this->Scene ? *this->Scene->GetSceneSnapshot() : riemann::DefaultScene());
+  try
+  {
+    for (const auto& added : this->Internals->Meshes)
+    {
+      riemann::Material material; // position pseudo-colour over the mesh's bounds
+      riemann::AddMesh(*scene, riemann::MeshFromPolyData(added.Data, added.Coloring), material);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "AddMesh: " << e.what());
+    return 1;
+  }
+
+  const int width = this->Width;
+  const int height = this->Height;
+  // About 90 bytes per pixel are held at once (the tracer's results and the
+  // output arrays): refuse what would exhaust memory rather than crash.
+  if (static_cast<double>(width) * height > MaximumNumberOfPixels)
+  {
+    vtkErrorMacro(<< "The image is too large: " << width << " x " << height << " = "
+                  << static_cast<double>(width) * height / 1e6 << " million pixels, more than "
+                  << MaximumNumberOfPixels / 1e6 << " million (about "
+                  << 90.0 * MaximumNumberOfPixels / (1 << 30)
+                  << " GiB of memory); render a smaller image.");
+    return 1;
+  }
+  const std::string settingsError = this->IntegrationSettings->CheckSettings();
+  if (!this->UseSceneSettings && !settingsError.empty())
+  {
+    vtkErrorMacro(<< "Integration settings: " << settingsError << ".");
+    return 1;
+  }
+  const riemann::RaySettings rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
+  const riemann::CameraSettings camera = vtkRiemannCameraSettings(this->Camera,
+    static_cast<double>(width) / height, scene->Camera,
+    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
+
+  std::shared_ptr<riemann::EnvironmentMap> environment;
+  if (!scene->EnvironmentImage.empty())
+  {
+    environment = std::make_shared<riemann::EnvironmentMap>();
+    const std::string error = riemann::ReadEnvironmentMap(scene->EnvironmentImage, *environment);
+    if (!error.empty())
+    {
+      // As the GPU pass: reported, and the background colour stands in for it.
+      vtkErrorMacro(<< "cannot use the environment image " << scene->EnvironmentImage << ": "
+                    << error << " (the background colour is shown instead)");
+      environment.reset();
+    }
+  }
+
+  riemann::CPUTracerSettings settings;
+  settings.Width = width;
+  settings.Height = height;
+  settings.SamplesPerPixel = this->SamplesPerPixel;
+  settings.Seed = this->Seed;
+  settings.UseRayStreams = this->UseRayStreams;
+  settings.ComputeHitError = this->ComputeHitError;
+  std::unique_ptr<riemann::CPUTracer> tracer;
+  try
+  {
+    tracer.reset(new riemann::CPUTracer(metric, scene, camera, rays, settings, environment));
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "cannot trace the scene: " << e.what());
+    return 1;
+  }
+  this->NumberOfTriangles = static_cast<vtkIdType>(tracer->NumberOfTriangles());
+
+  // Tiles, run in parallel in batches; progress and AbortExecute between batches.
+  const int tile = this->TileSize;
+  const int tilesX = (width + tile - 1) / tile;
+  const int tilesY = (height + tile - 1) / tile;
+  const vtkIdType tiles = static_cast<vtkIdType>(tilesX) * tilesY;
+  std::vector<riemann::PixelResult> pixels(static_cast<std::size_t>(width) * height);
+  std::atomic<long long> steps(0);
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkRiemannForInBatches(this, tiles, 64,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      long long local = 0;
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const int x0 = static_cast<int>(t % tilesX) * tile;
+        const int y0 = static_cast<int>(t / tilesX) * tile;
+        local += tracer->RenderTile(
+          x0, y0, std::min(width, x0 + tile), std::min(height, y0 + tile), pixels.data());
+      }
+      steps += local;
+    });
+  timer->StopTimer();
+  this->TraceTime = timer->GetElapsedTime();
+  this->NumberOfIntegrationSteps = steps.load();
+  this->NumberOfRays = static_cast<vtkIdType>(width) * height *
+    (this->SamplesPerPixel > 1 ? this->SamplesPerPixel + 1 : 1);
+
+  // The arrays.
+  const vtkIdType n = static_cast<vtkIdType>(width) * height;
+  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  output->SetSpacing(1, 1, 1);
+  output->SetOrigin(0, 0, 0);
+  auto color = NewFloatArray("Color", 3, n);
+  auto hitPosition = NewFloatArray("HitPosition", 3, n);
+  auto arcLength = NewFloatArray("ArcLength", 1, n);
+  auto stepCount = NewIntArray("Steps", n);
+  auto reason = NewIntArray("ReasonForTermination", n);
+  auto drift = NewFloatArray("SpeedDrift", 1, n);
+  const bool withError = this->ComputeHitError && tracer->HasExactReference();
+  auto hitError = withError ? NewFloatArray("HitError", 1, n) : nullptr;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const riemann::PixelResult& p = pixels[i];
+    color->SetTypedTuple(i, p.Color);
+    hitPosition->SetTypedTuple(i, p.HitPosition);
+    arcLength->SetValue(i, p.ArcLength);
+    stepCount->SetValue(i, p.Steps);
+    reason->SetValue(i, p.Reason);
+    drift->SetValue(i, p.SpeedDrift);
+    if (hitError)
+    {
+      hitError->SetValue(i, p.HitError);
+    }
+  }
+  vtkPointData* pointData = output->GetPointData();
+  pointData->SetScalars(color);
+  pointData->AddArray(hitPosition);
+  pointData->AddArray(arcLength);
+  pointData->AddArray(stepCount);
+  pointData->AddArray(reason);
+  pointData->AddArray(drift);
+  if (hitError)
+  {
+    pointData->AddArray(hitError);
+  }
+  else if (this->ComputeHitError)
+  {
+    vtkWarningMacro(<< "ComputeHitError: the metric (" << metric->FamilyName()
+                    << ") has no exact reference; only diffeomorphism metrics have one");
+  }
+  return 1;
+}
+
+void vtkRiemannCPURayTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "Scene: " << this->Scene << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "AddedMeshes: " << this->Internals->Meshes.size() << "\n";
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "TileSize: " << this->TileSize << "\n";
+  os << indent << "UseRayStreams: " << (this->UseRayStreams ? "On" : "Off") << "\n";
+  os << indent << "ComputeHitError: " << (this->ComputeHitError ? "On" : "Off") << "\n";
+  os << indent << "UseSceneSettings: " << (this->UseSceneSettings ? "On" : "Off") << "\n";
+  os << indent << "IntegrationSettings:\n";
+  this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Projection: " << this->Projection << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "NumberOfIntegrationSteps: " << this->NumberOfIntegrationSteps << "\n";
+  os << indent << "TraceTime: " << this->TraceTime << "\n";
+}

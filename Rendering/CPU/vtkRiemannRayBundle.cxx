@@ -1,0 +1,247 @@
+#include "vtkRiemannRayBundle.h"
+
+#include "ObserverCamera.h"
+#include "RiemannShading.h"
+#include "RiemannEmbreeMeshIntersector.h"
+#include "RiemannRay.h"
+#include "RiemannScene.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannObserverSettings.h"
+#include "vtkRiemannScene.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannRayBundle);
+vtkCxxSetObjectMacro(vtkRiemannRayBundle, Scene, vtkRiemannScene);
+vtkCxxSetObjectMacro(vtkRiemannRayBundle, Camera, vtkCamera);
+
+vtkRiemannRayBundle::vtkRiemannRayBundle()
+{
+  this->SetNumberOfInputPorts(0);
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
+}
+
+vtkRiemannRayBundle::~vtkRiemannRayBundle()
+{
+  this->SetScene(nullptr);
+  this->SetCamera(nullptr);
+}
+
+int vtkRiemannRayBundle::FillInputPortInformation(int, vtkInformation*)
+{
+  return 1;
+}
+
+vtkMTimeType vtkRiemannRayBundle::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  for (vtkObject* o : { static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera) })
+  {
+    if (o)
+    {
+      time = std::max(time, o->GetMTime());
+    }
+  }
+  return time;
+}
+
+int vtkRiemannRayBundle::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric)
+  {
+    return 1;
+  }
+  const std::shared_ptr<const riemann::Scene> scene = this->Scene
+    ? this->Scene->GetSceneSnapshot()
+    : std::make_shared<const riemann::Scene>(riemann::DefaultScene());
+
+  // The camera, projection and integration follow the pass's rules.
+  const riemann::CameraSettings settings = vtkRiemannCameraSettings(this->Camera,
+    static_cast<double>(this->Width) / this->Height,
+    scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera,
+    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
+  std::unique_ptr<riemann::ObserverCamera> camera;
+  try
+  {
+    camera = std::make_unique<riemann::ObserverCamera>(*metric, settings);
+  }
+  catch (const std::runtime_error& e)
+  {
+    vtkErrorMacro(<< "Bad camera: " << e.what());
+    return 1;
+  }
+
+  const riemann::RaySettings rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
+
+  // The pixels: an N x N sub-grid (block centres), or a strided region.
+  std::vector<std::pair<int, int>> pixels;
+  if (this->UsePixelRegion)
+  {
+    const int c0 = std::max(0, std::min(this->PixelRegion[0], this->PixelRegion[1]));
+    const int c1 = std::min(this->Width - 1, std::max(this->PixelRegion[0], this->PixelRegion[1]));
+    const int r0 = std::max(0, std::min(this->PixelRegion[2], this->PixelRegion[3]));
+    const int r1 = std::min(this->Height - 1, std::max(this->PixelRegion[2], this->PixelRegion[3]));
+    for (int r = r0; r <= r1; r += this->PixelStride)
+    {
+      for (int c = c0; c <= c1; c += this->PixelStride)
+      {
+        pixels.emplace_back(c, r);
+      }
+    }
+  }
+  else
+  {
+    const int n = this->SubgridResolution;
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        pixels.emplace_back(
+          std::min(this->Width - 1, static_cast<int>((i + 0.5) * this->Width / n)),
+          std::min(this->Height - 1, static_cast<int>((j + 0.5) * this->Height / n)));
+      }
+    }
+  }
+
+  // Mesh objects (the CPU tracer's) stop the rays here too, through Embree.
+  std::unique_ptr<riemann::EmbreeMeshIntersector> meshes;
+  if (scene->HasMeshes())
+  {
+    try
+    {
+      meshes = std::make_unique<riemann::EmbreeMeshIntersector>(*scene);
+    }
+    catch (const std::runtime_error& e)
+    {
+      vtkErrorMacro(<< "The scene's meshes: " << e.what());
+      return 1;
+    }
+  }
+
+  std::vector<riemann::RayPath> paths(pixels.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType k = first; k < last; ++k)
+      {
+        const riemann::Vec3 v =
+          camera->PixelDirection(pixels[k].first, pixels[k].second, this->Width, this->Height);
+        riemann::TraceRay(
+          *metric, *scene, settings.Position, v, rays, paths[k], true, meshes.get());
+      }
+    });
+  this->UpdateProgress(1.0);
+
+  vtkIdType pointCount = 0;
+  for (const riemann::RayPath& path : paths)
+  {
+    pointCount += static_cast<vtkIdType>(path.Points.size());
+  }
+  const vtkIdType lineCount = static_cast<vtkIdType>(paths.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(pointCount);
+  vtkNew<vtkCellArray> lines;
+  lines->AllocateExact(lineCount, pointCount);
+  vtkNew<vtkDoubleArray> arcLength;
+  arcLength->SetName("ArcLength");
+  arcLength->SetNumberOfTuples(pointCount);
+  vtkNew<vtkIntArray> pixelIndex;
+  pixelIndex->SetName("PixelIndex");
+  pixelIndex->SetNumberOfComponents(2);
+  pixelIndex->SetNumberOfTuples(lineCount);
+  vtkNew<vtkIntArray> hit;
+  hit->SetName("Hit");
+  hit->SetNumberOfTuples(lineCount);
+  vtkNew<vtkDoubleArray> hitPosition;
+  hitPosition->SetName("HitPosition");
+  hitPosition->SetNumberOfComponents(3);
+  hitPosition->SetNumberOfTuples(lineCount);
+  vtkNew<vtkUnsignedCharArray> endColor;
+  endColor->SetName("EndColor");
+  endColor->SetNumberOfComponents(3);
+  endColor->SetNumberOfTuples(lineCount);
+  vtkNew<vtkDoubleArray> length;
+  length->SetName("Length");
+  length->SetNumberOfTuples(lineCount);
+  vtkNew<vtkIntArray> reason;
+  reason->SetName("ReasonForTermination");
+  reason->SetNumberOfTuples(lineCount);
+
+  vtkIdType next = 0;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType k = 0; k < lineCount; ++k)
+  {
+    const riemann::RayPath& path = paths[k];
+    ids.resize(path.Points.size());
+    for (size_t i = 0; i < path.Points.size(); ++i, ++next)
+    {
+      ids[i] = next;
+      points->SetPoint(next, path.Points[i].data());
+      arcLength->SetValue(next, path.ArcLength[i]);
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    pixelIndex->SetTypedComponent(k, 0, pixels[k].first);
+    pixelIndex->SetTypedComponent(k, 1, pixels[k].second);
+    hit->SetValue(k, path.Hit ? 1 : 0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const riemann::Vec3 position = path.Hit ? path.HitInfo.Position : riemann::Vec3(nan, nan, nan);
+    hitPosition->SetTypedTuple(k, position.data());
+    const riemann::Vec3 color =
+      path.Hit ? riemann::SurfaceColor(*scene, path.HitInfo) : scene->Background;
+    for (int c = 0; c < 3; ++c)
+    {
+      endColor->SetTypedComponent(
+        k, c, static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
+    }
+    length->SetValue(k, path.Length);
+    reason->SetValue(k, path.Reason);
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(arcLength);
+  for (vtkDataArray* array :
+    std::initializer_list<vtkDataArray*>{ pixelIndex, hit, hitPosition, endColor, length, reason })
+  {
+    output->GetCellData()->AddArray(array);
+  }
+  output->GetCellData()->SetScalars(endColor);
+  return 1;
+}
+
+void vtkRiemannRayBundle::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scene: " << this->Scene << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "Width x Height: " << this->Width << " x " << this->Height << "\n";
+  os << indent << "Projection: " << this->Projection << "\n";
+  os << indent << "SubgridResolution: " << this->SubgridResolution << "\n";
+  os << indent << "UsePixelRegion: " << this->UsePixelRegion << " (" << this->PixelRegion[0] << ".."
+     << this->PixelRegion[1] << ", " << this->PixelRegion[2] << ".." << this->PixelRegion[3]
+     << ", stride " << this->PixelStride << ")\n";
+  os << indent << "UseSceneSettings: " << this->UseSceneSettings << "\n";
+}

@@ -1,0 +1,124 @@
+/**
+ * @class   vtkRiemannRayBundle
+ * @brief   The rays of the inside view, for chosen pixels, as polylines.
+ *
+ * vtkRiemannRayBundle traces, on the CPU, the same rays that
+ * vtkRiemannRayTracePass traces per pixel: same observer frame
+ * (riemann::ObserverCamera, g-orthonormal at the eye), same integrator and
+ * step, same scene intersection (riemann::TraceRay). Plot them next to the
+ * inside view to see how the metric bends each pixel's line of sight.
+ *
+ * Pixels: an N x N sub-grid of the Width x Height image (SubgridResolution,
+ * the centres of N x N equal blocks), or every PixelStride-th pixel of a
+ * region (SetPixelRegion, UsePixelRegion). Row 0 is the bottom row.
+ *
+ * Output: one polyline per pixel, from the observer to the hit (or to the end
+ * of the ray), with point data `ArcLength` and cell data `PixelIndex`
+ * (column, row), `Hit` (0/1), `HitPosition` (NaN without hit), `EndColor`
+ * (RGB, unsigned char: the hit surface's material colour, or the
+ * background: the rays "coloured by where they end"), `Length` and
+ * `ReasonForTermination` (vtkRiemannGeodesicTracer's codes; 9 = hit).
+ *
+ * The camera is a vtkCamera (SetCamera); without one, the scene's camera,
+ * else the default scene's. The integration (the scene's "integrator" block)
+ * and the projection of the scene's camera come from the scene unless
+ * UseSceneSettings is off; then GetIntegrationSettings() (defaults as the
+ * pass's: RUNGE_KUTTA4, step 0.02, MaximumPropagation 30, 1000 steps,
+ * MaximumError 1e-4) and Projection apply, exactly as for
+ * vtkRiemannRayTracePass (vtkRiemannObserverSettings.h).
+ */
+#ifndef vtkRiemannRayBundle_h
+#define vtkRiemannRayBundle_h
+
+#include "RiemannRenderingCPUModule.h" // For export macro
+#include "vtkRiemannGeodesicAlgorithm.h"
+
+class vtkCamera;
+class vtkRiemannScene;
+
+class RIEMANNRENDERINGCPU_EXPORT vtkRiemannRayBundle : public vtkRiemannGeodesicAlgorithm
+{
+public:
+  static vtkRiemannRayBundle* New();
+  vtkTypeMacro(vtkRiemannRayBundle, vtkRiemannGeodesicAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Projections
+  {
+    PERSPECTIVE = 0,
+    EQUIRECTANGULAR = 1
+  };
+
+  ///@{
+  /// The scene (optional: the default scene) and the camera (the metric: SetMetric).
+  virtual void SetScene(vtkRiemannScene* scene);
+  vtkGetObjectMacro(Scene, vtkRiemannScene);
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /// Image size in pixels (default 640 x 480): fixes the aspect ratio and pixel centres.
+  vtkSetClampMacro(Width, int, 1, 1 << 16);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 1, 1 << 16);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  ///@{
+  /// PERSPECTIVE (default) or EQUIRECTANGULAR, as the pass.
+  vtkSetClampMacro(Projection, int, PERSPECTIVE, EQUIRECTANGULAR);
+  vtkGetMacro(Projection, int);
+  ///@}
+
+  ///@{
+  /// N for an N x N sub-grid of pixels (default 8).
+  vtkSetClampMacro(SubgridResolution, int, 1, 4096);
+  vtkGetMacro(SubgridResolution, int);
+  ///@}
+
+  ///@{
+  /// A pixel region (column0, column1, row0, row1; inclusive) and stride, used when UsePixelRegion.
+  vtkSetVector4Macro(PixelRegion, int);
+  vtkGetVector4Macro(PixelRegion, int);
+  vtkSetClampMacro(PixelStride, int, 1, 1 << 16);
+  vtkGetMacro(PixelStride, int);
+  vtkSetMacro(UsePixelRegion, bool);
+  vtkGetMacro(UsePixelRegion, bool);
+  vtkBooleanMacro(UsePixelRegion, bool);
+  ///@}
+
+  ///@{
+  /// Take the integration settings from the scene (default on), else GetIntegrationSettings().
+  vtkSetMacro(UseSceneSettings, bool);
+  vtkGetMacro(UseSceneSettings, bool);
+  vtkBooleanMacro(UseSceneSettings, bool);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkRiemannRayBundle();
+  ~vtkRiemannRayBundle() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  vtkRiemannScene* Scene = nullptr;
+  vtkCamera* Camera = nullptr;
+  int Width = 640;
+  int Height = 480;
+  int Projection = PERSPECTIVE;
+  int SubgridResolution = 8;
+  int PixelRegion[4] = { 0, 0, 0, 0 };
+  int PixelStride = 1;
+  bool UsePixelRegion = false;
+  bool UseSceneSettings = true;
+
+private:
+  vtkRiemannRayBundle(const vtkRiemannRayBundle&) = delete;
+  void operator=(const vtkRiemannRayBundle&) = delete;
+};
+
+#endif

@@ -1,0 +1,690 @@
+#include "RiemannSceneParser.h"
+
+#include "JsonValidation.h"
+#include "MetricDefinition.h"
+
+#include <Eigen/Geometry> // cross
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace riemann
+{
+namespace
+{
+using json::Describe;
+using json::Json;
+
+[[noreturn]] void Fail(const std::string& path, const std::string& message)
+{
+  json::Fail<SceneDefinitionError>(path, message);
+}
+
+void CheckKeys(
+  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+{
+  json::CheckKeys<SceneDefinitionError>(object, path, allowed);
+}
+
+const Json& Required(const Json& object, const char* key, const std::string& path)
+{
+  return json::Required<SceneDefinitionError>(object, key, path);
+}
+
+/// Guards against absurd inputs (a scene is typed by a person).
+constexpr std::streamoff MaximumFileSize = 64 << 20;
+/// Lattice lines per axis of one grid (keeps the intersection loops bounded).
+constexpr double MaximumLatticeLines = 10000;
+constexpr int MaximumIntegratorSteps = 1000000;
+
+double Number(const Json& value, const std::string& path)
+{
+  if (!value.is_number())
+  {
+    Fail(path, "expected a number, got " + Describe(value));
+  }
+  const double number = value.get<double>();
+  if (!std::isfinite(number))
+  {
+    Fail(path, "expected a finite number");
+  }
+  return number;
+}
+
+double Positive(const Json& value, const std::string& path)
+{
+  if (!value.is_number() || !(value.get<double>() > 0) || !std::isfinite(value.get<double>()))
+  {
+    Fail(path, "expected a positive number, got " + Describe(value));
+  }
+  return value.get<double>();
+}
+
+std::string String(const Json& value, const std::string& path)
+{
+  if (!value.is_string())
+  {
+    Fail(path, "expected a string, got " + Describe(value));
+  }
+  return value.get<std::string>();
+}
+
+Vec3 Vector(const Json& value, const std::string& path)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(path, "expected an array of 3 numbers, got " + Describe(value));
+  }
+  return Vec3(
+    Number(value[0], path + "[0]"), Number(value[1], path + "[1]"), Number(value[2], path + "[2]"));
+}
+
+Vec3 Color(const Json& value, const std::string& path)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(path, "expected a colour, an array of 3 numbers in [0, 1], got " + Describe(value));
+  }
+  Vec3 color;
+  for (int i = 0; i < 3; ++i)
+  {
+    const std::string itemPath = path + "[" + std::to_string(i) + "]";
+    color[i] = Number(value[i], itemPath);
+    if (color[i] < 0 || color[i] > 1)
+    {
+      Fail(itemPath, "expected a number in [0, 1], got " + value[i].dump());
+    }
+  }
+  return color;
+}
+
+const char* AxisName(int axis)
+{
+  return axis == 0 ? "x" : (axis == 1 ? "y" : "z");
+}
+
+/// [x0,x1,y0,y1,z0,z1] with x0 <= x1 (x0 < x1 when `strict`), ...
+void Bounds(const Json& value, const std::string& path, bool strict, double bounds[6])
+{
+  if (!value.is_array() || value.size() != 6)
+  {
+    Fail(path, "expected an array of 6 numbers [x0,x1,y0,y1,z0,z1], got " + Describe(value));
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    bounds[i] = Number(value[i], path + "[" + std::to_string(i) + "]");
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double lo = bounds[2 * axis];
+    const double hi = bounds[2 * axis + 1];
+    if (lo > hi || (strict && lo == hi))
+    {
+      Fail(path,
+        std::string("min > max on ") + AxisName(axis) + " (" + value[2 * axis].dump() + " " +
+          (strict ? ">=" : ">") + " " + value[2 * axis + 1].dump() + ")");
+    }
+  }
+}
+
+std::filesystem::path Resolve(const std::string& name, const std::string& baseDirectory)
+{
+  std::filesystem::path path(name);
+  if (path.is_relative())
+  {
+    path = std::filesystem::path(baseDirectory.empty() ? "." : baseDirectory) / path;
+  }
+  std::error_code error;
+  std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return (error ? path : absolute).lexically_normal();
+}
+
+//------------------------------------------------------------------------------
+// Parts of the scene
+//------------------------------------------------------------------------------
+std::string MetricText(const Json& value, const std::string& path, const std::string& baseDirectory)
+{
+  std::string text;
+  std::string where;
+  if (value.is_string())
+  {
+    const std::string name = value.get<std::string>();
+    const std::filesystem::path file = Resolve(name, baseDirectory);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error))
+    {
+      Fail(path, "metric file \"" + name + "\" not found (looked for " + file.string() + ")");
+    }
+    try
+    {
+      text = ReadMetricDefinitionFile(file.string());
+    }
+    catch (const MetricDefinitionError& e)
+    {
+      Fail(path, e.what());
+    }
+    where = file.string() + ": ";
+  }
+  else if (value.is_object())
+  {
+    text = value.dump();
+  }
+  else
+  {
+    Fail(path, "expected a metric file name or a metric object, got " + Describe(value));
+  }
+  // A bad metric is a bad scene: say so now, not when the renderer builds it.
+  try
+  {
+    ParseMetricDefinition(text);
+  }
+  catch (const MetricDefinitionError& e)
+  {
+    Fail(path, where + e.what());
+  }
+  return text;
+}
+
+CameraSettings Camera(const Json& object, const std::string& path)
+{
+  CheckKeys(object, path, { "position", "look_at", "view_up", "fov", "projection" });
+  CameraSettings camera;
+  if (object.contains("position"))
+  {
+    camera.Position = Vector(object.at("position"), path + ".position");
+  }
+  if (object.contains("look_at"))
+  {
+    camera.LookAt = Vector(object.at("look_at"), path + ".look_at");
+  }
+  if (object.contains("view_up"))
+  {
+    camera.ViewUp = Vector(object.at("view_up"), path + ".view_up");
+  }
+  if (object.contains("fov"))
+  {
+    camera.ViewAngle = Number(object.at("fov"), path + ".fov");
+    if (!(camera.ViewAngle > 0 && camera.ViewAngle < 180))
+    {
+      Fail(
+        path + ".fov", "expected a view angle in (0, 180) degrees, got " + object.at("fov").dump());
+    }
+  }
+  if (object.contains("projection"))
+  {
+    const std::string mode = String(object.at("projection"), path + ".projection");
+    if (mode == "perspective")
+    {
+      camera.Mode = Projection::Perspective;
+    }
+    else if (mode == "equirectangular")
+    {
+      camera.Mode = Projection::Equirectangular;
+    }
+    else
+    {
+      Fail(path + ".projection",
+        "unknown projection \"" + mode + "\"; expected \"perspective\" or \"equirectangular\"");
+    }
+  }
+  const Vec3 forward = camera.LookAt - camera.Position;
+  if (forward.squaredNorm() == 0)
+  {
+    Fail(path, "position and look_at are the same point; the view direction is undefined");
+  }
+  if (camera.ViewUp.squaredNorm() == 0)
+  {
+    Fail(path + ".view_up", "expected a non-zero vector");
+  }
+  // Gram-Schmidt (in any g) fails exactly when up is parallel to forward.
+  if (forward.cross(camera.ViewUp).norm() <= 1e-9 * forward.norm() * camera.ViewUp.norm())
+  {
+    Fail(path + ".view_up", "parallel to the view direction (look_at - position)");
+  }
+  return camera;
+}
+
+RaySettings Integrator(const Json& object, const std::string& path)
+{
+  CheckKeys(object, path, { "method", "step", "max_steps", "max_length", "tolerance" });
+  RaySettings rays;
+  if (object.contains("method"))
+  {
+    const std::string method = String(object.at("method"), path + ".method");
+    if (method == "euler")
+    {
+      rays.Integrator = IntegratorType::Euler;
+    }
+    else if (method == "rk4")
+    {
+      rays.Integrator = IntegratorType::RungeKutta4;
+    }
+    else if (method == "adaptive" || method == "dp45")
+    {
+      rays.Integrator = IntegratorType::DormandPrince45;
+    }
+    else
+    {
+      Fail(path + ".method",
+        "unknown method \"" + method + "\"; expected \"euler\", \"rk4\" or \"adaptive\"");
+    }
+  }
+  if (object.contains("step"))
+  {
+    rays.Step = Positive(object.at("step"), path + ".step");
+  }
+  if (object.contains("max_steps"))
+  {
+    const Json& value = object.at("max_steps");
+    const double steps = value.is_number() ? value.get<double>() : 0.0;
+    if (!value.is_number() || steps != std::floor(steps) || steps < 1 ||
+      steps > MaximumIntegratorSteps)
+    {
+      Fail(path + ".max_steps",
+        "expected an integer in [1, " + std::to_string(MaximumIntegratorSteps) + "], got " +
+          Describe(value));
+    }
+    rays.MaximumSteps = static_cast<int>(steps);
+  }
+  if (object.contains("max_length"))
+  {
+    rays.MaximumLength = Positive(object.at("max_length"), path + ".max_length");
+  }
+  if (object.contains("tolerance"))
+  {
+    rays.Tolerance = Positive(object.at("tolerance"), path + ".tolerance");
+  }
+  return rays;
+}
+
+Material ParseMaterial(const Json& object, const std::string& path, const Vec3& lo, const Vec3& hi)
+{
+  Material material;
+  SetDefaultMaterialBounds(material, lo, hi);
+  if (!object.is_object())
+  {
+    Fail(path, "expected an object, got " + Describe(object));
+  }
+  const std::string type = String(Required(object, "type", path), path + ".type");
+  if (type == "position")
+  {
+    CheckKeys(object, path, { "type", "bounds" });
+    material.Type = MaterialType::Position;
+    if (object.contains("bounds"))
+    {
+      Bounds(object.at("bounds"), path + ".bounds", true, material.Bounds);
+    }
+  }
+  else if (type == "solid")
+  {
+    CheckKeys(object, path, { "type", "color" });
+    material.Type = MaterialType::Solid;
+    if (object.contains("color"))
+    {
+      material.Color = Color(object.at("color"), path + ".color");
+    }
+  }
+  else if (type == "checker")
+  {
+    CheckKeys(object, path, { "type", "color", "color2", "size" });
+    material.Type = MaterialType::Checker;
+    if (object.contains("color"))
+    {
+      material.Color = Color(object.at("color"), path + ".color");
+    }
+    if (object.contains("color2"))
+    {
+      material.Color2 = Color(object.at("color2"), path + ".color2");
+    }
+    if (object.contains("size"))
+    {
+      material.Size = Positive(object.at("size"), path + ".size");
+    }
+  }
+  else
+  {
+    Fail(path + ".type",
+      "unknown material \"" + type + "\"; expected \"position\", \"solid\" or \"checker\"");
+  }
+  return material;
+}
+
+/// Mesh file extensions that the VTK layer reads (vtkRiemannScene).
+bool IsMeshExtension(std::string extension)
+{
+  for (char& c : extension)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return extension == ".vtp" || extension == ".ply" || extension == ".obj" || extension == ".stl";
+}
+
+SceneObject ParseObject(const Json& object, const std::string& path, const std::string& baseDirectory)
+{
+  if (!object.is_object())
+  {
+    Fail(path, "expected an object, got " + Describe(object));
+  }
+  const std::string type = String(Required(object, "type", path), path + ".type");
+  SceneObject result;
+  Vec3 lo;
+  Vec3 hi;
+  if (type == "grid")
+  {
+    CheckKeys(object, path, { "type", "spacing", "thickness", "extent", "material" });
+    result.Type = ObjectType::Grid;
+    // The paper's grid unless told otherwise.
+    result.Spacing = 1.0;
+    result.Thickness = 0.06;
+    const double paperExtent[6] = { -4, 4, -4, 4, -4, 4 };
+    std::copy(paperExtent, paperExtent + 6, result.Extent);
+    if (object.contains("spacing"))
+    {
+      result.Spacing = Positive(object.at("spacing"), path + ".spacing");
+    }
+    if (object.contains("thickness"))
+    {
+      result.Thickness = Positive(object.at("thickness"), path + ".thickness");
+    }
+    if (!(result.Thickness < result.Spacing))
+    {
+      Fail(path + ".thickness",
+        "must be less than the spacing (" + Json(result.Thickness).dump() +
+          " >= " + Json(result.Spacing).dump() + "): the bars would fill space");
+    }
+    if (object.contains("extent"))
+    {
+      Bounds(object.at("extent"), path + ".extent", false, result.Extent);
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double lines = (result.Extent[2 * axis + 1] - result.Extent[2 * axis]) / result.Spacing;
+      if (!(lines <= MaximumLatticeLines))
+      {
+        Fail(path + ".spacing",
+          std::string("the extent holds more than ") +
+            std::to_string(static_cast<int>(MaximumLatticeLines)) + " lattice lines along " +
+            AxisName(axis) + "; use a larger spacing or a smaller extent");
+      }
+    }
+    lo = Vec3(result.Extent[0], result.Extent[2], result.Extent[4]);
+    hi = Vec3(result.Extent[1], result.Extent[3], result.Extent[5]);
+  }
+  else if (type == "sphere")
+  {
+    CheckKeys(object, path, { "type", "center", "radius", "material" });
+    result.Type = ObjectType::Sphere;
+    result.A = Vector(Required(object, "center", path), path + ".center");
+    result.Radius = Positive(Required(object, "radius", path), path + ".radius");
+    lo = result.A - Vec3::Constant(result.Radius);
+    hi = result.A + Vec3::Constant(result.Radius);
+  }
+  else if (type == "plane")
+  {
+    CheckKeys(object, path, { "type", "point", "normal", "material" });
+    result.Type = ObjectType::Plane;
+    result.A = Vector(Required(object, "point", path), path + ".point");
+    const Vec3 normal = Vector(Required(object, "normal", path), path + ".normal");
+    const double length = normal.norm();
+    if (!(length > 0) || !std::isfinite(length))
+    {
+      Fail(path + ".normal", "expected a non-zero vector");
+    }
+    result.B = normal / length;
+    lo = Vec3::Constant(-5);
+    hi = Vec3::Constant(5);
+  }
+  else if (type == "box")
+  {
+    CheckKeys(object, path, { "type", "min", "max", "material" });
+    result.Type = ObjectType::Box;
+    result.A = Vector(Required(object, "min", path), path + ".min");
+    result.B = Vector(Required(object, "max", path), path + ".max");
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (result.A[axis] > result.B[axis])
+      {
+        Fail(path,
+          std::string("min > max on ") + AxisName(axis) + " (" + object.at("min")[axis].dump() +
+            " > " + object.at("max")[axis].dump() + ")");
+      }
+    }
+    lo = result.A;
+    hi = result.B;
+  }
+  else if (type == "mesh")
+  {
+    CheckKeys(object, path,
+      { "type", "file", "material", "color_array", "color_map", "color_range" });
+    result.Type = ObjectType::Mesh;
+    const std::string filePath = path + ".file";
+    const std::string name = String(Required(object, "file", path), filePath);
+    const std::filesystem::path file = Resolve(name, baseDirectory);
+    if (!IsMeshExtension(file.extension().string()))
+    {
+      Fail(filePath,
+        "unknown mesh format \"" + file.extension().string() + "\" of \"" + name +
+          "\"; expected .vtp, .ply, .obj or .stl");
+    }
+    std::error_code error;
+    if (name.empty() || !std::filesystem::is_regular_file(file, error))
+    {
+      Fail(filePath, "mesh file \"" + name + "\" not found (looked for " + file.string() + ")");
+    }
+    result.MeshFile = file.string();
+    if (object.contains("color_array"))
+    {
+      result.ColorArray = String(object.at("color_array"), path + ".color_array");
+    }
+    if (object.contains("color_map"))
+    {
+      result.ColorMap = String(object.at("color_map"), path + ".color_map");
+      if (result.ColorMap != "cool-to-warm" && result.ColorMap != "viridis" &&
+        result.ColorMap != "grayscale" && result.ColorMap != "rainbow")
+      {
+        Fail(path + ".color_map",
+          "unknown colour map \"" + result.ColorMap +
+            "\"; expected \"cool-to-warm\", \"viridis\", \"grayscale\" or \"rainbow\"");
+      }
+    }
+    if (object.contains("color_range"))
+    {
+      const Json& range = object.at("color_range");
+      const std::string rangePath = path + ".color_range";
+      if (!range.is_array() || range.size() != 2)
+      {
+        Fail(rangePath, "expected [min, max], got " + Describe(range));
+      }
+      result.ColorRange[0] = Number(range[0], rangePath + "[0]");
+      result.ColorRange[1] = Number(range[1], rangePath + "[1]");
+      if (!(result.ColorRange[0] < result.ColorRange[1]))
+      {
+        Fail(rangePath, "expected min < max, got " + range.dump());
+      }
+      result.HasColorRange = true;
+    }
+    result.HasMaterialBounds = object.contains("material") &&
+      object.at("material").is_object() && object.at("material").contains("bounds");
+    // Placeholder bounds until the triangles are known (SetMesh).
+    lo = Vec3::Constant(-1);
+    hi = Vec3::Constant(1);
+  }
+  else
+  {
+    Fail(path + ".type",
+      "unknown object type \"" + type +
+        "\"; expected \"grid\", \"sphere\", \"plane\", \"box\" or \"mesh\"");
+  }
+  if (object.contains("material"))
+  {
+    result.Surface = ParseMaterial(object.at("material"), path + ".material", lo, hi);
+  }
+  else
+  {
+    SetDefaultMaterialBounds(result.Surface, lo, hi);
+  }
+  return result;
+}
+
+void ParseObjects(
+  const Json& list, const std::string& path, Scene& scene, const std::string& baseDirectory)
+{
+  if (!list.is_array())
+  {
+    Fail(path, "expected an array of objects, got " + Describe(list));
+  }
+  int counts[5] = { 0, 0, 0, 0, 0 };
+  const int limits[5] = { MaximumGrids, MaximumSpheres, MaximumPlanes, MaximumBoxes,
+    MaximumMeshes };
+  const char* plural[5] = { "grids", "spheres", "planes", "boxes", "meshes" };
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const std::string itemPath = path + "[" + std::to_string(i) + "]";
+    SceneObject object = ParseObject(list[i], itemPath, baseDirectory);
+    const int type = static_cast<int>(object.Type);
+    if (++counts[type] > limits[type])
+    {
+      Fail(itemPath,
+        std::string("more than ") + std::to_string(limits[type]) + " " + plural[type] +
+          (type == static_cast<int>(ObjectType::Mesh) ? std::string(" (the CPU tracer's limit)")
+                                                     : std::string(" (the GPU pass's limit)")));
+    }
+    scene.Objects.push_back(object);
+  }
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+Scene ParseScene(const std::string& json, const std::string& baseDirectory)
+{
+  const std::string path = "scene";
+  Json root;
+  try
+  {
+    root = Json::parse(json);
+  }
+  catch (const Json::parse_error& e)
+  {
+    Fail(path, std::string("invalid JSON: ") + e.what());
+  }
+  if (!root.is_object())
+  {
+    Fail(path, "expected a JSON object, got " + Describe(root));
+  }
+  CheckKeys(
+    root, path, { "metric", "camera", "integrator", "background", "fog", "lighting", "objects" });
+
+  Scene scene;
+  if (root.contains("metric"))
+  {
+    scene.MetricDefinition = MetricText(root.at("metric"), path + ".metric", baseDirectory);
+  }
+  if (root.contains("camera"))
+  {
+    scene.Camera = Camera(root.at("camera"), path + ".camera");
+    scene.HasCamera = true;
+  }
+  if (root.contains("integrator"))
+  {
+    scene.Rays = Integrator(root.at("integrator"), path + ".integrator");
+  }
+  if (root.contains("background"))
+  {
+    const Json& background = root.at("background");
+    const std::string backgroundPath = path + ".background";
+    if (background.is_object())
+    {
+      CheckKeys(background, backgroundPath, { "environment" });
+      const std::string environmentPath = backgroundPath + ".environment";
+      const std::string name =
+        String(Required(background, "environment", backgroundPath), environmentPath);
+      const std::filesystem::path file = Resolve(name, baseDirectory);
+      std::error_code error;
+      if (name.empty() || !std::filesystem::is_regular_file(file, error))
+      {
+        Fail(environmentPath,
+          "environment image \"" + name + "\" not found (looked for " + file.string() + ")");
+      }
+      scene.EnvironmentImage = file.string();
+    }
+    else if (background.is_array())
+    {
+      scene.Background = Color(background, backgroundPath);
+    }
+    else
+    {
+      Fail(backgroundPath,
+        "expected a colour [r, g, b] or {\"environment\": file}, got " + Describe(background));
+    }
+  }
+  if (root.contains("fog"))
+  {
+    const Json& fog = root.at("fog");
+    const std::string fogPath = path + ".fog";
+    CheckKeys(fog, fogPath, { "color", "density" });
+    if (fog.contains("color"))
+    {
+      scene.FogColor = Color(fog.at("color"), fogPath + ".color");
+    }
+    if (fog.contains("density"))
+    {
+      scene.FogDensity = Number(fog.at("density"), fogPath + ".density");
+      if (scene.FogDensity < 0)
+      {
+        Fail(
+          fogPath + ".density", "expected a non-negative number, got " + fog.at("density").dump());
+      }
+    }
+  }
+  if (root.contains("lighting"))
+  {
+    const std::string lighting = String(root.at("lighting"), path + ".lighting");
+    if (lighting != "none" && lighting != "observer")
+    {
+      Fail(path + ".lighting",
+        "unknown lighting \"" + lighting + "\"; expected \"none\" or \"observer\"");
+    }
+    scene.ObserverLight = lighting == "observer";
+  }
+  if (root.contains("objects"))
+  {
+    ParseObjects(root.at("objects"), path + ".objects", scene, baseDirectory);
+  }
+  return scene;
+}
+
+Scene LoadSceneFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file)
+  {
+    throw SceneDefinitionError(path + ": cannot open the scene file");
+  }
+  if (file.tellg() > MaximumFileSize)
+  {
+    throw SceneDefinitionError(path + ": file too large for a scene definition");
+  }
+  file.seekg(0);
+  std::ostringstream text;
+  text << file.rdbuf();
+  std::string baseDirectory = std::filesystem::path(path).parent_path().string();
+  if (baseDirectory.empty())
+  {
+    baseDirectory = ".";
+  }
+  try
+  {
+    return ParseScene(text.str(), baseDirectory);
+  }
+  catch (const SceneDefinitionError& e)
+  {
+    throw SceneDefinitionError(path + ": " + e.what());
+  }
+}
+} // namespace riemann

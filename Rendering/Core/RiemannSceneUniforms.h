@@ -1,0 +1,57 @@
+/**
+ * @file RiemannSceneUniforms.h
+ * @brief The scene's analytic objects as the GPU pass's uniform arrays
+ * (RiemannRayTraceScene.glsl reads them): packed here, without OpenGL, so
+ * that the layout is one testable function.
+ *
+ * Object i of the scene is slot i of every array (up to
+ * MaximumSceneUniformObjects; the rest are dropped and Truncated is set):
+ *
+ * | uniform              | per slot | holds                                          |
+ * |----------------------|----------|------------------------------------------------|
+ * | rt_object_type       | int      | ObjectType                                     |
+ * | rt_object_a, _b      | vec3     | A, B; for a grid the extent's lows and highs   |
+ * | rt_object_p          | vec3     | (Radius, Spacing, Thickness)                   |
+ * | rt_material_type     | int      | MaterialType                                   |
+ * | rt_material_color(2) | vec3     | Color, Color2                                  |
+ * | rt_material_size     | float    | checker Size                                   |
+ * | rt_material_lo, _hi  | vec3     | the material's bounds, lows and highs          |
+ */
+#ifndef RiemannSceneUniforms_h
+#define RiemannSceneUniforms_h
+
+#include "RiemannRenderingCoreExport.h" // For export macro
+#include "RiemannScene.h"
+
+#include <vector>
+
+namespace riemann
+{
+/// Slots of the uniform arrays: every analytic object type's limit together.
+constexpr int MaximumSceneUniformObjects =
+  MaximumSpheres + MaximumPlanes + MaximumBoxes + MaximumGrids;
+
+struct SceneUniforms
+{
+  /// Objects packed (the slots in use).
+  int ObjectCount = 0;
+  /// The scene had more objects than slots: the first ones were packed.
+  bool Truncated = false;
+  /// Each array has MaximumSceneUniformObjects slots (times 3 for vec3).
+  std::vector<int> ObjectType;
+  std::vector<float> A;
+  std::vector<float> B;
+  std::vector<float> P;
+  std::vector<int> MaterialType;
+  std::vector<float> Color;
+  std::vector<float> Color2;
+  std::vector<float> Size;
+  std::vector<float> Low;
+  std::vector<float> High;
+};
+
+/// Pack the scene's objects into the uniform arrays (unused slots are zeros, Size 1).
+RIEMANNRENDERINGCORE_EXPORT SceneUniforms PackSceneUniforms(const Scene& scene);
+} // namespace riemann
+
+#endif

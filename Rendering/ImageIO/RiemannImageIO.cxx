@@ -1,0 +1,104 @@
+#include "RiemannImageIO.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <unistd.h>
+
+namespace riemann
+{
+namespace
+{
+std::string Extension(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  const size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return {};
+  }
+  std::string e = path.substr(dot + 1);
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e;
+}
+}
+
+std::string WriteImage(const std::string& path, const Image& image)
+{
+  if (image.Width <= 0 || image.Height <= 0 || image.Channels <= 0 ||
+    image.Pixels.size() != static_cast<size_t>(image.Width) * image.Height * image.Channels)
+  {
+    return "empty or inconsistent image";
+  }
+  const std::string extension = Extension(path);
+  const bool exr = extension == "exr";
+  if (!exr && extension != "png")
+  {
+    return "unsupported image format \"." + extension + "\" (use .png or .exr)";
+  }
+  // OpenImageIO picks the format from the file name, so the temporary file
+  // keeps the extension: "out.png" -> "out.partial-<pid>.png".
+  const std::string temporary = path.substr(0, path.size() - extension.size() - 1) + ".partial-" +
+    std::to_string(::getpid()) + "." + extension;
+  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(temporary);
+  if (!output)
+  {
+    return "OpenImageIO cannot write " + path + ": " + OIIO::geterror();
+  }
+  OIIO::ImageSpec spec(
+    image.Width, image.Height, image.Channels, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (!image.ChannelNames.empty() && static_cast<int>(image.ChannelNames.size()) == image.Channels)
+  {
+    spec.channelnames = image.ChannelNames;
+  }
+  spec.attribute("Software", "RiemannVTK");
+  bool ok = output->open(temporary, spec);
+  // OIIO converts float to the file's type (clamping to [0, 1] for 8 bits).
+  ok = ok && output->write_image(OIIO::TypeDesc::FLOAT, image.Pixels.data());
+  const std::string error = output->geterror();
+  ok = output->close() && ok;
+  if (!ok || std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    return "could not write " + path + (error.empty() ? "" : ": " + error) +
+      " (check that its folder exists and is writable)";
+  }
+  return {};
+}
+
+std::string ReadImage(const std::string& path, Image& image)
+{
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
+  if (!input)
+  {
+    return "cannot read image " + path + ": " + OIIO::geterror();
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  constexpr long long maximumPixels = 1LL << 28;
+  if (static_cast<long long>(spec.width) * spec.height > maximumPixels || spec.nchannels <= 0)
+  {
+    return path + ": image too large or without channels";
+  }
+  image.Width = spec.width;
+  image.Height = spec.height;
+  image.Channels = spec.nchannels;
+  image.ChannelNames = spec.channelnames;
+  image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data()))
+  {
+    return "cannot read image " + path + ": " + input->geterror();
+  }
+  input->close();
+  return {};
+}
+
+std::string ReadEnvironmentMap(const std::string& path, EnvironmentMap& map)
+{
+  Image image;
+  const std::string error = ReadImage(path, image);
+  return error.empty() ? map.SetImage(image) : error;
+}
+} // namespace riemann

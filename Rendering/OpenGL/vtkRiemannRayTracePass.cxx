@@ -1,0 +1,845 @@
+#include "vtkRiemannRayTracePass.h"
+
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannObserverSettings.h"
+#include "vtkRiemannScene.h"
+
+#include "GlslSource.h"
+#include "Metric.h"
+#include "ObserverCamera.h"
+#include "RiemannImageIO.h"
+#include "RiemannScene.h"
+#include "RiemannShading.h"
+#include "RiemannSceneUniforms.h"
+
+// GLSL embedded at build time (vtk_encode_string).
+#include "RiemannRayTraceFS.h"
+#include "RiemannRayTraceIntegrators.h"
+#include "RiemannRayTraceScene.h"
+
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOutputWindow.h"
+#include "vtkRenderState.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannRayTracePass);
+
+namespace
+{
+/// Programs kept per pass; beyond this the least recently built are dropped
+/// (VTK's shader cache still holds their compiled code).
+constexpr std::size_t MaximumCachedPrograms = 8;
+
+/**
+ * Collects what VTK reports through the output window while a program is
+ * built, so that a failure can be told in one message of this pass (with the
+ * GLSL log) instead of VTK's listing of the whole source.
+ */
+class vtkRiemannCollectingOutputWindow : public vtkOutputWindow
+{
+public:
+  static vtkRiemannCollectingOutputWindow* New();
+  vtkTypeMacro(vtkRiemannCollectingOutputWindow, vtkOutputWindow);
+  void DisplayText(const char* text) override { this->Add(text); }
+  void DisplayErrorText(const char* text) override { this->Add(text); }
+  void DisplayWarningText(const char* text) override { this->Add(text); }
+  void DisplayGenericWarningText(const char* text) override { this->Add(text); }
+  void DisplayDebugText(const char*) override {}
+
+  std::vector<std::string> Messages;
+
+protected:
+  vtkRiemannCollectingOutputWindow() = default;
+  ~vtkRiemannCollectingOutputWindow() override = default;
+
+private:
+  void Add(const char* text)
+  {
+    if (text)
+    {
+      this->Messages.emplace_back(text);
+    }
+  }
+};
+vtkStandardNewMacro(vtkRiemannCollectingOutputWindow);
+
+/// Routes the output window to a collector for the lifetime of the scope.
+class ScopedOutputCollector
+{
+public:
+  ScopedOutputCollector()
+    : Previous(vtkOutputWindow::GetInstance())
+  {
+    vtkOutputWindow::SetInstance(this->Collector);
+  }
+  ~ScopedOutputCollector() { vtkOutputWindow::SetInstance(this->Previous); }
+  ScopedOutputCollector(const ScopedOutputCollector&) = delete;
+  ScopedOutputCollector& operator=(const ScopedOutputCollector&) = delete;
+
+  /// The collected messages that do not list source lines ("   12: ...").
+  std::string Summary() const
+  {
+    std::string summary;
+    for (const std::string& message : this->Collector->Messages)
+    {
+      const std::size_t colon = message.find("): ");
+      const std::string body = colon == std::string::npos ? message : message.substr(colon + 3);
+      std::size_t first = body.find_first_not_of(" \n");
+      if (first != std::string::npos && std::isdigit(static_cast<unsigned char>(body[first])) &&
+        body.find(": ", first) < first + 8)
+      {
+        continue; // VTK's numbered listing of the shader source
+      }
+      summary += body;
+    }
+    return summary;
+  }
+
+private:
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkNew<vtkRiemannCollectingOutputWindow> Collector;
+};
+
+void Trim(std::string& text)
+{
+  const std::size_t end = text.find_last_not_of(" \n\r\t");
+  text.erase(end == std::string::npos ? 0 : end + 1);
+}
+
+void Replace(std::string& text, const std::string& tag, const std::string& value)
+{
+  const std::size_t at = text.find(tag);
+  if (at != std::string::npos)
+  {
+    text.replace(at, tag.size(), value);
+  }
+}
+
+/**
+ * Compile a fragment shader on its own (no output window, no program) and
+ * return the GLSL compiler's log, empty on success. VTK's shader cache
+ * reports failures by listing the whole source; this gives the log alone.
+ */
+std::string CheckFragmentShader(const std::string& source)
+{
+  std::string text = source;
+  // What vtkOpenGLShaderCache::ReplaceShaderValues does for a desktop context.
+  Replace(text, "//VTK::System::Dec",
+    "#version 150\n#define highp\n#define mediump\n#define lowp\n#define varying in\n");
+  Replace(text, "//VTK::Output::Dec", "out vec4 fragOutput0;\n");
+  vtkShaderProgram::Substitute(text, "gl_FragData[0]", "fragOutput0");
+  vtkNew<vtkShader> shader;
+  shader->SetType(vtkShader::Fragment);
+  shader->SetSource(text);
+  if (shader->Compile())
+  {
+    return std::string();
+  }
+  std::string log = shader->GetError();
+  Trim(log);
+  return log.empty() ? std::string("(the GLSL compiler gave no log)") : log;
+}
+
+void ToFloat(const riemann::Vec3& v, float out[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = static_cast<float>(v[i]);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkRiemannRayTracePass::vtkInternals
+{
+public:
+  struct CachedProgram
+  {
+    std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+    unsigned long long LastUse = 0;
+  };
+
+  /// The window whose context holds the resources below.
+  vtkOpenGLRenderWindow* Context = nullptr;
+  /// Built programs by fragment source, and sources that failed with their message.
+  std::map<std::string, CachedProgram> Programs;
+  std::map<std::string, std::string> FailedPrograms;
+  unsigned long long UseCounter = 0;
+
+  vtkSmartPointer<vtkTextureObject> Environment;
+  std::string EnvironmentPath;
+  std::string EnvironmentError;
+
+  vtkSmartPointer<vtkOpenGLFramebufferObject> HitFramebuffer;
+  vtkSmartPointer<vtkTextureObject> HitTexture;
+  vtkNew<vtkFloatArray> HitImage;
+
+  /// Keep a built program, dropping the least recently used beyond the cache's size.
+  std::map<std::string, CachedProgram>::iterator StoreProgram(
+    const std::string& source, std::unique_ptr<vtkOpenGLQuadHelper> quad)
+  {
+    if (this->Programs.size() >= MaximumCachedPrograms)
+    {
+      auto oldest = this->Programs.begin();
+      for (auto it = this->Programs.begin(); it != this->Programs.end(); ++it)
+      {
+        oldest = it->second.LastUse < oldest->second.LastUse ? it : oldest;
+      }
+      this->Programs.erase(oldest);
+    }
+    auto stored = this->Programs.emplace(source, CachedProgram()).first;
+    stored->second.Quad = std::move(quad);
+    return stored;
+  }
+
+  /// Read the environment image at `path` into a texture (EnvironmentError says why not).
+  void LoadEnvironment(const std::string& path, vtkOpenGLRenderWindow* window)
+  {
+    this->EnvironmentPath = path;
+    this->EnvironmentError.clear();
+    if (this->Environment)
+    {
+      this->Environment->ReleaseGraphicsResources(window);
+      this->Environment = nullptr;
+    }
+    riemann::EnvironmentMap map; // float RGB rows, top row first
+    this->EnvironmentError = riemann::ReadEnvironmentMap(path, map);
+    Trim(this->EnvironmentError);
+    if (!this->EnvironmentError.empty())
+    {
+      return;
+    }
+    vtkNew<vtkTextureObject> texture;
+    texture->SetContext(window);
+    texture->SetWrapS(vtkTextureObject::Repeat);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetMinificationFilter(vtkTextureObject::Linear);
+    texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    // Rows top first: texture coordinate t = 0 is the top (latitude +90).
+    if (texture->Create2DFromRaw(map.Width, map.Height, 3, VTK_FLOAT, map.Rgb.data()))
+    {
+      this->Environment = texture;
+    }
+    else
+    {
+      this->EnvironmentError = "could not upload the texture";
+    }
+  }
+
+  /// The float texture and framebuffer of the hit capture, at this size.
+  void ReadyHitTarget(vtkOpenGLRenderWindow* window, int width, int height)
+  {
+    if (!this->HitTexture)
+    {
+      this->HitTexture = vtkSmartPointer<vtkTextureObject>::New();
+      this->HitTexture->SetContext(window);
+    }
+    if (static_cast<int>(this->HitTexture->GetWidth()) != width ||
+      static_cast<int>(this->HitTexture->GetHeight()) != height)
+    {
+      this->HitTexture->ReleaseGraphicsResources(window);
+      this->HitTexture->SetContext(window);
+      this->HitTexture->SetInternalFormat(GL_RGBA32F);
+      this->HitTexture->SetFormat(GL_RGBA);
+      this->HitTexture->SetDataType(GL_FLOAT);
+      this->HitTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->HitTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->HitTexture->Allocate2D(width, height, 4, VTK_FLOAT);
+    }
+    if (!this->HitFramebuffer)
+    {
+      this->HitFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->HitFramebuffer->SetContext(window);
+    }
+  }
+
+  void Release(vtkWindow* window)
+  {
+    this->Programs.clear(); // each quad helper frees its VAO
+    this->FailedPrograms.clear();
+    if (this->Environment)
+    {
+      this->Environment->ReleaseGraphicsResources(window);
+      this->Environment = nullptr;
+    }
+    this->EnvironmentPath.clear();
+    this->EnvironmentError.clear();
+    if (this->HitFramebuffer)
+    {
+      this->HitFramebuffer->ReleaseGraphicsResources(window);
+      this->HitFramebuffer = nullptr;
+    }
+    if (this->HitTexture)
+    {
+      this->HitTexture->ReleaseGraphicsResources(window);
+      this->HitTexture = nullptr;
+    }
+    this->Context = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkRiemannRayTracePass::vtkRiemannRayTracePass()
+  : IntegrationSettings(vtkRiemannIntegrationSettings::New())
+  , Internals(new vtkInternals)
+{
+  vtkRiemannSetRayDefaults(this->IntegrationSettings);
+  this->Internals->HitImage->SetName("Hits");
+  this->Internals->HitImage->SetNumberOfComponents(4);
+}
+
+vtkRiemannRayTracePass::~vtkRiemannRayTracePass()
+{
+  // The window may be gone already: release through the resources' own
+  // callbacks (they know their window), not through a stored pointer.
+  this->Internals->Release(nullptr);
+  this->SetMetric(nullptr);
+  this->SetScene(nullptr);
+  this->SetExtraShaderCode(nullptr);
+  this->IntegrationSettings->Delete();
+}
+
+vtkCxxSetObjectMacro(vtkRiemannRayTracePass, Metric, vtkRiemannMetric);
+vtkCxxSetObjectMacro(vtkRiemannRayTracePass, Scene, vtkRiemannScene);
+
+void vtkRiemannRayTracePass::SetIntegrationSettings(vtkRiemannIntegrationSettings* settings)
+{
+  if (vtkRiemannIntegrationSettings::Share(this, this->IntegrationSettings, settings))
+  {
+    this->Modified();
+  }
+}
+
+vtkMTimeType vtkRiemannRayTracePass::GetMTime()
+{
+  vtkMTimeType time = std::max(this->Superclass::GetMTime(), this->IntegrationSettings->GetMTime());
+  if (this->Metric)
+  {
+    time = std::max(time, this->Metric->GetMTime());
+  }
+  if (this->Scene)
+  {
+    time = std::max(time, this->Scene->GetMTime());
+  }
+  return time;
+}
+
+std::shared_ptr<const riemann::Metric> vtkRiemannRayTracePass::GetCoreMetric()
+{
+  return this->Metric ? this->Metric->GetMetric() : nullptr;
+}
+
+vtkFloatArray* vtkRiemannRayTracePass::GetHitImage()
+{
+  return this->Internals->HitImage;
+}
+
+void vtkRiemannRayTracePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Internals->Release(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::Fail(
+  const std::string& message, vtkOpenGLRenderWindow* renWin, const int viewport[4])
+{
+  this->LastError = message;
+  this->HitImageWidth = 0;
+  this->HitImageHeight = 0;
+  this->Internals->HitImage->SetNumberOfTuples(0);
+  vtkErrorMacro(<< message);
+  if (!renWin || !viewport)
+  {
+    return;
+  }
+  // A clearly marked picture: the whole view red.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+//------------------------------------------------------------------------------
+struct vtkRiemannRayTracePass::FrameState
+{
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  /// x, y, width, height of the image in the target.
+  int Viewport[4] = { 0, 0, 0, 0 };
+  std::shared_ptr<const riemann::Metric> Metric;
+  std::shared_ptr<const riemann::Scene> Scene;
+  riemann::MetricGlsl MetricGlsl;
+  riemann::RaySettings Rays;
+  riemann::CameraSettings Camera;
+  std::unique_ptr<riemann::ObserverCamera> Observer;
+  vtkOpenGLQuadHelper* Quad = nullptr;
+};
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  FrameState frame;
+  if (!this->PrepareFrame(s, frame))
+  {
+    return;
+  }
+  vtkShaderProgram* program = this->ReadyProgram(frame);
+  if (!program || !this->SetMetricUniforms(program, frame))
+  {
+    return;
+  }
+  this->SetSceneUniforms(program, frame);
+  this->SetObserverUniforms(program, frame);
+  const bool useEnvironment = this->ActivateEnvironment(program, frame);
+  this->DrawView(program, frame);
+  if (this->CaptureHits)
+  {
+    this->CaptureHitImage(program, frame);
+  }
+  if (useEnvironment)
+  {
+    this->Internals->Environment->Deactivate();
+  }
+  this->LastError.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& frame)
+{
+  // The window, and the image: the renderer's viewport in the window, or the
+  // whole target of an enclosing pass's framebuffer.
+  frame.Renderer = s->GetRenderer();
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(
+    frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr);
+  if (!frame.Window)
+  {
+    this->Fail("the renderer has no OpenGL render window", nullptr, nullptr);
+    return false;
+  }
+  vtkInternals& internals = *this->Internals;
+  if (internals.Context && internals.Context != frame.Window)
+  {
+    internals.Release(nullptr); // another window: start afresh in this one
+  }
+  internals.Context = frame.Window;
+  int* viewport = frame.Viewport;
+  if (s->GetFrameBuffer())
+  {
+    s->GetWindowSize(viewport + 2);
+  }
+  else
+  {
+    frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  }
+  if (viewport[2] <= 0 || viewport[3] <= 0)
+  {
+    return false;
+  }
+
+  // What to render: the metric (as GLSL) and the scene's analytic objects.
+  frame.Metric = this->GetCoreMetric();
+  if (!frame.Metric)
+  {
+    this->Fail(this->Metric ? "the metric has no definition: call SetDefinition() on it"
+                            : "no metric: call SetMetric() with a vtkRiemannMetric",
+      frame.Window, viewport);
+    return false;
+  }
+  if (!this->Scene)
+  {
+    this->Fail("no scene: call SetScene() with a vtkRiemannScene", frame.Window, viewport);
+    return false;
+  }
+  frame.Scene = this->Scene->GetSceneSnapshot();
+  if (frame.Scene->HasMeshes())
+  {
+    // The shader draws the analytic objects only; triangle meshes are Embree's.
+    this->Fail("mesh objects need --backend cpu: the GPU pass draws grids, spheres, planes and "
+               "boxes; render this scene with vtkRiemannCPURayTracer",
+      frame.Window, viewport);
+    return false;
+  }
+  try
+  {
+    frame.MetricGlsl = riemann::EmitMetricGlsl(*frame.Metric);
+  }
+  catch (const riemann::GlslUnsupportedError& e)
+  {
+    this->Fail(std::string("the GLSL backend cannot express this metric: ") + e.what(),
+      frame.Window, viewport);
+    return false;
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(
+      std::string("could not write the metric's GLSL: ") + e.what(), frame.Window, viewport);
+    return false;
+  }
+
+  // How rays go, and from where (vtkRiemannObserverSettings.h: as the CPU tracer).
+  if (!this->UseSceneSettings)
+  {
+    const std::string settingsError = this->IntegrationSettings->CheckSettings();
+    if (!settingsError.empty())
+    {
+      this->Fail("integration settings: " + settingsError, frame.Window, viewport);
+      return false;
+    }
+  }
+  frame.Rays =
+    vtkRiemannResolveRaySettings(this->UseSceneSettings, *frame.Scene, this->IntegrationSettings);
+  frame.Camera = vtkRiemannCameraSettings(frame.Renderer->GetActiveCamera(),
+    static_cast<double>(viewport[2]) / viewport[3], riemann::CameraSettings(),
+    vtkRiemannResolveProjection(this->UseSceneSettings, *frame.Scene, this->Projection));
+  try
+  {
+    frame.Observer.reset(new riemann::ObserverCamera(*frame.Metric, frame.Camera));
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(std::string("cannot place the observer: ") + e.what(), frame.Window, viewport);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& frame) const
+{
+  std::ostringstream constants;
+  constants << "// Scene limits (RiemannScene.h).\n"
+            << "#define RT_MAX_SPHERES " << riemann::MaximumSpheres << "\n"
+            << "#define RT_MAX_PLANES " << riemann::MaximumPlanes << "\n"
+            << "#define RT_MAX_BOXES " << riemann::MaximumBoxes << "\n"
+            << "#define RT_MAX_GRIDS " << riemann::MaximumGrids << "\n"
+            << "#define RT_MAX_OBJECTS " << riemann::MaximumSceneUniformObjects << "\n"
+            << "// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).\n"
+            << "#define RT_INTEGRATOR " << static_cast<int>(frame.Rays.Integrator) << "\n";
+  std::string source = RiemannRayTraceFS;
+  Replace(source, "//RT::Constants::Dec", constants.str());
+  Replace(source, "//RT::Metric::Impl", frame.MetricGlsl.Source);
+  Replace(source, "//RT::Scene::Impl", RiemannRayTraceScene);
+  Replace(source, "//RT::Integrators::Impl", RiemannRayTraceIntegrators);
+  Replace(source, "//RT::Extra::Impl",
+    this->ExtraShaderCode ? std::string("// ExtraShaderCode\n") + this->ExtraShaderCode : "");
+  return source;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string source = this->ComposeFragmentSource(frame);
+  this->FragmentShaderSource = source;
+
+  // Programs are cached by source; one that failed is not tried again.
+  const auto failed = internals.FailedPrograms.find(source);
+  if (failed != internals.FailedPrograms.end())
+  {
+    this->Fail(failed->second, frame.Window, frame.Viewport);
+    return nullptr;
+  }
+  auto found = internals.Programs.find(source);
+  if (found != internals.Programs.end() && !found->second.Quad->Program)
+  {
+    // The window released its graphics resources behind our back.
+    internals.Programs.erase(found);
+    found = internals.Programs.end();
+  }
+  if (found == internals.Programs.end())
+  {
+    std::string message;
+    std::unique_ptr<vtkOpenGLQuadHelper> quad = this->BuildProgram(source, frame, message);
+    if (!quad)
+    {
+      internals.FailedPrograms[source] = message;
+      this->Fail(message, frame.Window, frame.Viewport);
+      return nullptr;
+    }
+    found = internals.StoreProgram(source, std::move(quad));
+  }
+  found->second.LastUse = ++internals.UseCounter;
+  frame.Quad = found->second.Quad.get();
+  vtkShaderProgram* program = frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
+  if (!program)
+  {
+    this->Fail("the ray-tracing shader could not be bound", frame.Window, frame.Viewport);
+  }
+  return program;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<vtkOpenGLQuadHelper> vtkRiemannRayTracePass::BuildProgram(
+  const std::string& source, const FrameState& frame, std::string& message)
+{
+  ++this->NumberOfShaderCompilations;
+  // The fragment shader alone first: its log, without VTK's listing of the source.
+  const std::string log = CheckFragmentShader(source);
+  if (!log.empty())
+  {
+    message = "the ray-tracing shader failed to compile: " + log;
+    return nullptr;
+  }
+  std::string vtkMessages;
+  std::unique_ptr<vtkOpenGLQuadHelper> quad;
+  {
+    ScopedOutputCollector collector;
+    quad.reset(new vtkOpenGLQuadHelper(frame.Window, nullptr, source.c_str(), ""));
+    vtkMessages = collector.Summary();
+  }
+  Trim(vtkMessages);
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    message = "the ray-tracing shader failed to compile or link: " +
+      (vtkMessages.empty() ? std::string("(no log)") : vtkMessages);
+    return nullptr;
+  }
+  return quad;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::SetMetricUniforms(vtkShaderProgram* program, FrameState& frame)
+{
+  for (const riemann::GlslUniform& uniform : frame.MetricGlsl.Uniforms)
+  {
+    float values[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+    const std::size_t count = std::min<std::size_t>(uniform.Values.size(), 9);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      values[i] = static_cast<float>(uniform.Values[i]);
+    }
+    // A uniform the compiler optimised away cannot be set; that is harmless.
+    if (uniform.Type == "float" && count == 1)
+    {
+      program->SetUniformf(uniform.Name.c_str(), values[0]);
+    }
+    else if (uniform.Type == "vec3" && count == 3)
+    {
+      program->SetUniform3f(uniform.Name.c_str(), values);
+    }
+    else if (uniform.Type == "mat3" && count == 9)
+    {
+      program->SetUniformMatrix3x3(uniform.Name.c_str(), values);
+    }
+    else
+    {
+      this->Fail("the metric's GLSL has a uniform of unexpected type or size: " + uniform.Type +
+          " " + uniform.Name,
+        frame.Window, frame.Viewport);
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame)
+{
+  const riemann::SceneUniforms packed = riemann::PackSceneUniforms(*frame.Scene);
+  if (packed.Truncated)
+  {
+    vtkWarningMacro(<< "the scene has " << frame.Scene->Objects.size()
+                    << " objects; the GPU pass draws the first "
+                    << riemann::MaximumSceneUniformObjects);
+  }
+  const int slots = riemann::MaximumSceneUniformObjects;
+  program->SetUniformi("rt_object_count", packed.ObjectCount);
+  program->SetUniform1iv("rt_object_type", slots, packed.ObjectType.data());
+  program->SetUniform3fv("rt_object_a", slots, packed.A.data());
+  program->SetUniform3fv("rt_object_b", slots, packed.B.data());
+  program->SetUniform3fv("rt_object_p", slots, packed.P.data());
+  program->SetUniform1iv("rt_material_type", slots, packed.MaterialType.data());
+  program->SetUniform3fv("rt_material_color", slots, packed.Color.data());
+  program->SetUniform3fv("rt_material_color2", slots, packed.Color2.data());
+  program->SetUniform1fv("rt_material_size", slots, packed.Size.data());
+  program->SetUniform3fv("rt_material_lo", slots, packed.Low.data());
+  program->SetUniform3fv("rt_material_hi", slots, packed.High.data());
+
+  const riemann::Scene& scene = *frame.Scene;
+  float v3[3];
+  ToFloat(scene.Background, v3);
+  program->SetUniform3f("rt_background", v3);
+  ToFloat(scene.FogColor, v3);
+  program->SetUniform3f("rt_fog_color", v3);
+  program->SetUniformf("rt_fog_density", static_cast<float>(scene.FogDensity));
+  program->SetUniformi("rt_observer_light", scene.ObserverLight ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::SetObserverUniforms(
+  vtkShaderProgram* program, const FrameState& frame)
+{
+  // The g-orthonormal frame at the eye.
+  float v3[3];
+  ToFloat(frame.Camera.Position, v3);
+  program->SetUniform3f("rt_eye", v3);
+  ToFloat(frame.Observer->GetForward(), v3);
+  program->SetUniform3f("rt_forward", v3);
+  ToFloat(frame.Observer->GetUp(), v3);
+  program->SetUniform3f("rt_up", v3);
+  ToFloat(frame.Observer->GetRight(), v3);
+  program->SetUniform3f("rt_right", v3);
+  program->SetUniformf("rt_tan_half_angle",
+    static_cast<float>(std::tan(0.5 * vtkMath::RadiansFromDegrees(frame.Camera.ViewAngle))));
+  program->SetUniformi("rt_projection", static_cast<int>(frame.Camera.Mode));
+
+  // The integration; the adaptive step's range as riemann::TraceRay's.
+  const riemann::RaySettings& rays = frame.Rays;
+  program->SetUniformf("rt_step", static_cast<float>(rays.Step));
+  program->SetUniformi("rt_max_steps", rays.MaximumSteps);
+  program->SetUniformf("rt_max_length", static_cast<float>(rays.MaximumLength));
+  program->SetUniformf("rt_tolerance", static_cast<float>(rays.Tolerance));
+  program->SetUniformf(
+    "rt_min_step", static_cast<float>(riemann::AdaptiveMinimumStepFactor * rays.Step));
+  program->SetUniformf(
+    "rt_max_step", static_cast<float>(riemann::AdaptiveMaximumStepFactor * rays.Step));
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::ActivateEnvironment(
+  vtkShaderProgram* program, const FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string& path = frame.Scene->EnvironmentImage;
+  if (!path.empty() && path != internals.EnvironmentPath)
+  {
+    internals.LoadEnvironment(path, frame.Window);
+    if (!internals.EnvironmentError.empty())
+    {
+      // Reported once per image; the background colour stands in for it.
+      vtkErrorMacro(<< "cannot use the environment image " << path << ": "
+                    << internals.EnvironmentError << " (the background colour is shown instead)");
+    }
+  }
+  const bool useEnvironment = !path.empty() && internals.Environment != nullptr;
+  if (useEnvironment)
+  {
+    internals.Environment->Activate();
+    program->SetUniformi("rt_environment", internals.Environment->GetTextureUnit());
+  }
+  program->SetUniformi("rt_use_environment", useEnvironment ? 1 : 0);
+  return useEnvironment;
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameState& frame)
+{
+  const int* viewport = frame.Viewport;
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+
+  float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("rt_viewport", window);
+  program->SetUniformi("rt_output", 0);
+  frame.Quad->Render();
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::CaptureHitImage(vtkShaderProgram* program, const FrameState& frame)
+{
+  vtkInternals& internals = *this->Internals;
+  const int width = frame.Viewport[2];
+  const int height = frame.Viewport[3];
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+
+  // The same rays into a float target: (x, y, z, arc length) per pixel.
+  internals.ReadyHitTarget(frame.Window, width, height);
+  ostate->PushFramebufferBindings();
+  internals.HitFramebuffer->Bind();
+  internals.HitFramebuffer->AddColorAttachment(0, internals.HitTexture);
+  internals.HitFramebuffer->ActivateDrawBuffer(0);
+  internals.HitFramebuffer->ActivateReadBuffer(0);
+  const char* status = nullptr;
+  const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+  if (complete)
+  {
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    float target[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
+    program->SetUniform4f("rt_viewport", target);
+    program->SetUniformi("rt_output", 1);
+    frame.Quad->Render();
+    program->SetUniformi("rt_output", 0);
+    internals.HitImage->SetNumberOfComponents(4);
+    internals.HitImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, internals.HitImage->GetPointer(0));
+    this->HitImageWidth = width;
+    this->HitImageHeight = height;
+  }
+  ostate->PopFramebufferBindings();
+  if (!complete)
+  {
+    this->HitImageWidth = 0;
+    this->HitImageHeight = 0;
+    internals.HitImage->SetNumberOfTuples(0);
+    vtkErrorMacro(<< "hit capture: the float framebuffer is incomplete ("
+                  << (status ? status : "unknown status") << ")");
+  }
+  internals.HitImage->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* projections[] = { "Perspective", "Equirectangular" };
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "Scene: " << this->Scene << "\n";
+  os << indent << "UseSceneSettings: " << (this->UseSceneSettings ? "On" : "Off") << "\n";
+  os << indent << "IntegrationSettings:\n";
+  this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Projection: " << projections[this->Projection] << "\n";
+  os << indent << "CaptureHits: " << (this->CaptureHits ? "On" : "Off") << "\n";
+  os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";
+  os << indent << "NumberOfShaderCompilations: " << this->NumberOfShaderCompilations << "\n";
+  os << indent << "ExtraShaderCode: " << (this->ExtraShaderCode ? "(set)" : "(none)") << "\n";
+  os << indent << "LastError: " << this->LastError << "\n";
+}
