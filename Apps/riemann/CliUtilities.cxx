@@ -6,10 +6,15 @@
 #include "vtkRiemannMetric.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include "vtkObjectFactory.h"
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <sstream>
 #include <unistd.h>
 
@@ -17,28 +22,189 @@ namespace riemann
 {
 namespace cli
 {
-void ParseVector3(const std::string& text, const std::string& option, double out[3])
+std::string FormatNumber(double value)
 {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+namespace
+{
+/// The whole of `text` as one finite number (strtod's syntax, no blanks).
+bool ParseFinite(const std::string& text, double& value)
+{
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return *end == '\0' && std::isfinite(value);
+}
+
+std::string Got(const std::string& text)
+{
+  return "got \"" + text + "\"";
+}
+} // namespace
+
+std::string CheckNumberList(
+  const std::string& text, size_t count, const std::string& form, std::vector<double>& values)
+{
+  values.clear();
   std::stringstream stream(text);
   std::string item;
-  int count = 0;
   while (std::getline(stream, item, ','))
   {
     char* end = nullptr;
     const double value = std::strtod(item.c_str(), &end);
     const bool empty = item.find_first_not_of(" \t") == std::string::npos;
-    if (count >= 3 || empty || *end != '\0' || !std::isfinite(value))
+    if (empty || *end != '\0')
     {
-      count = -1;
-      break;
+      return "\"" + item + "\" is not a number (expected " + form + ")";
     }
-    out[count++] = value;
+    if (!std::isfinite(value))
+    {
+      return "\"" + item + "\" is not finite (expected " + form + ")";
+    }
+    values.push_back(value);
   }
-  if (count != 3 || (!text.empty() && text.back() == ','))
+  if ((count > 0 && values.size() != count) || values.empty() ||
+    (!text.empty() && text.back() == ','))
+  {
+    return "expected " + (count > 0 ? std::to_string(count) + " " : std::string()) +
+      "comma-separated numbers " + form + ", " + Got(text);
+  }
+  return {};
+}
+
+void ParseVector3(const std::string& text, const std::string& option, double out[3])
+{
+  std::vector<double> values;
+  if (!CheckNumberList(text, 3, "X,Y,Z", values).empty())
   {
     throw Failure(
-      option + ": expected three finite comma-separated numbers X,Y,Z, got \"" + text + "\"", 2);
+      option + ": expected three finite comma-separated numbers X,Y,Z, " + Got(text), 2);
   }
+  std::copy(values.begin(), values.end(), out);
+}
+
+std::string CheckDirection(const double v[3], const std::string& text)
+{
+  if (v[0] == 0 && v[1] == 0 && v[2] == 0)
+  {
+    return "\"" + text + "\" is the zero vector: a direction must not be zero";
+  }
+  const double squared = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  if (!(squared >= DBL_MIN && squared <= DBL_MAX))
+  {
+    return "\"" + text + "\": the length of this direction is too " +
+      (squared < 1.0 ? "small" : "large") + " to normalise (scale it)";
+  }
+  return {};
+}
+
+CLI::Validator Checked(
+  std::function<std::string(const std::string&)> check, const std::string& description)
+{
+  return CLI::Validator([check](std::string& text) { return check(text); }, description);
+}
+
+CLI::Validator FiniteNumber(double low, double high, bool lowOpen, bool highOpen)
+{
+  const double largest = std::numeric_limits<double>::max();
+  // The messages' phrase: "a finite positive number at most 179", "a finite
+  // positive number from 1e-09 to 1e+06", "a finite non-negative number at most 255".
+  std::string expected = (low > 0 || (low == 0 && lowOpen)) ? "a finite positive number"
+    : low == 0                                              ? "a finite non-negative number"
+                                                            : "a finite number";
+  const bool lowShown = low != 0 && low != -largest;
+  const bool highShown = high != largest;
+  if (lowShown && highShown && !lowOpen && !highOpen)
+  {
+    expected += " from " + FormatNumber(low) + " to " + FormatNumber(high);
+  }
+  else
+  {
+    if (lowShown)
+    {
+      expected += (lowOpen ? " greater than " : " at least ") + FormatNumber(low);
+    }
+    if (lowShown && highShown)
+    {
+      expected += " and";
+    }
+    if (highShown)
+    {
+      expected += (highOpen ? " less than " : " at most ") + FormatNumber(high);
+    }
+  }
+  // For --help: "(0, 100]", "[1e-09, 1e+06]".
+  const std::string interval = (lowOpen ? "(" : "[") +
+    (low == -largest ? std::string("-inf") : FormatNumber(low)) + ", " +
+    (high == largest ? std::string("inf") : FormatNumber(high)) + (highOpen ? ")" : "]");
+  return Checked(
+    [=](const std::string& text) -> std::string
+    {
+      double value = 0.0;
+      const bool inside = ParseFinite(text, value) && (lowOpen ? value > low : value >= low) &&
+        (highOpen ? value < high : value <= high);
+      return inside ? std::string() : "expected " + expected + ", " + Got(text);
+    },
+    "in " + interval);
+}
+
+CLI::Validator PositiveNumber(double high)
+{
+  return FiniteNumber(0.0, high, true, false);
+}
+
+CLI::Validator WholeNumber(long long low, long long high)
+{
+  const std::string expected =
+    "a whole number from " + std::to_string(low) + " to " + std::to_string(high);
+  return Checked(
+    [=](const std::string& text) -> std::string
+    {
+      const bool digits = !text.empty() &&
+        std::all_of(text.begin() + (text[0] == '-' || text[0] == '+'), text.end(),
+          [](unsigned char c) { return std::isdigit(c); }) &&
+        text.find_first_of("0123456789") != std::string::npos;
+      errno = 0;
+      const long long value = digits ? std::strtoll(text.c_str(), nullptr, 10) : 0;
+      const bool inside = digits && errno == 0 && value >= low && value <= high;
+      return inside ? std::string() : "expected " + expected + ", " + Got(text);
+    },
+    "in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+}
+
+CLI::Validator Point3()
+{
+  return Checked(
+    [](const std::string& text) -> std::string
+    {
+      std::vector<double> values;
+      return CheckNumberList(text, 3, "X,Y,Z", values).empty()
+        ? std::string()
+        : "expected three finite comma-separated numbers X,Y,Z, " + Got(text);
+    },
+    "X,Y,Z");
+}
+
+CLI::Validator Direction3()
+{
+  return Checked(
+    [](const std::string& text) -> std::string
+    {
+      std::vector<double> values;
+      if (!CheckNumberList(text, 3, "X,Y,Z", values).empty())
+      {
+        return "expected three finite comma-separated numbers X,Y,Z, " + Got(text);
+      }
+      return CheckDirection(values.data(), text);
+    },
+    "X,Y,Z (not 0,0,0)");
 }
 
 std::string Extension(const std::string& path)
@@ -144,6 +310,176 @@ void ErrorCollector::ThrowIfAny(const std::string& context) const
     text += "\n  " + m;
   }
   throw Failure(text);
+}
+
+vtkStandardNewMacro(CliOutputWindow);
+
+namespace
+{
+/// `text` without ANSI escape sequences (ESC [ ... letter) and trailing blanks.
+std::string Plain(std::string text)
+{
+  std::string plain;
+  plain.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i)
+  {
+    if (text[i] == '\033')
+    {
+      if (i + 1 < text.size() && text[i + 1] == '[')
+      {
+        i += 2;
+        while (i < text.size() && !std::isalpha(static_cast<unsigned char>(text[i])))
+        {
+          ++i;
+        }
+      }
+      continue;
+    }
+    plain += text[i];
+  }
+  while (!plain.empty() && std::isspace(static_cast<unsigned char>(plain.back())))
+  {
+    plain.pop_back();
+  }
+  return plain;
+}
+
+const char* LoggerCallbackId = "riemann-cli";
+} // namespace
+
+CliOutputWindow* CliOutputWindow::Install()
+{
+  vtkNew<CliOutputWindow> window;
+  vtkOutputWindow::SetInstance(window);
+  // VTK's error and warning macros write to vtkLogger as well as to the
+  // output window, and loguru prints them on stderr with colour codes: turn
+  // that off, and take what it logs (also the messages that VTK writes only
+  // to the log) through the callback.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  if (vtkLogger::IsEnabled())
+  {
+    vtkLogger::AddCallback(LoggerCallbackId, &CliOutputWindow::LoggerCallback, window.Get(),
+      vtkLogger::VERBOSITY_WARNING);
+    window->LoggerRouted = true;
+  }
+  return window;
+}
+
+void CliOutputWindow::Uninstall()
+{
+  // Before static destruction, which would otherwise delete the window while
+  // loguru still holds it.
+  vtkLogger::RemoveCallback(LoggerCallbackId);
+  vtkOutputWindow::SetInstance(nullptr);
+}
+
+void CliOutputWindow::DisplayText(const char* text)
+{
+  if (!text)
+  {
+    return;
+  }
+  const MessageTypes type = this->GetCurrentMessageType();
+  // Text that comes from VTK's error and warning macros was also written to
+  // vtkLogger, and so reached LoggerCallback: the base class tells it by
+  // sending it nowhere (its DEFAULT display mode). So does the text of the
+  // debug macros, logged at INFO and dropped here (no object of the CLI has
+  // Debug on).
+  if (this->LoggerRouted && this->Superclass::GetDisplayStream(type) == StreamType::Null)
+  {
+    return;
+  }
+  const char* kind = "text";
+  switch (type)
+  {
+    case MESSAGE_TYPE_ERROR:
+      kind = "error";
+      break;
+    case MESSAGE_TYPE_WARNING:
+    case MESSAGE_TYPE_GENERIC_WARNING:
+      kind = "warning";
+      break;
+    case MESSAGE_TYPE_DEBUG:
+      kind = "debug";
+      break;
+    default:
+      break;
+  }
+  // "ERROR: In /path/file.cxx, line 12\nvtkClass (0x...): message": the
+  // location goes into the prefix.
+  std::string message = text;
+  std::string where;
+  const size_t in = message.find(": In ");
+  const size_t newline = message.find('\n');
+  if (in != std::string::npos && newline != std::string::npos && in < newline)
+  {
+    std::string location = message.substr(in + 5, newline - in - 5);
+    const size_t line = location.rfind(", line ");
+    if (line != std::string::npos)
+    {
+      std::string file = location.substr(0, line);
+      const size_t slash = file.find_last_of('/');
+      where =
+        file.substr(slash == std::string::npos ? 0 : slash + 1) + ":" + location.substr(line + 7);
+    }
+    message = message.substr(newline + 1);
+  }
+  this->Keep(kind, where, message);
+}
+
+void CliOutputWindow::LoggerCallback(void* self, const vtkLogger::Message& message)
+{
+  std::string where;
+  if (message.filename && *message.filename)
+  {
+    const std::string file = message.filename;
+    const size_t slash = file.find_last_of('/');
+    where =
+      file.substr(slash == std::string::npos ? 0 : slash + 1) + ":" + std::to_string(message.line);
+  }
+  const char* kind = message.verbosity <= vtkLogger::VERBOSITY_ERROR
+    ? "error"
+    : (message.verbosity == vtkLogger::VERBOSITY_WARNING ? "warning" : "log");
+  static_cast<CliOutputWindow*>(self)->Keep(kind, where,
+    std::string(message.prefix ? message.prefix : "") + (message.message ? message.message : ""));
+}
+
+void CliOutputWindow::Keep(const std::string& kind, const std::string& where, std::string text)
+{
+  text = Plain(text);
+  // Further lines indented under the first.
+  for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 1))
+  {
+    text.insert(at + 1, "  ");
+  }
+  const std::string line =
+    "VTK " + kind + (where.empty() ? std::string() : " (" + where + ")") + ": " + text;
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  this->Messages.push_back(line);
+  this->NumberOfErrors += kind == "error";
+  this->NumberOfWarnings += kind == "warning";
+  if (this->Verbose)
+  {
+    std::cerr << "riemann: " << line << "\n" << std::flush;
+  }
+}
+
+std::vector<std::string> CliOutputWindow::GetMessages() const
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  return this->Messages;
+}
+
+int CliOutputWindow::GetNumberOfErrors() const
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  return this->NumberOfErrors;
+}
+
+int CliOutputWindow::GetNumberOfWarnings() const
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  return this->NumberOfWarnings;
 }
 } // namespace cli
 } // namespace riemann

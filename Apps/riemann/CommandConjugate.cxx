@@ -81,19 +81,12 @@ void RunConjugate(const ConjugateArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
   }
-  if (args.Directions < 1 || args.Directions > MaximumDirections)
+  // Each number was checked while parsing; here, what depends on two of them.
+  if (args.Step > args.Length)
   {
-    throw Failure("--directions: " + std::to_string(args.Directions) + ": must be between 1 and " +
-        std::to_string(MaximumDirections),
+    throw Failure("--step " + FormatNumber(args.Step) + ": must be at most --length " +
+        FormatNumber(args.Length),
       2);
-  }
-  if (!std::isfinite(args.Length) || args.Length <= 0.0)
-  {
-    throw Failure("--length: must be a positive finite arc length", 2);
-  }
-  if (!std::isfinite(args.Step) || args.Step <= 0.0 || args.Step > args.Length)
-  {
-    throw Failure("--step: must be positive and at most --length", 2);
   }
   if (args.Length / args.Step > 1e8)
   {
@@ -170,27 +163,33 @@ void RegisterConjugateCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)");
-  command->add_option("--directions,-n", args->Directions,
-    "Number of directions, a Fibonacci lattice on the sphere or cone (default 100)");
-  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)");
+  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)")->check(Point3());
+  command
+    ->add_option("--directions,-n", args->Directions,
+      "Number of directions, a Fibonacci lattice on the sphere or cone (default 100)")
+    ->check(WholeNumber(1, MaximumDirections));
+  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)")
+    ->check(Direction3());
   command
     ->add_option("--cone-angle", args->ConeAngle,
       "Half-angle of the cone of directions in degrees (default 180: every direction)")
-    ->check(CLI::Range(0.0, 180.0));
-  command->add_option("--length,-l", args->Length, "Arc length searched (default 10)");
-  command->add_option("--step", args->Step,
-    "Step in arc length (default 0.01; the initial step for dp45)");
+    ->check(FiniteNumber(0.0, 180.0));
+  command->add_option("--length,-l", args->Length, "Arc length searched (default 10)")
+    ->check(PositiveNumber());
+  command
+    ->add_option(
+      "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
+    ->check(PositiveNumber());
   command->add_option("--integrator", args->Integrator,
     "Integrator of the Jacobi fields: euler, rk4 or dp45 (default, tolerance 1e-9)");
   command
     ->add_option(
       "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")
-    ->check(CLI::Range(1e-15, 1.0));
+    ->check(FiniteNumber(1e-15, 1.0));
   command
     ->add_option("--count,-k", args->Count,
       "Conjugate points kept per direction, first ones first (default 1)")
-    ->check(CLI::Range(1LL, 1000000LL));
+    ->check(WholeNumber(1, 1000000));
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->add_option("--surface", args->Surface,
     "Also write the conjugate locus as surfaces over the direction grid (.vtp)");

@@ -43,10 +43,10 @@ struct ExpmapArguments
 
 constexpr long long MaximumDirections = 1000000;
 
-/// "1,2.5,3" -> positive finite numbers; throws Failure naming --radii.
-std::vector<double> ParseRadii(const std::string& text)
+/// What is wrong with "1,2.5,3" as positive finite numbers, or "" (then `radii` holds them).
+std::string CheckRadii(const std::string& text, std::vector<double>& radii)
 {
-  std::vector<double> radii;
+  radii.clear();
   std::stringstream stream(text);
   std::string item;
   while (std::getline(stream, item, ','))
@@ -63,15 +63,15 @@ std::vector<double> ParseRadii(const std::string& text)
     }
     if (used == 0 || used != item.size() || !std::isfinite(value) || value <= 0.0)
     {
-      throw Failure("--radii: \"" + item + "\" is not a positive number (write R1,R2,...)", 2);
+      return "\"" + item + "\" is not a positive number (write R1,R2,...)";
     }
     radii.push_back(value);
   }
-  if (radii.empty())
+  if (radii.empty() || text.back() == ',')
   {
-    throw Failure("--radii: expected R1,R2,... (positive arc lengths)", 2);
+    return "expected R1,R2,... (finite positive arc lengths), got \"" + text + "\"";
   }
-  return radii;
+  return {};
 }
 
 void RunExpmap(const ExpmapArguments& args)
@@ -88,19 +88,12 @@ void RunExpmap(const ExpmapArguments& args)
   {
     throw Failure("--wavefronts needs --radii R1,R2,...", 2);
   }
-  if (args.Directions < 1 || args.Directions > MaximumDirections)
+  // Each number was checked while parsing; here, what depends on two of them.
+  if (args.Step > args.Length)
   {
-    throw Failure("--directions: " + std::to_string(args.Directions) + ": must be between 1 and " +
-        std::to_string(MaximumDirections),
+    throw Failure("--step " + FormatNumber(args.Step) + ": must be at most --length " +
+        FormatNumber(args.Length),
       2);
-  }
-  if (!std::isfinite(args.Length) || args.Length <= 0.0)
-  {
-    throw Failure("--length: must be a positive finite arc length", 2);
-  }
-  if (!std::isfinite(args.Step) || args.Step <= 0.0 || args.Step > args.Length)
-  {
-    throw Failure("--step: must be positive and at most --length", 2);
   }
   if (args.Length / args.Step * static_cast<double>(args.Directions) >
     vtkRiemannExponentialMap::MaximumNumberOfSamples)
@@ -116,8 +109,12 @@ void RunExpmap(const ExpmapArguments& args)
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);
   const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
-  const std::vector<double> radii =
-    args.Radii.empty() ? std::vector<double>() : ParseRadii(args.Radii);
+  std::vector<double> radii; // checked while parsing; parsed here
+  const std::string badRadii = args.Radii.empty() ? std::string() : CheckRadii(args.Radii, radii);
+  if (!badRadii.empty())
+  {
+    throw Failure("--radii: " + badRadii, 2);
+  }
   for (double r : radii)
   {
     if (r > args.Length)
@@ -177,22 +174,34 @@ void RegisterExpmapCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)");
-  command->add_option("--directions,-n", args->Directions,
-    "Number of directions, a Fibonacci lattice on the sphere or cone (default 400)");
-  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)");
+  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)")->check(Point3());
+  command
+    ->add_option("--directions,-n", args->Directions,
+      "Number of directions, a Fibonacci lattice on the sphere or cone (default 400)")
+    ->check(WholeNumber(1, MaximumDirections));
+  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)")
+    ->check(Direction3());
   command
     ->add_option("--cone-angle", args->ConeAngle,
       "Half-angle of the cone of directions in degrees (default 180: every direction)")
-    ->check(CLI::Range(0.0, 180.0));
-  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 5)");
-  command->add_option("--radii", args->Radii, "Radii R1,R2,... of the wavefronts");
+    ->check(FiniteNumber(0.0, 180.0));
+  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 5)")
+    ->check(PositiveNumber());
+  command->add_option("--radii", args->Radii, "Radii R1,R2,... of the wavefronts")
+    ->check(Checked(
+      [](const std::string& text)
+      {
+        std::vector<double> radii;
+        return CheckRadii(text, radii);
+      },
+      "R1,R2,..."));
   command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45");
-  command->add_option("--step", args->Step,
-    "Step in arc length (default 0.01; the initial step for dp45)");
   command
-    ->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
-    ->check(CLI::Range(1e-15, 1.0));
+    ->add_option(
+      "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
+    ->check(PositiveNumber());
+  command->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
+    ->check(FiniteNumber(1e-15, 1.0));
   command->add_option("--output,-o", args->Output, "Ray bundle (.vtp)")->required();
   command->add_option(
     "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (.vtp triangles)");

@@ -42,71 +42,52 @@ struct FieldsArguments
 constexpr long long MaximumPerAxis = 512;
 constexpr long long MaximumPoints = 20000000;
 
-/// "a,b,..." -> exactly `count` finite numbers; throws Failure (status 2) naming `option`.
-std::vector<double> ParseNumbers(
-  const std::string& text, const std::string& option, size_t count, const std::string& form)
+/// What is wrong with `text` as a grid box, or "" (then `bounds` holds it).
+std::string CheckBounds(const std::string& text, double bounds[6])
 {
-  std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
+  std::vector<double> b;
+  const std::string problem = CheckNumberList(text, 6, "X0,X1,Y0,Y1,Z0,Z1", b);
+  if (!problem.empty())
   {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    const bool empty = item.find_first_not_of(" \t") == std::string::npos;
-    if (empty || *end != '\0')
-    {
-      throw Failure(option + ": \"" + item + "\" is not a number (expected " + form + ")", 2);
-    }
-    if (!std::isfinite(value))
-    {
-      throw Failure(option + ": \"" + item + "\" is not finite (expected " + form + ")", 2);
-    }
-    values.push_back(value);
+    return problem;
   }
-  if (values.size() != count || (!text.empty() && text.back() == ','))
-  {
-    throw Failure(option + ": expected " + std::to_string(count) + " comma-separated numbers " +
-        form + ", got \"" + text + "\"",
-      2);
-  }
-  return values;
-}
-
-void ParseBounds(const std::string& text, double bounds[6])
-{
-  const std::vector<double> b = ParseNumbers(text, "--bounds", 6, "X0,X1,Y0,Y1,Z0,Z1");
   const char* axes = "xyz";
   for (int a = 0; a < 3; ++a)
   {
     if (!(b[2 * a] < b[2 * a + 1]))
     {
       std::ostringstream message;
-      message << "--bounds: the " << axes[a] << " range needs " << axes[a] << "0 < " << axes[a]
-              << "1, got " << b[2 * a] << " >= " << b[2 * a + 1];
-      throw Failure(message.str(), 2);
+      message << "the " << axes[a] << " range needs " << axes[a] << "0 < " << axes[a] << "1, got "
+              << b[2 * a] << " >= " << b[2 * a + 1];
+      return message.str();
     }
     bounds[2 * a] = b[2 * a];
     bounds[2 * a + 1] = b[2 * a + 1];
   }
+  return {};
 }
 
-void ParseDimensions(const std::string& text, int dims[3])
+/// What is wrong with `text` as point counts per axis, or "" (then `dims` holds them).
+std::string CheckDimensions(const std::string& text, int dims[3])
 {
-  const std::vector<double> d = ParseNumbers(text, "--dims", 3, "NX,NY,NZ");
+  std::vector<double> d;
+  const std::string problem = CheckNumberList(text, 3, "NX,NY,NZ", d);
+  if (!problem.empty())
+  {
+    return problem;
+  }
   double total = 1.0;
   for (int a = 0; a < 3; ++a)
   {
     if (d[a] != std::floor(d[a]))
     {
-      throw Failure("--dims: \"" + text + "\": point counts must be whole numbers", 2);
+      return "\"" + text + "\": point counts must be whole numbers";
     }
     if (d[a] < 1 || d[a] > MaximumPerAxis)
     {
       std::ostringstream message;
-      message << "--dims: " << d[a] << " points on an axis; each must be between 1 and "
-              << MaximumPerAxis;
-      throw Failure(message.str(), 2);
+      message << d[a] << " points on an axis; each must be between 1 and " << MaximumPerAxis;
+      return message.str();
     }
     dims[a] = static_cast<int>(d[a]);
     total *= d[a];
@@ -114,10 +95,10 @@ void ParseDimensions(const std::string& text, int dims[3])
   if (total > MaximumPoints)
   {
     std::ostringstream message;
-    message << "--dims: " << static_cast<long long>(total) << " grid points; at most "
-            << MaximumPoints;
-    throw Failure(message.str(), 2);
+    message << static_cast<long long>(total) << " grid points; at most " << MaximumPoints;
+    return message.str();
   }
+  return {};
 }
 
 bool WriteCsv(vtkImageData* image, const std::string& path)
@@ -174,10 +155,19 @@ void RunFields(const FieldsArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vti or .csv", 2);
   }
+  // Checked while parsing (the validators below); parsed here.
   double bounds[6];
   int dims[3];
-  ParseBounds(args.Bounds, bounds);
-  ParseDimensions(args.Dimensions, dims);
+  std::string problem = CheckBounds(args.Bounds, bounds);
+  if (!problem.empty())
+  {
+    throw Failure("--bounds: " + problem, 2);
+  }
+  problem = CheckDimensions(args.Dimensions, dims);
+  if (!problem.empty())
+  {
+    throw Failure("--dims: " + problem, 2);
+  }
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
 
   // One grid, three filters in a chain: each adds its arrays to a shallow copy.
@@ -236,10 +226,25 @@ void RegisterFieldsCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option(
-    "--bounds", args->Bounds, "Grid box X0,X1,Y0,Y1,Z0,Z1 (default -2,2,-2,2,-2,2)");
-  command->add_option("--dims", args->Dimensions,
-    "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, 2e7 in all)");
+  command
+    ->add_option("--bounds", args->Bounds, "Grid box X0,X1,Y0,Y1,Z0,Z1 (default -2,2,-2,2,-2,2)")
+    ->check(Checked(
+      [](const std::string& text)
+      {
+        double bounds[6];
+        return CheckBounds(text, bounds);
+      },
+      "X0,X1,Y0,Y1,Z0,Z1"));
+  command
+    ->add_option("--dims", args->Dimensions,
+      "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, 2e7 in all)")
+    ->check(Checked(
+      [](const std::string& text)
+      {
+        int dims[3];
+        return CheckDimensions(text, dims);
+      },
+      "NX,NY,NZ"));
   command->add_option("--output,-o", args->Output, "Output file: .vti or .csv")->required();
   command->callback([args]() { RunFields(*args); });
 }

@@ -140,9 +140,9 @@ void RegisterInfoCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--point,-p", args->Point, "Point X,Y,Z (default 0,0,0)");
+  command->add_option("--point,-p", args->Point, "Point X,Y,Z (default 0,0,0)")->check(Point3());
   command->add_option("--precision", args->Precision, "Significant digits (default 10)")
-    ->check(CLI::Range(1, 17));
+    ->check(WholeNumber(1, 17));
   command->add_flag(
     "--glsl", args->Glsl, "Print the metric's part of the ray-tracing shader (GLSL) instead");
   command->callback([args]() { RunInfo(*args); });

@@ -298,6 +298,49 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   return Grab(window);
 }
 
+/// Refuses a camera that does not define a view: its position at its focal
+/// point, or its view-up along its view direction (VTK would render NaNs, or
+/// the picture of a camera it silently changed). Names the options at fault.
+void CheckCamera(vtkCamera* camera, const RenderArguments& args)
+{
+  const double* position = camera->GetPosition();
+  const double* focal = camera->GetFocalPoint();
+  const double* up = camera->GetViewUp();
+  const auto text = [](const double* v)
+  { return FormatNumber(v[0]) + "," + FormatNumber(v[1]) + "," + FormatNumber(v[2]); };
+  // The options as typed; the scene's values as the camera holds them.
+  const std::string from = args.CameraPosition.empty()
+    ? "the scene's camera position " + text(position)
+    : "--camera-position " + args.CameraPosition;
+  const std::string to =
+    args.LookAt.empty() ? "the scene's look-at point " + text(focal) : "--look-at " + args.LookAt;
+  const double view[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
+  const double length = std::sqrt(view[0] * view[0] + view[1] * view[1] + view[2] * view[2]);
+  if (!(length > 0))
+  {
+    throw Failure(from + " and " + to +
+        ": the camera is at the point it looks at, so there is no view direction",
+      2);
+  }
+  if (!std::isfinite(length))
+  {
+    throw Failure(from + " and " + to + ": too far apart for a view direction", 2);
+  }
+  const double cross[3] = { up[1] * view[2] - up[2] * view[1], up[2] * view[0] - up[0] * view[2],
+    up[0] * view[1] - up[1] * view[0] };
+  const double upLength = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+  const double sine = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]) /
+    (upLength * length);
+  if (!(sine > 1e-9))
+  {
+    throw Failure(
+      (args.ViewUp.empty() ? "the scene's view-up " + text(up) : "--view-up " + args.ViewUp) +
+        " is parallel to the view direction (from " + from + " to " + to +
+        "), so the picture has no up: give a --view-up across the view",
+      2);
+  }
+}
+
 void ApplyCameraOptions(vtkCamera* camera, const RenderArguments& args)
 {
   double v[3];
@@ -403,6 +446,7 @@ void RunRender(const RenderArguments& args)
   vtkCamera* camera = renderer->GetActiveCamera();
   scene->ApplyCamera(camera);
   ApplyCameraOptions(camera, args);
+  CheckCamera(camera, args);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
@@ -548,9 +592,9 @@ void RegisterRenderCommand(CLI::App& app)
       "--scene,-s", args->Scene, "Scene (JSON file, see Data/scenes); default: the paper's grid")
     ->check(CLI::ExistingFile);
   command->add_option("--width", args->Width, "Image width in pixels (default 640)")
-    ->check(CLI::Range(1, 16384));
+    ->check(WholeNumber(1, 16384));
   command->add_option("--height", args->Height, "Image height in pixels (default 480)")
-    ->check(CLI::Range(1, 16384));
+    ->check(WholeNumber(1, 16384));
   command
     ->add_option("--backend", args->Backend,
       "gpu (default: GLSL, analytic objects) or cpu (Embree: also meshes; EXR with AOVs)")
@@ -558,7 +602,7 @@ void RegisterRenderCommand(CLI::App& app)
   command
     ->add_option("--samples", args->Samples,
       "Rays per pixel, stratified (anti-aliasing; --backend cpu; default 1)")
-    ->check(CLI::Range(1, 4096));
+    ->check(WholeNumber(1, 4096));
   command->add_flag("--hit-error", args->HitError,
     "Diffeomorphism metrics, --backend cpu: compare each pixel's hit with the exact geodesic "
     "(a HitError EXR channel, max and median on stderr)");
@@ -566,40 +610,47 @@ void RegisterRenderCommand(CLI::App& app)
     "Also write a picture of the hit error (log scale; red: only one of the rays hits)");
   command->add_flag("--progress", args->Progress, "Show a progress bar on stderr (--backend cpu)");
   command->add_flag("--quiet", args->Quiet, "Never show a progress bar");
-  command->add_option(
-    "--camera-position", args->CameraPosition, "Observer X,Y,Z (default: the scene's camera)");
-  command->add_option("--look-at", args->LookAt, "Focal point X,Y,Z");
-  command->add_option("--view-up", args->ViewUp, "View up X,Y,Z");
-  command->add_option("--fov", args->Fov, "Vertical field of view in degrees")
-    ->check(CLI::Range(1.0, 179.0));
+  command
+    ->add_option(
+      "--camera-position", args->CameraPosition, "Observer X,Y,Z (default: the scene's camera)")
+    ->check(Point3());
+  command->add_option("--look-at", args->LookAt, "Focal point X,Y,Z")->check(Point3());
+  command->add_option("--view-up", args->ViewUp, "View up X,Y,Z (not along the view)")
+    ->check(Direction3());
+  // VTK's camera clamps its view angle to 179 degrees: refuse more, not clamp.
+  command
+    ->add_option("--fov", args->Fov,
+      "Vertical field of view in degrees, above 0 and at most 179 (perspective; default: the "
+      "scene's)")
+    ->check(PositiveNumber(179.0));
   command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
   command
     ->add_option("--integrator", args->Integrator, "euler, rk4 or adaptive (default: the scene's)")
     ->check(CLI::IsMember({ "euler", "rk4", "adaptive" }));
   command->add_option("--step", args->Step, "Step in arc length (default: the scene's)")
-    ->check(CLI::Range(1e-6, 100.0));
+    ->check(FiniteNumber(1e-6, 100.0));
   command
     ->add_option("--max-steps", args->MaximumSteps, "Steps per ray at most (default: the scene's)")
-    ->check(CLI::Range(1, 1000000));
+    ->check(WholeNumber(1, 1000000));
   command
     ->add_option(
       "--max-length", args->MaximumLength, "Arc length per ray at most (default: the scene's)")
-    ->check(CLI::Range(1e-6, 1e6));
+    ->check(FiniteNumber(1e-6, 1e6));
   command
     ->add_option("--frames", args->Frames,
       "Animate the metric's time t from 0 to 1 over N frames, written as OUT_0000.png, ...")
-    ->check(CLI::Range(1, 100000));
+    ->check(WholeNumber(1, 100000));
   command
     ->add_option("--bundle", args->Bundle,
       "Also draw an outside view with an N x N bundle of the rays, side by side")
-    ->check(CLI::Range(1, 256));
+    ->check(WholeNumber(1, 256));
   command
     ->add_option("--reference", args->Reference, "Compare with this picture; exit 3 if it differs")
     ->check(CLI::ExistingFile);
   command
     ->add_option("--threshold", args->Threshold,
       "Largest accepted mean per-pixel difference to the reference, 0-255 (default 1)")
-    ->check(CLI::Range(0.0, 255.0));
+    ->check(FiniteNumber(0.0, 255.0));
   command->add_option("--output,-o", args->Output, "Output picture: .png or .exr")->required();
   command->callback([args]() { RunRender(*args); });
 }

@@ -131,6 +131,13 @@ vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
     {
       throw Failure(path + ": more than " + std::to_string(maximumSeeds) + " seeds");
     }
+    std::ostringstream direction;
+    direction << d[3] << ',' << d[4] << ',' << d[5];
+    const std::string degenerate = CheckDirection(d + 3, direction.str());
+    if (!degenerate.empty())
+    {
+      throw Failure(path + ": line " + std::to_string(lineNumber) + ": dx,dy,dz " + degenerate);
+    }
     points->InsertNextPoint(d);
     directions->InsertNextTuple(d + 3);
   }
@@ -222,12 +229,9 @@ void RunTrace(const TraceArguments& args)
   else
   {
     double seed[3], direction[3];
+    // Checked while parsing (Point3, Direction3); parsed here.
     ParseVector3(args.Seed, "--seed", seed);
     ParseVector3(args.Direction, "--direction", direction);
-    if (direction[0] == 0 && direction[1] == 0 && direction[2] == 0)
-    {
-      throw Failure("--direction: the direction must not be zero", 2);
-    }
     tracer->SetStartPosition(seed);
     tracer->SetStartDirection(direction);
   }
@@ -275,9 +279,11 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Start point X,Y,Z (default 0,0,0)");
-  command->add_option("--direction", args->Direction,
-    "Initial direction DX,DY,DZ, normalised to unit speed in g (default 1,0,0)");
+  command->add_option("--seed", args->Seed, "Start point X,Y,Z (default 0,0,0)")->check(Point3());
+  command
+    ->add_option("--direction", args->Direction,
+      "Initial direction DX,DY,DZ, normalised to unit speed in g (default 1,0,0)")
+    ->check(Direction3());
   command
     ->add_option("--seeds", args->SeedsFile,
       "CSV of seeds with header x,y,z,dx,dy,dz (replaces --seed/--direction)")
@@ -285,20 +291,20 @@ void RegisterTraceCommand(CLI::App& app)
     ->excludes(command->get_option("--seed"))
     ->excludes(command->get_option("--direction"));
   command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 10)")
-    ->check(CLI::Range(0.0, 1e9));
+    ->check(PositiveNumber(1e9));
   command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
     ->check(CLI::IsMember({ "euler", "rk4", "dp45" }));
   command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
     ->check(CLI::IsMember({ "forward", "backward", "both" }));
   command
     ->add_option("--step", args->Step, "Step in arc length (initial step for dp45; default 0.01)")
-    ->check(CLI::Range(1e-9, 1e6));
+    ->check(FiniteNumber(1e-9, 1e6));
   command
     ->add_option("--tolerance", args->Tolerance, "Per-step error tolerance of dp45 (default 1e-8)")
-    ->check(CLI::Range(1e-15, 1.0));
+    ->check(FiniteNumber(1e-15, 1.0));
   command
     ->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
-    ->check(CLI::Range(1LL, 1000000000LL));
+    ->check(WholeNumber(1, 1000000000));
   command->add_flag("--transverse-jacobian", args->TransverseJacobian,
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");

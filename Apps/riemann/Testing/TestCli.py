@@ -616,6 +616,169 @@ class BadInputTests(unittest.TestCase):
                 self.assertEqual(leftovers, [], f"{what}: output files left behind")
 
 
+# Every numeric option of every command, refused by name before any work:
+# (command, arguments, expected substring of stderr). Each run gets a valid
+# metric (and -o) unless its arguments say otherwise; exit status 2, no file.
+NUMERIC_OPTIONS = [
+    ("trace", ["--step", "nan"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "nan"'),
+    ("trace", ["--step", "inf"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "inf"'),
+    ("trace", ["--step", "0"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "0"'),
+    ("trace", ["--tolerance", "nan"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "nan"'),
+    ("trace", ["--tolerance", "-inf"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "-inf"'),
+    ("trace", ["--length", "nan"], '--length: expected a finite positive number at most 1e+09, got "nan"'),
+    ("trace", ["--length", "0"], '--length: expected a finite positive number at most 1e+09, got "0"'),
+    ("trace", ["--length", "1e999"], '--length: expected a finite positive number at most 1e+09, got "1e999"'),
+    ("trace", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1000000000, got "nan"'),
+    ("trace", ["--max-steps", "2.5"], '--max-steps: expected a whole number from 1 to 1000000000, got "2.5"'),
+    ("trace", ["--seed", "inf,0,0"], '--seed: expected three finite comma-separated numbers X,Y,Z, got "inf,0,0"'),
+    ("trace", ["--direction", "nan,1,0"], '--direction: expected three finite comma-separated numbers'),
+    ("trace", ["--direction", "0,0,0"], '--direction: "0,0,0" is the zero vector: a direction must not be zero'),
+    ("trace", ["--direction", "1e-200,0,0"], "--direction: \"1e-200,0,0\": the length of this direction is too small"),
+    ("info", ["--point", "nan,0,0"], '--point: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
+    ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
+    ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
+    ("render", ["--step", "nan"], '--step: expected a finite positive number from 1e-06 to 100, got "nan"'),
+    ("render", ["--fov", "nan"], '--fov: expected a finite positive number at most 179, got "nan"'),
+    ("render", ["--fov", "180"], '--fov: expected a finite positive number at most 179, got "180"'),
+    ("render", ["--fov", "0"], '--fov: expected a finite positive number at most 179, got "0"'),
+    ("render", ["--max-length", "nan"], '--max-length: expected a finite positive number from 1e-06 to 1e+06, got "nan"'),
+    ("render", ["--max-length", "inf"], '--max-length: expected a finite positive number from 1e-06 to 1e+06, got "inf"'),
+    ("render", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1000000, got "nan"'),
+    ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384, got "nan"'),
+    ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384, got "0"'),
+    ("render", ["--samples", "inf"], '--samples: expected a whole number from 1 to 4096, got "inf"'),
+    ("render", ["--frames", "nan"], '--frames: expected a whole number from 1 to 100000, got "nan"'),
+    ("render", ["--bundle", "0"], '--bundle: expected a whole number from 1 to 256, got "0"'),
+    ("render", ["--threshold", "nan"], '--threshold: expected a finite non-negative number at most 255, got "nan"'),
+    ("render", ["--view-up", "0,0,0"], '--view-up: "0,0,0" is the zero vector: a direction must not be zero'),
+    ("render", ["--view-up", "nan,1,0"], '--view-up: expected three finite comma-separated numbers'),
+    ("render", ["--camera-position", "0,0,nan"], '--camera-position: expected three finite comma-separated numbers'),
+    ("render", ["--look-at", "inf,0,0"], '--look-at: expected three finite comma-separated numbers'),
+    ("render", ["--camera-position", "0,0,5", "--look-at", "0,0,0", "--view-up", "0,0,-2"],
+     "--view-up 0,0,-2 is parallel to the view direction (from --camera-position 0,0,5 to --look-at 0,0,0)"),
+    ("render", ["--camera-position", "1,2,3", "--look-at", "1,2,3"],
+     "--camera-position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
+    ("conjugate", ["--step", "nan"], '--step: expected a finite positive number, got "nan"'),
+    ("conjugate", ["--length", "inf"], '--length: expected a finite positive number, got "inf"'),
+    ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "nan"'),
+    ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a finite non-negative number at most 180, got "nan"'),
+    ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),
+    ("conjugate", ["--directions", "nan"], '--directions: expected a whole number from 1 to 10000000, got "nan"'),
+    ("conjugate", ["--count", "inf"], '--count: expected a whole number from 1 to 1000000, got "inf"'),
+    ("conjugate", ["--seed", "nan,0,0"], '--seed: expected three finite comma-separated numbers'),
+    ("conjugate", ["--length", "1", "--step", "2"], "--step 2: must be at most --length 1"),
+    ("expmap", ["--step", "nan"], '--step: expected a finite positive number, got "nan"'),
+    ("expmap", ["--length", "nan"], '--length: expected a finite positive number, got "nan"'),
+    ("expmap", ["--tolerance", "inf"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "inf"'),
+    ("expmap", ["--cone-angle", "inf"], '--cone-angle: expected a finite non-negative number at most 180, got "inf"'),
+    ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),
+    ("expmap", ["--directions", "1.5"], '--directions: expected a whole number from 1 to 1000000, got "1.5"'),
+    ("expmap", ["--radii", "nan"], '--radii: "nan" is not a positive number'),
+    ("expmap", ["--radii", "1,inf"], '--radii: "inf" is not a positive number'),
+    ("expmap", ["--seed", "0,nan,0"], '--seed: expected three finite comma-separated numbers'),
+    ("fields", ["--bounds", "-1,1,-1,1,nan,1"], '--bounds: "nan" is not finite'),
+    ("fields", ["--dims", "nan,3,3"], '--dims: "nan" is not finite'),
+    ("fields", ["--dims", "3,inf,3"], '--dims: "inf" is not finite'),
+]
+
+OUTPUT_EXTENSION = {"trace": "csv", "render": "png", "conjugate": "csv", "expmap": "vtp", "fields": "csv"}
+
+
+class NumericOptionTests(unittest.TestCase):
+    """NaN, infinities, out-of-range numbers and degenerate vectors: refused by name, status 2."""
+
+    @staticmethod
+    def run_case(command, args):
+        """Run one case in a fresh folder; return (status, stdout, stderr, files left there)."""
+        with tempfile.TemporaryDirectory() as d:
+            metric = os.path.join(d, "metric.json")
+            with open(metric, "w") as f:
+                f.write(SPHERE_JSON)
+            line = [command, "-m", metric, *args]
+            if command in OUTPUT_EXTENSION:
+                line += ["-o", os.path.join(d, "out." + OUTPUT_EXTENSION[command])]
+            status, out, err = run(*line)
+            return status, out, err, sorted(os.listdir(d))
+
+    def test_every_numeric_option_is_checked(self):
+        # Some 60 runs, a few at a time (each is a process start and a refusal).
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(max_workers=4) as pool:
+            results = list(pool.map(lambda case: self.run_case(case[0], case[1]), NUMERIC_OPTIONS))
+        for (command, args, expected), (status, out, err, files) in zip(NUMERIC_OPTIONS, results):
+            with self.subTest(command=command, args=args):
+                self.assertEqual(status, 2, err)
+                self.assertIn(expected, err)
+                self.assertTrue(err.startswith("riemann: error: "), err)
+                self.assertEqual(out, "", "no work done")
+                self.assertEqual(files, ["metric.json"], "no output file written")
+
+    def test_bad_direction_in_seeds_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            seeds = os.path.join(d, "seeds.csv")
+            with open(seeds, "w") as f:
+                f.write("x,y,z,dx,dy,dz\n0,0,0,1,0,0\n1,0,0,0,0,0\n")
+            out = os.path.join(d, "out.csv")
+            status, _, err = run("trace", "-m", os.path.join(METRICS, "twist.json"), "--seeds", seeds, "-o", out)
+            self.assertNotEqual(status, 0, err)
+            self.assertIn('line 3: dx,dy,dz "0,0,0" is the zero vector', err)
+            self.assertFalse(os.path.exists(out))
+
+
+class VtkMessageTests(unittest.TestCase):
+    """VTK's own messages: kept by default (one clear line from the tool), printed plainly with --verbose."""
+
+    def trace_to(self, output, before=(), after=()):
+        return run(*before, "trace", "-m", os.path.join(METRICS, "twist.json"), "--length", "1",
+                   "-o", output, *after)
+
+    def test_unwritable_output_is_one_clear_line(self):
+        status, out, err = self.trace_to("/proc/x.vtp")
+        self.assertNotEqual(status, 0, err)
+        self.assertEqual(err.splitlines(), ["riemann: error: could not write /proc/x.vtp "
+                                            "(check that its folder exists and is writable)"], err)
+        self.assertNotIn("\x1b", err)
+        self.assertNotIn("vtkXMLPolyDataWriter", err)
+
+    def test_verbose_prints_vtk_detail_plainly(self):
+        # --verbose belongs to `riemann` itself and may also follow the command.
+        for before, after in ((["--verbose"], []), ([], ["--verbose"])):
+            with self.subTest(before=before, after=after):
+                status, _, err = self.trace_to("/proc/x.vtp", before, after)
+                self.assertNotEqual(status, 0, err)
+                self.assertIn("riemann: VTK error (", err)
+                self.assertIn("vtkXMLPolyDataWriter", err)
+                self.assertNotIn("\x1b", err)
+                self.assertEqual(err.splitlines()[-1], "riemann: error: could not write /proc/x.vtp "
+                                 "(check that its folder exists and is writable)")
+
+    def test_vtk_warnings_are_noted_in_one_line(self):
+        # The Poincare ball's metric is undefined at the seed: the tracer warns, the tool fails.
+        with tempfile.TemporaryDirectory() as d:
+            metric = os.path.join(d, "ball.json")
+            with open(metric, "w") as f:
+                f.write('{"type": "conformal", "n": "2/(1 - x^2 - y^2 - z^2)"}')
+            line = ["trace", "-m", metric, "--seed", "2,0,0", "-o", os.path.join(d, "out.csv")]
+            status, _, err = run(*line)
+            self.assertEqual(status, 1, err)
+            self.assertEqual(err.splitlines(), ["riemann: error: no geodesic could be traced from the given seeds",
+                                                "riemann: note: VTK also reported 1 warning; --verbose prints it"])
+            status, _, err = run(*line, "--verbose")
+            self.assertEqual(status, 1, err)
+            self.assertIn("riemann: VTK warning (vtkRiemannGeodesicTracer.cxx:", err)
+            self.assertIn("could not start", err)
+            self.assertNotIn("\x1b", err)
+            self.assertEqual(sorted(os.listdir(d)), ["ball.json"])
+
+    def test_successful_run_prints_no_vtk_lines(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "twist.vtp")
+            status, _, err = self.trace_to(out)
+            self.assertEqual(status, 0, err)
+            self.assertEqual(len(err.splitlines()), 1, err)
+            self.assertTrue(err.startswith("riemann trace: 1 geodesic(s)"), err)
+
+
 def print_table():
     print("| bad input | exit | message |\n|---|---|---|")
     for what, args, metric_text, _ in BAD_INPUTS:
