@@ -207,6 +207,18 @@ CLI::Validator Direction3()
     "X,Y,Z (not 0,0,0)");
 }
 
+CLI::Validator IntegratorName()
+{
+  return Checked(
+    [](const std::string& text) -> std::string
+    {
+      IntegratorType type;
+      return ParseIntegratorName(text, type) ? std::string()
+                                             : "expected euler, rk4 or dp45, " + Got(text);
+    },
+    "euler|rk4|dp45");
+}
+
 std::string Extension(const std::string& path)
 {
   const size_t slash = path.find_last_of('/');

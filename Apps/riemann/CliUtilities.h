@@ -98,6 +98,9 @@ CLI::Validator Point3();
 /// A direction X,Y,Z: three finite numbers, not all zero, of a length that
 /// can be normalised (its square neither underflows nor overflows).
 CLI::Validator Direction3();
+/// An integrator's name: euler, rk4 or dp45 (the one spelling of every
+/// command; "adaptive", render's old word for dp45, is still accepted).
+CLI::Validator IntegratorName();
 /// A validator from a check that returns what is wrong with the text ("" if nothing).
 CLI::Validator Checked(
   std::function<std::string(const std::string&)> check, const std::string& description);

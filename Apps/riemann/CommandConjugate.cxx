@@ -180,8 +180,10 @@ void RegisterConjugateCommand(CLI::App& app)
     ->add_option(
       "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
     ->check(PositiveNumber());
-  command->add_option("--integrator", args->Integrator,
-    "Integrator of the Jacobi fields: euler, rk4 or dp45 (default, tolerance 1e-9)");
+  command
+    ->add_option("--integrator", args->Integrator,
+      "Integrator of the Jacobi fields: euler, rk4 or dp45 (default, tolerance 1e-9)")
+    ->check(IntegratorName());
   command
     ->add_option(
       "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")

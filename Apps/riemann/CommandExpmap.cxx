@@ -195,7 +195,8 @@ void RegisterExpmapCommand(CLI::App& app)
         return CheckRadii(text, radii);
       },
       "R1,R2,..."));
-  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45");
+  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
+    ->check(IntegratorName());
   command
     ->add_option(
       "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")

@@ -8,9 +8,9 @@
 // image regression test in one command (as F3D's CLI).
 #include "CliUtilities.h"
 #include "Commands.h"
-#include "CpuRender.h"
 #include "ProgressBar.h"
 
+#include "RiemannCPUImage.h"
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
 #include "vtkActor.h"
@@ -177,10 +177,30 @@ const double* FramedBounds(vtkPolyData* geometry, vtkRiemannScene* scene)
   return bounds;
 }
 
+/**
+ * How the rays go, for every renderer of this command (the pass or the CPU
+ * tracer, and the bundle): the scene's settings unless an option overrides
+ * them, one shared settings object, and the projection.
+ */
+struct RaySetup
+{
+  bool UseSceneSettings = true;
+  vtkNew<vtkRiemannIntegrationSettings> Settings;
+  int Projection = vtkRiemannRayTracePass::PERSPECTIVE;
+
+  template <class Renderer>
+  void ApplyTo(Renderer* renderer) const
+  {
+    renderer->SetUseSceneSettings(this->UseSceneSettings);
+    renderer->SetIntegrationSettings(this->Settings);
+    renderer->SetProjection(this->Projection);
+  }
+};
+
 /// The outside view: the scene as ordinary geometry, the observer, and the
 /// bundle of its curved rays coloured by where they end.
 Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* inside,
-  vtkRiemannRayTracePass* pass, const RenderArguments& args, ErrorCollector* errors)
+  const RaySetup& raySetup, const RenderArguments& args, ErrorCollector* errors)
 {
   vtkNew<vtkRiemannRayBundle> bundle;
   errors->Observe(bundle);
@@ -190,13 +210,7 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   bundle->SetWidth(args.Width);
   bundle->SetHeight(args.Height);
   bundle->SetSubgridResolution(args.Bundle);
-  bundle->SetProjection(pass->GetProjection());
-  bundle->SetUseSceneSettings(pass->GetUseSceneSettings());
-  bundle->GetIntegrationSettings()->SetIntegratorType(pass->GetIntegrationSettings()->GetIntegratorType());
-  bundle->GetIntegrationSettings()->SetInitialIntegrationStep(pass->GetIntegrationSettings()->GetInitialIntegrationStep());
-  bundle->GetIntegrationSettings()->SetMaximumNumberOfSteps(pass->GetIntegrationSettings()->GetMaximumNumberOfSteps());
-  bundle->GetIntegrationSettings()->SetMaximumPropagation(pass->GetIntegrationSettings()->GetMaximumPropagation());
-  bundle->GetIntegrationSettings()->SetMaximumError(pass->GetIntegrationSettings()->GetMaximumError());
+  raySetup.ApplyTo(bundle.Get());
   bundle->Update();
   errors->ThrowIfAny("tracing the ray bundle failed:");
 
@@ -365,15 +379,15 @@ void ApplyCameraOptions(vtkCamera* camera, const RenderArguments& args)
   }
 }
 
-void RunRender(const RenderArguments& args)
+/// Refuses option combinations that make no sense, before any work.
+void CheckRenderOptions(const RenderArguments& args)
 {
   const std::string extension = Extension(args.Output);
   if (extension != "png" && extension != "exr")
   {
     throw Failure("-o " + args.Output + ": the output must end in .png or .exr", 2);
   }
-  const bool cpu = args.Backend == "cpu";
-  if (!cpu && (args.Samples > 1 || args.HitError || !args.HitErrorImage.empty()))
+  if (args.Backend != "cpu" && (args.Samples > 1 || args.HitError || !args.HitErrorImage.empty()))
   {
     throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
   }
@@ -381,196 +395,252 @@ void RunRender(const RenderArguments& args)
   {
     throw Failure("--reference compares one picture: it cannot be used with --frames", 2);
   }
+}
 
-  // Scene, then metric: --metric, else the scene's metric, else the default.
-  vtkNew<vtkRiemannScene> scene;
+/// The scene (its file read once), and the metric: --metric, else the
+/// scene's (already parsed with the scene), else the paper's bump.
+vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
+  const RenderArguments& args, vtkRiemannScene* scene)
+{
   if (!args.Scene.empty() && !scene->SetDefinitionFile(args.Scene.c_str()))
   {
     throw Failure(std::string("bad scene: ") + scene->GetLastError());
   }
-  vtkSmartPointer<vtkRiemannMetric> metric;
-  if (!args.Metric.empty())
-  {
-    metric = LoadMetric(args.Metric);
-  }
-  else
-  {
-    metric = vtkSmartPointer<vtkRiemannMetric>::New();
-    const std::string text =
-      scene->HasMetricDefinition() ? scene->GetMetricDefinition() : DefaultMetric;
-    if (!metric->SetDefinition(text.c_str()))
-    {
-      throw Failure(std::string("bad metric in the scene: ") + metric->GetLastError());
-    }
-  }
-
-  if (!cpu && scene->GetScene().HasMeshes())
+  if (args.Backend != "cpu" && scene->GetScene().HasMeshes())
   {
     throw Failure("the scene has mesh objects: mesh objects need --backend cpu", 2);
   }
+  if (!args.Metric.empty())
+  {
+    return LoadMetric(args.Metric);
+  }
+  auto metric = vtkSmartPointer<vtkRiemannMetric>::New();
+  const std::shared_ptr<const riemann::Scene> snapshot = scene->GetSceneSnapshot();
+  const bool ok = snapshot->ParsedMetric
+    ? metric->SetParsedDefinition(snapshot->MetricDefinition, snapshot->ParsedMetric)
+    : metric->SetDefinition(DefaultMetric);
+  if (!ok)
+  {
+    throw Failure(std::string("bad metric in the scene: ") + metric->GetLastError());
+  }
+  return metric;
+}
 
-  vtkNew<ErrorCollector> errors;
-  vtkNew<vtkRiemannRayTracePass> pass;
-  errors->Observe(pass);
-  pass->SetMetric(metric);
-  pass->SetScene(scene);
-  const riemann::Scene& description = scene->GetScene();
+/// The scene's integration, with what the options give in its place.
+void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetup& rays)
+{
   const bool overrides =
     !args.Integrator.empty() || args.Step > 0 || args.MaximumSteps > 0 || args.MaximumLength > 0;
-  if (overrides)
+  vtkRiemannIntegrationSettings* settings = rays.Settings;
+  settings->SetIntegratorType(static_cast<int>(
+    args.Integrator.empty() ? scene.Rays.Integrator : ParseIntegratorOption(args.Integrator)));
+  settings->SetInitialIntegrationStep(args.Step > 0 ? args.Step : scene.Rays.Step);
+  settings->SetMaximumNumberOfSteps(
+    args.MaximumSteps > 0 ? args.MaximumSteps : scene.Rays.MaximumSteps);
+  settings->SetMaximumPropagation(
+    args.MaximumLength > 0 ? args.MaximumLength : scene.Rays.MaximumLength);
+  settings->SetMaximumError(scene.Rays.Tolerance);
+  rays.UseSceneSettings = !overrides && !args.Equirectangular;
+  rays.Projection = args.Equirectangular || (scene.HasCamera &&
+                                              scene.Camera.Mode == riemann::Projection::Equirectangular)
+    ? vtkRiemannRayTracePass::EQUIRECTANGULAR
+    : vtkRiemannRayTracePass::PERSPECTIVE;
+}
+
+/// Draws the frames of one backend; only the requested backend is built.
+class FrameRenderer
+{
+public:
+  virtual ~FrameRenderer() = default;
+  /// The picture at the metric's current time (rows top first).
+  virtual Image RenderFrame(int frame, int frames) = 0;
+};
+
+/// The GPU pass in an offscreen window.
+class GpuFrames : public FrameRenderer
+{
+public:
+  GpuFrames(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* camera,
+    const RaySetup& rays, const RenderArguments& args, ErrorCollector* errors)
+    : Errors(errors)
   {
-    // Start from the scene's settings and replace what was given.
-    pass->SetUseSceneSettings(false);
-    static const std::map<std::string, int> integrators = {
-      { "euler", vtkRiemannIntegrationSettings::EULER }, { "rk4", vtkRiemannIntegrationSettings::RUNGE_KUTTA4 },
-      { "adaptive", vtkRiemannIntegrationSettings::DORMAND_PRINCE45 }
-    };
-    pass->GetIntegrationSettings()->SetIntegratorType(args.Integrator.empty() ? static_cast<int>(description.Rays.Integrator)
-                                                    : integrators.at(args.Integrator));
-    pass->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step > 0 ? args.Step : description.Rays.Step);
-    pass->GetIntegrationSettings()->SetMaximumNumberOfSteps(
-      args.MaximumSteps > 0 ? args.MaximumSteps : description.Rays.MaximumSteps);
-    pass->GetIntegrationSettings()->SetMaximumPropagation(
-      args.MaximumLength > 0 ? args.MaximumLength : description.Rays.MaximumLength);
-    pass->GetIntegrationSettings()->SetMaximumError(description.Rays.Tolerance);
-  }
-  if (args.Equirectangular)
-  {
-    pass->SetUseSceneSettings(false);
-    pass->SetProjection(vtkRiemannRayTracePass::EQUIRECTANGULAR);
+    errors->Observe(this->Pass);
+    this->Pass->SetMetric(metric);
+    this->Pass->SetScene(scene);
+    rays.ApplyTo(this->Pass.Get());
+    this->Renderer->SetPass(this->Pass);
+    this->Renderer->SetActiveCamera(camera);
+    errors->Observe(this->Renderer);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+    this->Window->SetSize(args.Width, args.Height);
+    errors->Observe(this->Window);
   }
 
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetPass(pass);
-  errors->Observe(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  scene->ApplyCamera(camera);
-  ApplyCameraOptions(camera, args);
-  CheckCamera(camera, args);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  window->SetSize(args.Width, args.Height);
-  errors->Observe(window);
-
-  // The CPU tracer takes the same camera and the same settings as the pass.
-  vtkNew<vtkRiemannCPURayTracer> tracer;
-  vtkNew<ProgressBar> progress;
-  if (cpu)
+  Image RenderFrame(int, int) override
   {
-    errors->Observe(tracer);
-    tracer->SetMetric(metric);
-    tracer->SetScene(scene);
-    tracer->SetCamera(camera);
-    tracer->SetWidth(args.Width);
-    tracer->SetHeight(args.Height);
-    tracer->SetSamplesPerPixel(args.Samples);
-    tracer->SetComputeHitError(args.HitError || !args.HitErrorImage.empty());
-    tracer->SetUseSceneSettings(pass->GetUseSceneSettings());
-    tracer->GetIntegrationSettings()->SetIntegratorType(pass->GetIntegrationSettings()->GetIntegratorType());
-    tracer->GetIntegrationSettings()->SetInitialIntegrationStep(pass->GetIntegrationSettings()->GetInitialIntegrationStep());
-    tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(pass->GetIntegrationSettings()->GetMaximumNumberOfSteps());
-    tracer->GetIntegrationSettings()->SetMaximumPropagation(pass->GetIntegrationSettings()->GetMaximumPropagation());
-    tracer->GetIntegrationSettings()->SetMaximumError(pass->GetIntegrationSettings()->GetMaximumError());
-    tracer->SetProjection(pass->GetProjection());
-    // A bar where someone watches (a terminal) or the wait is long; tests stay quiet.
-    const double rays = static_cast<double>(args.Width) * args.Height * args.Samples;
-    progress->Observe(tracer, "riemann render",
-      !args.Quiet && (args.Progress || ProgressBar::StderrIsTerminal() || rays >= 4e6));
-    if (args.HitError || !args.HitErrorImage.empty())
+    this->Window->Render();
+    this->Errors->ThrowIfAny("rendering failed:");
+    return Grab(this->Window);
+  }
+
+private:
+  ErrorCollector* Errors;
+  vtkNew<vtkRiemannRayTracePass> Pass;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+};
+
+/// The CPU tracer; its pixels are written as the core computed them.
+class CpuFrames : public FrameRenderer
+{
+public:
+  CpuFrames(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* camera,
+    const RaySetup& rays, const RenderArguments& args, ErrorCollector* errors)
+    : Errors(errors)
+    , Arguments(args)
+  {
+    const bool hitError = args.HitError || !args.HitErrorImage.empty();
+    if (hitError && metric->GetMetric()->FamilyName() != "diffeo")
     {
-      if (metric->GetMetric()->FamilyName() != "diffeo")
+      throw Failure("--hit-error: the metric is not a diffeomorphism metric (\"type\": "
+                    "\"diffeo\"), so there is no exact reference to compare with",
+        2);
+    }
+    errors->Observe(this->Tracer);
+    this->Tracer->SetMetric(metric);
+    this->Tracer->SetScene(scene);
+    this->Tracer->SetCamera(camera);
+    this->Tracer->SetWidth(args.Width);
+    this->Tracer->SetHeight(args.Height);
+    this->Tracer->SetSamplesPerPixel(args.Samples);
+    this->Tracer->SetComputeHitError(hitError);
+    rays.ApplyTo(this->Tracer.Get());
+    // A bar where someone watches (a terminal) or the wait is long; tests stay quiet.
+    const double count = static_cast<double>(args.Width) * args.Height * args.Samples;
+    this->Progress->Observe(this->Tracer, "riemann render",
+      !args.Quiet && (args.Progress || ProgressBar::StderrIsTerminal() || count >= 4e6));
+  }
+
+  Image RenderFrame(int frame, int frames) override
+  {
+    this->Tracer->Modified();
+    this->Tracer->Update();
+    this->Progress->Finish();
+    this->Errors->ThrowIfAny("rendering failed:");
+    const RenderArguments& args = this->Arguments;
+    const std::vector<riemann::PixelResult>& pixels = this->Tracer->GetPixelResults();
+    if (this->Tracer->GetHitErrorComputed())
+    {
+      const bool numbered = frames > 1 && !args.HitErrorImage.empty();
+      this->ReportHitError(
+        pixels, numbered ? FramePath(args.HitErrorImage, frame) : args.HitErrorImage);
+    }
+    return riemann::PixelImage(pixels, args.Width, args.Height, Extension(args.Output) == "exr",
+      this->Tracer->GetHitErrorComputed());
+  }
+
+private:
+  void ReportHitError(const std::vector<riemann::PixelResult>& pixels, const std::string& picturePath)
+  {
+    const riemann::HitErrorSummary summary = riemann::SummarizeHitError(pixels);
+    std::cerr << "riemann render: hit error against the exact geodesic: max " << summary.Maximum
+              << ", median " << summary.Median << ", 99th percentile " << summary.Percentile99
+              << " over " << summary.Compared << " pixels; " << summary.Disagreeing
+              << " pixels where only one of the two rays hits\n";
+    if (!this->Arguments.HitErrorImage.empty())
+    {
+      const std::string error = WriteImage(picturePath,
+        riemann::HitErrorPicture(pixels, this->Arguments.Width, this->Arguments.Height));
+      if (!error.empty())
       {
-        throw Failure("--hit-error: the metric is not a diffeomorphism metric (\"type\": "
-                      "\"diffeo\"), so there is no exact reference to compare with",
-          2);
+        throw Failure(error);
       }
     }
   }
 
-  const int frames = args.Frames;
-  for (int frame = 0; frame < frames; ++frame)
+  ErrorCollector* Errors;
+  const RenderArguments& Arguments;
+  vtkNew<vtkRiemannCPURayTracer> Tracer;
+  vtkNew<ProgressBar> Progress;
+};
+
+/// Compares the picture with --reference; throws (exit 3) when it differs.
+void CompareWithReference(const Image& picture, const RenderArguments& args)
+{
+  Image reference;
+  const std::string readError = ReadImage(args.Reference, reference);
+  if (!readError.empty())
   {
-    const double t = frames > 1 ? static_cast<double>(frame) / (frames - 1) : 0.0;
+    throw Failure(readError);
+  }
+  const double difference = ImageDifference(picture, reference);
+  if (difference < 0)
+  {
+    throw Failure("the picture (" + std::to_string(picture.Width) + "x" +
+        std::to_string(picture.Height) + ") and the reference (" +
+        std::to_string(reference.Width) + "x" + std::to_string(reference.Height) +
+        ") differ in size",
+      3);
+  }
+  std::cerr << "riemann render: difference to " << args.Reference << ": " << difference
+            << " (threshold " << args.Threshold << ")\n";
+  if (difference > args.Threshold)
+  {
+    throw Failure("the picture differs from the reference: " + std::to_string(difference) +
+        " > threshold " + std::to_string(args.Threshold),
+      3);
+  }
+}
+
+void RunRender(const RenderArguments& args)
+{
+  CheckRenderOptions(args);
+  vtkNew<vtkRiemannScene> scene;
+  const vtkSmartPointer<vtkRiemannMetric> metric = LoadSceneAndMetric(args, scene);
+  RaySetup rays;
+  SetUpRays(args, scene->GetScene(), rays);
+  vtkNew<vtkCamera> camera;
+  scene->ApplyCamera(camera);
+  ApplyCameraOptions(camera, args);
+  CheckCamera(camera, args);
+
+  vtkNew<ErrorCollector> errors;
+  std::unique_ptr<FrameRenderer> frames;
+  if (args.Backend == "cpu")
+  {
+    frames.reset(new CpuFrames(metric, scene, camera, rays, args, errors));
+  }
+  else
+  {
+    frames.reset(new GpuFrames(metric, scene, camera, rays, args, errors));
+  }
+  for (int frame = 0; frame < args.Frames; ++frame)
+  {
+    const double t = args.Frames > 1 ? static_cast<double>(frame) / (args.Frames - 1) : 0.0;
     if (!metric->SetTime(t))
     {
       throw Failure(std::string("bad metric: ") + metric->GetLastError());
     }
-    Image picture;
-    if (cpu)
-    {
-      tracer->Modified();
-      tracer->Update();
-      progress->Finish();
-      errors->ThrowIfAny("rendering failed:");
-      vtkImageData* output = tracer->GetOutput();
-      picture = TracerImage(output, Extension(args.Output) == "exr");
-      if (tracer->GetComputeHitError())
-      {
-        const HitErrorSummary summary = SummarizeHitError(output);
-        std::cerr << "riemann render: hit error against the exact geodesic: max "
-                  << summary.Maximum << ", median " << summary.Median << ", 99th percentile "
-                  << summary.Percentile99 << " over "
-                  << summary.Compared << " pixels; " << summary.Disagreeing
-                  << " pixels where only one of the two rays hits\n";
-        if (!args.HitErrorImage.empty())
-        {
-          const std::string errorPath =
-            frames > 1 ? FramePath(args.HitErrorImage, frame) : args.HitErrorImage;
-          const std::string error = WriteImage(errorPath, HitErrorPicture(output));
-          if (!error.empty())
-          {
-            throw Failure(error);
-          }
-        }
-      }
-    }
-    else
-    {
-      window->Render();
-      errors->ThrowIfAny("rendering failed:");
-      picture = Grab(window);
-    }
+    Image picture = frames->RenderFrame(frame, args.Frames);
     if (args.Bundle > 0)
     {
-      picture = SideBySide(picture, RenderOutside(metric, scene, camera, pass, args, errors));
+      picture = SideBySide(picture, RenderOutside(metric, scene, camera, rays, args, errors));
     }
-    const std::string path = frames > 1 ? FramePath(args.Output, frame) : args.Output;
+    const std::string path = args.Frames > 1 ? FramePath(args.Output, frame) : args.Output;
     const std::string error = WriteImage(path, picture);
     if (!error.empty())
     {
       throw Failure(error);
     }
-    if (frames > 1)
+    if (args.Frames > 1)
     {
-      std::cerr << "riemann render: frame " << frame + 1 << "/" << frames << " (t = " << t
+      std::cerr << "riemann render: frame " << frame + 1 << "/" << args.Frames << " (t = " << t
                 << ") -> " << path << "\n";
     }
     if (!args.Reference.empty())
     {
-      Image reference;
-      const std::string readError = ReadImage(args.Reference, reference);
-      if (!readError.empty())
-      {
-        throw Failure(readError);
-      }
-      const double difference = ImageDifference(picture, reference);
-      if (difference < 0)
-      {
-        throw Failure("the picture (" + std::to_string(picture.Width) + "x" +
-            std::to_string(picture.Height) + ") and the reference (" +
-            std::to_string(reference.Width) + "x" + std::to_string(reference.Height) +
-            ") differ in size",
-          3);
-      }
-      std::cerr << "riemann render: difference to " << args.Reference << ": " << difference
-                << " (threshold " << args.Threshold << ")\n";
-      if (difference > args.Threshold)
-      {
-        throw Failure("the picture differs from the reference: " + std::to_string(difference) +
-            " > threshold " + std::to_string(args.Threshold),
-          3);
-      }
+      CompareWithReference(picture, args);
     }
   }
 }
@@ -625,8 +695,8 @@ void RegisterRenderCommand(CLI::App& app)
     ->check(PositiveNumber(179.0));
   command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
   command
-    ->add_option("--integrator", args->Integrator, "euler, rk4 or adaptive (default: the scene's)")
-    ->check(CLI::IsMember({ "euler", "rk4", "adaptive" }));
+    ->add_option("--integrator", args->Integrator, "euler, rk4 or dp45 (default: the scene's)")
+    ->check(IntegratorName());
   command->add_option("--step", args->Step, "Step in arc length (default: the scene's)")
     ->check(FiniteNumber(1e-6, 100.0));
   command

@@ -201,10 +201,6 @@ void RunTrace(const TraceArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
   }
-  static const std::map<std::string, int> integrators = {
-    { "euler", vtkRiemannIntegrationSettings::EULER }, { "rk4", vtkRiemannIntegrationSettings::RUNGE_KUTTA4 },
-    { "dp45", vtkRiemannIntegrationSettings::DORMAND_PRINCE45 }
-  };
   static const std::map<std::string, int> propagations = {
     { "forward", vtkRiemannGeodesicTracer::FORWARD },
     { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH }
@@ -215,12 +211,13 @@ void RunTrace(const TraceArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(tracer);
   tracer->SetMetric(metric);
-  tracer->GetIntegrationSettings()->SetIntegratorType(integrators.at(args.Integrator));
   tracer->SetIntegrationDirection(propagations.at(args.Propagation));
-  tracer->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
-  tracer->GetIntegrationSettings()->SetMaximumError(args.Tolerance);
-  tracer->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
-  tracer->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
+  vtkRiemannIntegrationSettings* settings = tracer->GetIntegrationSettings();
+  settings->SetIntegratorType(static_cast<int>(ParseIntegratorOption(args.Integrator)));
+  settings->SetInitialIntegrationStep(args.Step);
+  settings->SetMaximumError(args.Tolerance);
+  settings->SetMaximumPropagation(args.Length);
+  settings->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   if (!args.SeedsFile.empty())
   {
@@ -293,7 +290,7 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 10)")
     ->check(PositiveNumber(1e9));
   command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
-    ->check(CLI::IsMember({ "euler", "rk4", "dp45" }));
+    ->check(IntegratorName());
   command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
     ->check(CLI::IsMember({ "forward", "backward", "both" }));
   command

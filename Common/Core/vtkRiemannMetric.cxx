@@ -45,6 +45,20 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   return true;
 }
 
+bool vtkRiemannMetric::SetParsedDefinition(
+  const std::string& json, std::shared_ptr<const riemann::Metric> metricAtTimeZero)
+{
+  if (!metricAtTimeZero || this->Time != 0.0)
+  {
+    return this->SetDefinition(json.c_str());
+  }
+  std::atomic_store(&this->Metric, metricAtTimeZero);
+  this->Definition = json;
+  this->LastError.clear();
+  this->Modified();
+  return true;
+}
+
 bool vtkRiemannMetric::SetTime(double t)
 {
   if (t == this->Time)

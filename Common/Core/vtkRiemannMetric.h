@@ -61,6 +61,14 @@ public:
   double GetTime() const { return this->Time; }
   ///@}
 
+  /**
+   * Take a definition already parsed by the core at time 0 (a scene's metric:
+   * riemann::Scene::ParsedMetric) instead of parsing `json` again; parses it
+   * when the time is not 0. Same result and return value as SetDefinition.
+   */
+  VTK_WRAPEXCLUDE bool SetParsedDefinition(
+    const std::string& json, std::shared_ptr<const riemann::Metric> metricAtTimeZero);
+
   /// The JSON text of the current definition ("" when none has been set).
   const char* GetDefinition() const { return this->Definition.c_str(); }
 

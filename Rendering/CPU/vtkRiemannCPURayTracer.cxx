@@ -45,6 +45,8 @@ public:
     riemann::MeshColoring Coloring;
   };
   std::vector<AddedMesh> Meshes;
+  /// The last update's pixels (GetPixelResults).
+  std::vector<riemann::PixelResult> Pixels;
 };
 
 vtkRiemannCPURayTracer::vtkRiemannCPURayTracer()
@@ -115,6 +117,11 @@ void vtkRiemannCPURayTracer::RemoveAllMeshes()
   }
 }
 
+const std::vector<riemann::PixelResult>& vtkRiemannCPURayTracer::GetPixelResults() const
+{
+  return this->Internals->Pixels;
+}
+
 int vtkRiemannCPURayTracer::GetNumberOfAddedMeshes() const
 {
   return static_cast<int>(this->Internals->Meshes.size());
@@ -163,6 +170,8 @@ int vtkRiemannCPURayTracer::RequestData(
   this->NumberOfIntegrationSteps = 0;
   this->TraceTime = 0.0;
   this->NumberOfTriangles = 0;
+  this->HitErrorComputed = false;
+  this->Internals->Pixels.clear();
 
   const std::shared_ptr<const riemann::Metric> metric =
     this->Metric ? this->Metric->GetMetric() : nullptr;
@@ -172,8 +181,31 @@ int vtkRiemannCPURayTracer::RequestData(
                                    : "no metric: call SetMetric() with a vtkRiemannMetric"));
     return 1;
   }
+  const std::shared_ptr<riemann::Scene> scene = this->MakeScene();
+  if (!scene || !this->CheckImageSize())
+  {
+    return 1;
+  }
+  std::unique_ptr<riemann::CPUTracer> tracer = this->MakeCoreTracer(metric, scene);
+  if (!tracer)
+  {
+    return 1;
+  }
+  this->TraceTiles(*tracer);
+  this->HitErrorComputed = this->ComputeHitError && tracer->HasExactReference();
+  if (this->ComputeHitError && !this->HitErrorComputed)
+  {
+    vtkWarningMacro(<< "ComputeHitError: the metric (" << metric->FamilyName()
+                    << ") has no exact reference; only diffeomorphism metrics have one");
+  }
+  this->FillOutput(output);
+  return 1;
+}
 
-  // The scene: the vtkRiemannScene's (or the default), plus the added meshes.
+//------------------------------------------------------------------------------
+std::shared_ptr<riemann::Scene> vtkRiemannCPURayTracer::MakeScene()
+{
+  // The vtkRiemannScene's (or the default), plus the added meshes.
   auto scene = std::make_shared<riemann::Scene>(
     this->Scene ? *this->Scene->GetSceneSnapshot() : riemann::DefaultScene());
   try
@@ -187,32 +219,44 @@ int vtkRiemannCPURayTracer::RequestData(
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< "AddMesh: " << e.what());
-    return 1;
+    return nullptr;
   }
+  return scene;
+}
 
-  const int width = this->Width;
-  const int height = this->Height;
+//------------------------------------------------------------------------------
+bool vtkRiemannCPURayTracer::CheckImageSize()
+{
   // About 90 bytes per pixel are held at once (the tracer's results and the
   // output arrays): refuse what would exhaust memory rather than crash.
-  if (static_cast<double>(width) * height > MaximumNumberOfPixels)
+  const double pixels = static_cast<double>(this->Width) * this->Height;
+  if (pixels > MaximumNumberOfPixels)
   {
-    vtkErrorMacro(<< "The image is too large: " << width << " x " << height << " = "
-                  << static_cast<double>(width) * height / 1e6 << " million pixels, more than "
-                  << MaximumNumberOfPixels / 1e6 << " million (about "
-                  << 90.0 * MaximumNumberOfPixels / (1 << 30)
+    vtkErrorMacro(<< "The image is too large: " << this->Width << " x " << this->Height << " = "
+                  << pixels / 1e6 << " million pixels, more than " << MaximumNumberOfPixels / 1e6
+                  << " million (about " << 90.0 * MaximumNumberOfPixels / (1 << 30)
                   << " GiB of memory); render a smaller image.");
-    return 1;
+    return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
+  const std::shared_ptr<const riemann::Metric>& metric,
+  const std::shared_ptr<riemann::Scene>& scene)
+{
+  // Settings, projection and camera by the rules every renderer shares.
   const std::string settingsError = this->IntegrationSettings->CheckSettings();
   if (!this->UseSceneSettings && !settingsError.empty())
   {
     vtkErrorMacro(<< "Integration settings: " << settingsError << ".");
-    return 1;
+    return nullptr;
   }
   const riemann::RaySettings rays =
     vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
   const riemann::CameraSettings camera = vtkRiemannCameraSettings(this->Camera,
-    static_cast<double>(width) / height, scene->Camera,
+    static_cast<double>(this->Width) / this->Height, scene->Camera,
     vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
 
   std::shared_ptr<riemann::EnvironmentMap> environment;
@@ -230,8 +274,8 @@ int vtkRiemannCPURayTracer::RequestData(
   }
 
   riemann::CPUTracerSettings settings;
-  settings.Width = width;
-  settings.Height = height;
+  settings.Width = this->Width;
+  settings.Height = this->Height;
   settings.SamplesPerPixel = this->SamplesPerPixel;
   settings.Seed = this->Seed;
   settings.UseRayStreams = this->UseRayStreams;
@@ -244,16 +288,24 @@ int vtkRiemannCPURayTracer::RequestData(
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< "cannot trace the scene: " << e.what());
-    return 1;
+    return nullptr;
   }
   this->NumberOfTriangles = static_cast<vtkIdType>(tracer->NumberOfTriangles());
+  return tracer;
+}
 
+//------------------------------------------------------------------------------
+void vtkRiemannCPURayTracer::TraceTiles(const riemann::CPUTracer& tracer)
+{
   // Tiles, run in parallel in batches; progress and AbortExecute between batches.
+  const int width = this->Width;
+  const int height = this->Height;
   const int tile = this->TileSize;
   const int tilesX = (width + tile - 1) / tile;
   const int tilesY = (height + tile - 1) / tile;
   const vtkIdType tiles = static_cast<vtkIdType>(tilesX) * tilesY;
-  std::vector<riemann::PixelResult> pixels(static_cast<std::size_t>(width) * height);
+  std::vector<riemann::PixelResult>& pixels = this->Internals->Pixels;
+  pixels.assign(static_cast<std::size_t>(width) * height, riemann::PixelResult());
   std::atomic<long long> steps(0);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
@@ -265,7 +317,7 @@ int vtkRiemannCPURayTracer::RequestData(
       {
         const int x0 = static_cast<int>(t % tilesX) * tile;
         const int y0 = static_cast<int>(t / tilesX) * tile;
-        local += tracer->RenderTile(
+        local += tracer.RenderTile(
           x0, y0, std::min(width, x0 + tile), std::min(height, y0 + tile), pixels.data());
       }
       steps += local;
@@ -275,8 +327,13 @@ int vtkRiemannCPURayTracer::RequestData(
   this->NumberOfIntegrationSteps = steps.load();
   this->NumberOfRays = static_cast<vtkIdType>(width) * height *
     (this->SamplesPerPixel > 1 ? this->SamplesPerPixel + 1 : 1);
+}
 
-  // The arrays.
+//------------------------------------------------------------------------------
+void vtkRiemannCPURayTracer::FillOutput(vtkImageData* output)
+{
+  const int width = this->Width;
+  const int height = this->Height;
   const vtkIdType n = static_cast<vtkIdType>(width) * height;
   output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
   output->SetSpacing(1, 1, 1);
@@ -287,8 +344,8 @@ int vtkRiemannCPURayTracer::RequestData(
   auto stepCount = NewIntArray("Steps", n);
   auto reason = NewIntArray("ReasonForTermination", n);
   auto drift = NewFloatArray("SpeedDrift", 1, n);
-  const bool withError = this->ComputeHitError && tracer->HasExactReference();
-  auto hitError = withError ? NewFloatArray("HitError", 1, n) : nullptr;
+  auto hitError = this->HitErrorComputed ? NewFloatArray("HitError", 1, n) : nullptr;
+  const std::vector<riemann::PixelResult>& pixels = this->Internals->Pixels;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const riemann::PixelResult& p = pixels[i];
@@ -305,21 +362,16 @@ int vtkRiemannCPURayTracer::RequestData(
   }
   vtkPointData* pointData = output->GetPointData();
   pointData->SetScalars(color);
-  pointData->AddArray(hitPosition);
-  pointData->AddArray(arcLength);
-  pointData->AddArray(stepCount);
-  pointData->AddArray(reason);
-  pointData->AddArray(drift);
-  if (hitError)
+  for (vtkDataArray* array : { static_cast<vtkDataArray*>(hitPosition),
+         static_cast<vtkDataArray*>(arcLength), static_cast<vtkDataArray*>(stepCount),
+         static_cast<vtkDataArray*>(reason), static_cast<vtkDataArray*>(drift),
+         static_cast<vtkDataArray*>(hitError) })
   {
-    pointData->AddArray(hitError);
+    if (array)
+    {
+      pointData->AddArray(array);
+    }
   }
-  else if (this->ComputeHitError)
-  {
-    vtkWarningMacro(<< "ComputeHitError: the metric (" << metric->FamilyName()
-                    << ") has no exact reference; only diffeomorphism metrics have one");
-  }
-  return 1;
 }
 
 void vtkRiemannCPURayTracer::PrintSelf(ostream& os, vtkIndent indent)

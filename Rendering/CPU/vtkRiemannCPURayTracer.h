@@ -56,8 +56,18 @@
 #include "RiemannRenderingCPUModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
 
-#include <memory> // For std::unique_ptr
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
+#include <memory> // For std::unique_ptr
+#include <vector> // For GetPixelResults
+
+namespace riemann
+{
+class CPUTracer;
+class Metric;
+struct PixelResult;
+struct Scene;
+}
 class vtkCamera;
 class vtkRiemannIntegrationSettings;
 class vtkPolyData;
@@ -192,6 +202,16 @@ public:
   vtkGetMacro(NumberOfTriangles, vtkIdType);
   ///@}
 
+  /// Whether the last update computed the "HitError" array (ComputeHitError with an exact reference).
+  vtkGetMacro(HitErrorComputed, bool);
+
+  /**
+   * The last update's pixels as the core computed them (row 0 at the bottom;
+   * RiemannCPUImage.h turns them into pictures): what the output's arrays
+   * hold, without converting back from VTK arrays.
+   */
+  VTK_WRAPEXCLUDE const std::vector<riemann::PixelResult>& GetPixelResults() const;
+
 protected:
   vtkRiemannCPURayTracer();
   ~vtkRiemannCPURayTracer() override;
@@ -216,8 +236,20 @@ protected:
   vtkIdType NumberOfIntegrationSteps = 0;
   double TraceTime = 0.0;
   vtkIdType NumberOfTriangles = 0;
+  bool HitErrorComputed = false;
 
 private:
+  ///@{
+  /// The steps of RequestData, in order; each reports its own errors.
+  std::shared_ptr<riemann::Scene> MakeScene();
+  bool CheckImageSize();
+  std::unique_ptr<riemann::CPUTracer> MakeCoreTracer(
+    const std::shared_ptr<const riemann::Metric>& metric,
+    const std::shared_ptr<riemann::Scene>& scene);
+  void TraceTiles(const riemann::CPUTracer& tracer);
+  void FillOutput(vtkImageData* output);
+  ///@}
+
   vtkRiemannCPURayTracer(const vtkRiemannCPURayTracer&) = delete;
   void operator=(const vtkRiemannCPURayTracer&) = delete;
 

@@ -172,6 +172,9 @@ struct Scene
   RaySettings Rays;
   /// The metric definition named by the scene (JSON text), empty if none.
   std::string MetricDefinition;
+  /// That metric at t = 0, parsed while the scene was checked (null if none),
+  /// so that a user of the scene need not parse it again.
+  std::shared_ptr<const Metric> ParsedMetric;
   /// Triangles of the mesh objects (shared: scenes are copied, meshes are big).
   std::vector<std::shared_ptr<const TriangleMesh>> Meshes;
 

@@ -147,7 +147,8 @@ std::filesystem::path Resolve(const std::string& name, const std::string& baseDi
 //------------------------------------------------------------------------------
 // Parts of the scene
 //------------------------------------------------------------------------------
-std::string MetricText(const Json& value, const std::string& path, const std::string& baseDirectory)
+std::string MetricText(const Json& value, const std::string& path, const std::string& baseDirectory,
+  std::shared_ptr<const Metric>& parsed)
 {
   std::string text;
   std::string where;
@@ -181,7 +182,7 @@ std::string MetricText(const Json& value, const std::string& path, const std::st
   // A bad metric is a bad scene: say so now, not when the renderer builds it.
   try
   {
-    ParseMetricDefinition(text);
+    parsed = ParseMetricDefinition(text);
   }
   catch (const MetricDefinitionError& e)
   {
@@ -583,7 +584,8 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   Scene scene;
   if (root.contains("metric"))
   {
-    scene.MetricDefinition = MetricText(root.at("metric"), path + ".metric", baseDirectory);
+    scene.MetricDefinition =
+      MetricText(root.at("metric"), path + ".metric", baseDirectory, scene.ParsedMetric);
   }
   if (root.contains("camera"))
   {

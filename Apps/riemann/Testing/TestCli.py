@@ -187,6 +187,19 @@ class RenderTests(unittest.TestCase):
         self.assertGreater(left.std(), 10)
         self.assertGreater(right.std(), 5)
 
+    def test_one_integrator_vocabulary(self):
+        # render spells the adaptive integrator dp45, as trace, expmap and
+        # conjugate do; "adaptive", its old word, still gives the same picture.
+        pictures = {}
+        for name in ("dp45", "adaptive", "euler"):
+            out = os.path.join(self.dir, name + ".png")
+            status, _, err = run("render", "--width", "64", "--height", "48",
+                                 "--integrator", name, "-o", out)
+            self.assertEqual(status, 0, err)
+            pictures[name] = png_size_and_pixels(out)[2].astype(int)
+        self.assertEqual(abs(pictures["dp45"] - pictures["adaptive"]).max(), 0)
+        self.assertGreater(abs(pictures["dp45"] - pictures["euler"]).max(), 0)  # the option is used
+
     def test_frames_follow_the_animated_metric(self):
         metric = os.path.join(self.dir, "growing.json")
         with open(metric, "w") as f:
@@ -561,7 +574,7 @@ BAD_INPUTS = [
     ("zero direction", ["trace", "-m", "METRIC", "--direction", "0,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
      "must not be zero"),
     ("unknown integrator", ["trace", "-m", "METRIC", "--integrator", "rk5", "-o", "OUT.csv"], '{"type": "euclidean"}',
-     "rk5 not in {euler,rk4,dp45}"),
+     '--integrator: expected euler, rk4 or dp45, got "rk5"'),
     ("negative length", ["trace", "-m", "METRIC", "--length", "-1", "-o", "OUT.csv"], '{"type": "euclidean"}',
      "--length"),
     ("absurd step count", ["trace", "-m", "METRIC", "--max-steps", "99999999999", "-o", "OUT.csv"],
