@@ -162,6 +162,34 @@ std::string CheckFragmentShader(const std::string& source)
   return log.empty() ? std::string("(the GLSL compiler gave no log)") : log;
 }
 
+/**
+ * The GL state a full-screen quad of this pass changes (viewport, scissor,
+ * depth test, blending), saved for the scope and restored after it; depth
+ * test and blending are turned off, the scissor test on.
+ */
+class ScopedQuadState
+{
+public:
+  explicit ScopedQuadState(vtkOpenGLState* state)
+    : Viewport(state)
+    , Scissor(state)
+    , ScissorTest(state, GL_SCISSOR_TEST)
+    , DepthTest(state, GL_DEPTH_TEST)
+    , Blend(state, GL_BLEND)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+  }
+
+private:
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+};
+
 void ToFloat(const riemann::Vec3& v, float out[3])
 {
   for (int i = 0; i < 3; ++i)
@@ -382,7 +410,6 @@ void vtkRiemannRayTracePass::Fail(
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 1.0f);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
 }
@@ -755,16 +782,9 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
 {
   const int* viewport = frame.Viewport;
   vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDisable(GL_BLEND);
+  const ScopedQuadState quadState(ostate);
   ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
 
   float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
     static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
@@ -780,14 +800,7 @@ void vtkRiemannRayTracePass::CaptureHitImage(vtkShaderProgram* program, const Fr
   const int width = frame.Viewport[2];
   const int height = frame.Viewport[3];
   vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  const ScopedQuadState quadState(ostate);
 
   // The same rays into a float target: (x, y, z, arc length) per pixel.
   internals.ReadyHitTarget(frame.Window, width, height);
