@@ -42,6 +42,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -464,6 +465,14 @@ public:
     const RaySetup& rays, const RenderArguments& args, ErrorCollector* errors)
     : Errors(errors)
   {
+    // Debian's VTK draws through GLX: without an X display its window aborts
+    // the process (after a message that the output window would hold back).
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display)
+    {
+      throw Failure("the GPU backend needs an X display and DISPLAY is not set: run under "
+                    "xvfb-run (xvfb-run -a riemann render ...), or use --backend cpu");
+    }
     errors->Observe(this->Pass);
     this->Pass->SetMetric(metric);
     this->Pass->SetScene(scene);

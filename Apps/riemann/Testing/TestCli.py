@@ -200,6 +200,15 @@ class RenderTests(unittest.TestCase):
         self.assertEqual(abs(pictures["dp45"] - pictures["adaptive"]).max(), 0)
         self.assertGreater(abs(pictures["dp45"] - pictures["euler"]).max(), 0)  # the option is used
 
+    def test_gpu_without_a_display_is_a_clear_error(self):
+        out = os.path.join(self.dir, "nodisplay.png")
+        env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        proc = subprocess.run([EXE, "render", "--width", "32", "--height", "24", "-o", out],
+                              capture_output=True, text=True, env=env)
+        self.assertEqual(proc.returncode, 1, proc.stderr)
+        self.assertIn("needs an X display", proc.stderr)
+        self.assertFalse(os.path.exists(out))
+
     def test_frames_follow_the_animated_metric(self):
         metric = os.path.join(self.dir, "growing.json")
         with open(metric, "w") as f:
