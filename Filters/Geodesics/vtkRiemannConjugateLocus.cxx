@@ -60,7 +60,7 @@ int vtkRiemannConjugateLocus::RequestData(
   const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
   if (!observer.allFinite())
   {
-    vtkErrorMacro(<< "Observer must be finite.");
+    this->ReportError("Observer must be finite.");
     return 1;
   }
 
@@ -69,7 +69,7 @@ int vtkRiemannConjugateLocus::RequestData(
   if (!vtkRiemannDirectionGrid::Build(
         this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid, message))
   {
-    vtkErrorMacro(<< "ConeAxis: " << message << ".");
+    this->ReportError("ConeAxis: " + message + ".");
     return 1;
   }
   std::vector<riemann::Vec3> directions(static_cast<size_t>(grid->GetNumberOfPoints()));

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -105,14 +106,16 @@ int vtkRiemannExponentialMap::RequestData(
   const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
   if (!observer.allFinite())
   {
-    vtkErrorMacro(<< "Observer must be finite.");
+    this->ReportError("Observer must be finite.");
     return 1;
   }
   for (double r : this->Radii)
   {
     if (!(r > 0.0) || !std::isfinite(r))
     {
-      vtkErrorMacro(<< "Every radius must be a positive number; got " << r << ".");
+      std::ostringstream error;
+      error << "Every radius must be a positive number; got " << r << ".";
+      this->ReportError(error.str());
       return 1;
     }
   }
@@ -121,10 +124,11 @@ int vtkRiemannExponentialMap::RequestData(
   const double samples = static_cast<double>(this->NumberOfDirections) * (stepsPerGeodesic + 1.0);
   if (samples > MaximumNumberOfSamples)
   {
-    vtkErrorMacro(<< "Too many samples: " << this->NumberOfDirections << " directions x "
-                  << stepsPerGeodesic
-                  << " steps is more than " << MaximumNumberOfSamples
-                  << " (about 8 GiB); use fewer directions or a longer InitialIntegrationStep.");
+    std::ostringstream error;
+    error << "Too many samples: " << this->NumberOfDirections << " directions x "
+          << stepsPerGeodesic << " steps is more than " << MaximumNumberOfSamples
+          << " (about 8 GiB); use fewer directions or a longer InitialIntegrationStep.";
+    this->ReportError(error.str());
     return 1;
   }
   vtkNew<vtkPolyData> grid;
@@ -132,7 +136,7 @@ int vtkRiemannExponentialMap::RequestData(
   if (!vtkRiemannDirectionGrid::Build(
         this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid, message))
   {
-    vtkErrorMacro(<< "ConeAxis: " << message << ".");
+    this->ReportError("ConeAxis: " + message + ".");
     return 1;
   }
 

@@ -7,6 +7,7 @@
 #include "vtkRiemannMetric.h"
 
 #include <algorithm>
+#include <string>
 
 vtkCxxSetObjectMacro(vtkRiemannGeodesicAlgorithm, Metric, vtkRiemannMetric);
 
@@ -54,7 +55,8 @@ std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricA
       "No metric: call SetMetric() with a vtkRiemannMetric that has a valid definition.");
     return nullptr;
   }
-  const std::string settingsError = this->IntegrationSettings->CheckSettings();
+  const std::string settingsError =
+    this->UsesIntegrationSettings() ? this->IntegrationSettings->CheckSettings() : std::string();
   if (!settingsError.empty())
   {
     this->ReportError("Integration settings: " + settingsError + ".");

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannGeodesicTracer);
@@ -114,8 +115,8 @@ int vtkRiemannGeodesicTracer::RequestData(
       : nullptr;
     if (directions && directions->GetNumberOfComponents() != 3)
     {
-      vtkErrorMacro(<< "The seeds' array \"" << this->DirectionArrayName << "\" has "
-                    << directions->GetNumberOfComponents() << " components; it needs 3.");
+      this->ReportError(std::string("The seeds' array \"") + this->DirectionArrayName + "\" has " +
+        std::to_string(directions->GetNumberOfComponents()) + " components; it needs 3.");
       return 1;
     }
     if (!directions && input->GetNumberOfPoints() > 0)

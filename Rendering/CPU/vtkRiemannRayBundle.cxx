@@ -27,6 +27,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannRayBundle);
@@ -89,7 +90,7 @@ int vtkRiemannRayBundle::RequestData(
   }
   catch (const std::runtime_error& e)
   {
-    vtkErrorMacro(<< "Bad camera: " << e.what());
+    this->ReportError(std::string("Bad camera: ") + e.what());
     return 1;
   }
 
@@ -136,7 +137,7 @@ int vtkRiemannRayBundle::RequestData(
     }
     catch (const std::runtime_error& e)
     {
-      vtkErrorMacro(<< "The scene's meshes: " << e.what());
+      this->ReportError(std::string("The scene's meshes: ") + e.what());
       return 1;
     }
   }

@@ -102,6 +102,8 @@ protected:
   ~vtkRiemannRayBundle() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// The integration settings are checked only when they apply (UseSceneSettings off).
+  bool UsesIntegrationSettings() const override { return !this->UseSceneSettings; }
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
