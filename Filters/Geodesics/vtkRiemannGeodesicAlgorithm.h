@@ -92,6 +92,17 @@ protected:
   /// vtkErrorMacro with `message`, kept for GetLastError().
   void ReportError(const std::string& message);
 
+  ///@{
+  /**
+   * The checks of the filters that shoot geodesics from an observer over a
+   * cone of directions (vtkRiemannExponentialMap, vtkRiemannConjugateLocus):
+   * false after ReportError ("Observer must be finite.", "ConeAxis: ...").
+   */
+  bool CheckObserver(const double observer[3]);
+  bool BuildDirectionGrid(
+    int numberOfDirections, const double coneAxis[3], double coneAngle, vtkPolyData* grid);
+  ///@}
+
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   std::string LastError;
