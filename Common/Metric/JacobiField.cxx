@@ -177,6 +177,49 @@ double RankThreshold(const Metric& metric, const JacobiSample& sample, double to
     std::sqrt(std::max(0.0, metric.InnerProduct(sample.Point, sample.DJ[1], sample.DJ[1])));
   return std::max(100.0 * tolerance, 1e-6) * scale;
 }
+
+/// TraceJacobiFields' first step: the state (x, v, J0, J0', J1, J1') at the
+/// seed: v the unit-speed direction, J = 0 and J' an orthonormal transverse
+/// frame. False, with `reason` DegenerateMetric, where g is not a metric
+/// (`reason` unchanged for a zero direction).
+bool InitialState(const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
+{
+  Mat3 g;
+  if (!metric.Tensor(p, g))
+  {
+    reason = DegenerateMetric;
+    return false;
+  }
+  const Eigen::LLT<Mat3> llt(g);
+  if (!g.allFinite() || llt.info() != Eigen::Success)
+  {
+    reason = DegenerateMetric;
+    return false;
+  }
+  const Mat3 ginv = llt.solve(Mat3::Identity());
+  Vec3 v0, w0, w1;
+  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), direction, v0, w0, w1))
+  {
+    return false; // zero direction
+  }
+  y << p, v0, Vec3::Zero(), w0, Vec3::Zero(), w1;
+  return true;
+}
+
+/// The arc lengths strictly inside (0, length) that the trace must land on, sorted.
+std::vector<double> LandingStops(const std::vector<double>& landings, double length)
+{
+  std::vector<double> stops;
+  for (double landing : landings)
+  {
+    if (landing > 0.0 && landing < length)
+    {
+      stops.push_back(landing);
+    }
+  }
+  std::sort(stops.begin(), stops.end());
+  return stops;
+}
 } // namespace
 
 void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
@@ -190,28 +233,12 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
   {
     return;
   }
-  Mat3 g;
-  if (!metric.Tensor(p, g))
+  Vec18 y;
+  if (!InitialState(metric, p, backward ? Vec3(-direction) : direction, y, trace.Reason))
   {
-    trace.Reason = DegenerateMetric;
     return;
-  }
-  const Eigen::LLT<Mat3> llt(g);
-  if (!g.allFinite() || llt.info() != Eigen::Success)
-  {
-    trace.Reason = DegenerateMetric;
-    return;
-  }
-  const Mat3 ginv = llt.solve(Mat3::Identity());
-  Vec3 v0, w0, w1;
-  const Vec3 seedDirection = backward ? Vec3(-direction) : direction;
-  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), seedDirection, v0, w0, w1))
-  {
-    return; // zero direction
   }
   const double sign = backward ? -1.0 : 1.0;
-  Vec18 y;
-  y << p, v0, Vec3::Zero(), w0, Vec3::Zero(), w1;
   JacobiSample sample;
   double s = 0.0;
   const auto record = [&]() -> bool
@@ -236,15 +263,7 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
     return;
   }
 
-  std::vector<double> stops;
-  for (double landing : landings)
-  {
-    if (landing > 0.0 && landing < options.MaximumLength)
-    {
-      stops.push_back(landing);
-    }
-  }
-  std::sort(stops.begin(), stops.end());
+  const std::vector<double> stops = LandingStops(landings, options.MaximumLength);
   std::size_t nextStop = 0;
 
   FlowStepper<Vec18> stepper(options.Integrator, options.Step, options.Tolerance,
