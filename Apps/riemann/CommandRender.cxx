@@ -198,6 +198,106 @@ struct RaySetup
   }
 };
 
+// RenderOutside's steps: trace the bundle -> AddSceneGeometry -> AddRayTubes
+// -> AddEye -> PlaceOutsideCamera -> render.
+
+/// The scene as ordinary geometry, translucent; `bounds` gets what the
+/// outside camera frames (FramedBounds).
+void AddSceneGeometry(vtkRenderer* renderer, vtkRiemannScene* scene, double bounds[6])
+{
+  vtkNew<vtkRiemannSceneSource> geometry;
+  geometry->SetScene(scene);
+  vtkNew<vtkPolyDataMapper> geometryMapper;
+  geometryMapper->SetInputConnection(geometry->GetOutputPort());
+  geometryMapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> geometryActor;
+  geometryActor->SetMapper(geometryMapper);
+  geometryActor->GetProperty()->SetOpacity(0.2);
+  renderer->AddActor(geometryActor);
+  geometry->Update();
+  const double* framed = FramedBounds(geometry->GetOutput(), scene);
+  std::copy(framed, framed + 6, bounds);
+}
+
+/// The rays as tubes of radius 0.003 `size`. Rays that hit are coloured by
+/// the surface where they end (the inside view's colour there); rays that
+/// escape are light grey, visible on the dark background.
+void AddRayTubes(vtkRenderer* renderer, vtkPolyData* bundle, double size)
+{
+  vtkNew<vtkPolyData> rayLines;
+  rayLines->ShallowCopy(bundle);
+  vtkNew<vtkUnsignedCharArray> rayColors;
+  rayColors->DeepCopy(rayLines->GetCellData()->GetArray("EndColor"));
+  rayColors->SetName("RayColor");
+  vtkDataArray* hits = rayLines->GetCellData()->GetArray("Hit");
+  for (vtkIdType i = 0; i < rayColors->GetNumberOfTuples(); ++i)
+  {
+    if (hits->GetTuple1(i) == 0)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rayColors->SetTypedComponent(i, c, 200);
+      }
+    }
+  }
+  rayLines->GetCellData()->AddArray(rayColors);
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputData(rayLines);
+  tubes->SetRadius(0.003 * size);
+  tubes->SetNumberOfSides(6);
+  vtkNew<vtkPolyDataMapper> rayMapper;
+  rayMapper->SetInputConnection(tubes->GetOutputPort());
+  rayMapper->SetScalarModeToUseCellFieldData();
+  rayMapper->SelectColorArray("RayColor");
+  rayMapper->SetColorModeToDirectScalars();
+  vtkNew<vtkActor> rays;
+  rays->SetMapper(rayMapper);
+  renderer->AddActor(rays);
+}
+
+/// The observer as a white sphere of radius 0.015 `size`.
+void AddEye(vtkRenderer* renderer, const double position[3], double size)
+{
+  vtkNew<vtkSphereSource> eye;
+  eye->SetCenter(position[0], position[1], position[2]);
+  eye->SetRadius(0.015 * size);
+  vtkNew<vtkPolyDataMapper> eyeMapper;
+  eyeMapper->SetInputConnection(eye->GetOutputPort());
+  vtkNew<vtkActor> eyeActor;
+  eyeActor->SetMapper(eyeMapper);
+  eyeActor->GetProperty()->SetColor(1, 1, 1);
+  renderer->AddActor(eyeActor);
+}
+
+/// Look at the scene and the observer from above and to the side of the
+/// observer's own view, so the bending of the rays shows; frame the scene
+/// and the observer, not the escaping rays' far ends.
+void PlaceOutsideCamera(
+  vtkRenderer* renderer, vtkCamera* inside, const double bounds[6], double size)
+{
+  vtkCamera* outside = renderer->GetActiveCamera();
+  const double* eyePosition = inside->GetPosition();
+  const double* focal = inside->GetFocalPoint();
+  double forward[3] = { focal[0] - eyePosition[0], focal[1] - eyePosition[1],
+    focal[2] - eyePosition[2] };
+  const double* up = inside->GetViewUp();
+  double side[3] = { forward[1] * up[2] - forward[2] * up[1],
+    forward[2] * up[0] - forward[0] * up[2], forward[0] * up[1] - forward[1] * up[0] };
+  outside->SetFocalPoint(focal);
+  outside->SetPosition(eyePosition[0] - forward[0] + 1.2 * side[0] + 0.8 * size * up[0],
+    eyePosition[1] - forward[1] + 1.2 * side[1] + 0.8 * size * up[1],
+    eyePosition[2] - forward[2] + 1.2 * side[2] + 0.8 * size * up[2]);
+  outside->SetViewUp(up);
+  double frame[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    frame[2 * axis] = std::min(frame[2 * axis], eyePosition[axis]);
+    frame[2 * axis + 1] = std::max(frame[2 * axis + 1], eyePosition[axis]);
+  }
+  renderer->ResetCamera(frame);
+  outside->Zoom(1.2);
+}
+
 /// The outside view: the scene as ordinary geometry, the observer, and the
 /// bundle of its curved rays coloured by where they end.
 Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* inside,
@@ -219,88 +319,13 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   renderer->SetBackground(0.12, 0.13, 0.16);
   renderer->SetBackground2(0.30, 0.32, 0.38);
   renderer->GradientBackgroundOn();
-
-  vtkNew<vtkRiemannSceneSource> geometry;
-  geometry->SetScene(scene);
-  vtkNew<vtkPolyDataMapper> geometryMapper;
-  geometryMapper->SetInputConnection(geometry->GetOutputPort());
-  geometryMapper->SetColorModeToDirectScalars();
-  vtkNew<vtkActor> geometryActor;
-  geometryActor->SetMapper(geometryMapper);
-  geometryActor->GetProperty()->SetOpacity(0.2);
-  renderer->AddActor(geometryActor);
-
-  // Rays that hit are coloured by the surface where they end (the inside
-  // view's colour there); rays that escape are light grey, visible on the
-  // dark background.
-  vtkNew<vtkPolyData> rayLines;
-  rayLines->ShallowCopy(bundle->GetOutput());
-  vtkNew<vtkUnsignedCharArray> rayColors;
-  rayColors->DeepCopy(rayLines->GetCellData()->GetArray("EndColor"));
-  rayColors->SetName("RayColor");
-  vtkDataArray* hits = rayLines->GetCellData()->GetArray("Hit");
-  for (vtkIdType i = 0; i < rayColors->GetNumberOfTuples(); ++i)
-  {
-    if (hits->GetTuple1(i) == 0)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        rayColors->SetTypedComponent(i, c, 200);
-      }
-    }
-  }
-  rayLines->GetCellData()->AddArray(rayColors);
-  vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputData(rayLines);
-  geometry->Update();
-  const double* bounds = FramedBounds(geometry->GetOutput(), scene);
+  double bounds[6];
+  AddSceneGeometry(renderer, scene, bounds);
   const double size =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-  tubes->SetRadius(0.003 * size);
-  tubes->SetNumberOfSides(6);
-  vtkNew<vtkPolyDataMapper> rayMapper;
-  rayMapper->SetInputConnection(tubes->GetOutputPort());
-  rayMapper->SetScalarModeToUseCellFieldData();
-  rayMapper->SelectColorArray("RayColor");
-  rayMapper->SetColorModeToDirectScalars();
-  vtkNew<vtkActor> rays;
-  rays->SetMapper(rayMapper);
-  renderer->AddActor(rays);
-
-  vtkNew<vtkSphereSource> eye;
-  eye->SetCenter(inside->GetPosition());
-  eye->SetRadius(0.015 * size);
-  vtkNew<vtkPolyDataMapper> eyeMapper;
-  eyeMapper->SetInputConnection(eye->GetOutputPort());
-  vtkNew<vtkActor> eyeActor;
-  eyeActor->SetMapper(eyeMapper);
-  eyeActor->GetProperty()->SetColor(1, 1, 1);
-  renderer->AddActor(eyeActor);
-
-  // Look at the scene and the observer from above and to the side of the
-  // observer's own view, so the bending of the rays shows.
-  vtkCamera* outside = renderer->GetActiveCamera();
-  const double* eyePosition = inside->GetPosition();
-  const double* focal = inside->GetFocalPoint();
-  double forward[3] = { focal[0] - eyePosition[0], focal[1] - eyePosition[1],
-    focal[2] - eyePosition[2] };
-  const double* up = inside->GetViewUp();
-  double side[3] = { forward[1] * up[2] - forward[2] * up[1],
-    forward[2] * up[0] - forward[0] * up[2], forward[0] * up[1] - forward[1] * up[0] };
-  outside->SetFocalPoint(focal);
-  outside->SetPosition(eyePosition[0] - forward[0] + 1.2 * side[0] + 0.8 * size * up[0],
-    eyePosition[1] - forward[1] + 1.2 * side[1] + 0.8 * size * up[1],
-    eyePosition[2] - forward[2] + 1.2 * side[2] + 0.8 * size * up[2]);
-  outside->SetViewUp(up);
-  // Frame the scene and the observer, not the escaping rays' far ends.
-  double frame[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    frame[2 * axis] = std::min(frame[2 * axis], eyePosition[axis]);
-    frame[2 * axis + 1] = std::max(frame[2 * axis + 1], eyePosition[axis]);
-  }
-  renderer->ResetCamera(frame);
-  outside->Zoom(1.2);
+  AddRayTubes(renderer, bundle->GetOutput(), size);
+  AddEye(renderer, inside->GetPosition(), size);
+  PlaceOutsideCamera(renderer, inside, bounds, size);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);

@@ -66,21 +66,16 @@ bool ChristoffelAndDerivatives(const Metric& metric, const Vec3& p, Mat3& g, Mat
   return true;
 }
 
-bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& sample)
+namespace
 {
-  Mat3 g;
-  Mat3 ginv;
-  Mat3Stack gamma;
-  std::array<Mat3Stack, 3> dGamma;
-  if (!ChristoffelAndDerivatives(metric, p, g, ginv, gamma, dGamma))
-  {
-    return false;
-  }
-  const Eigen::LLT<Mat3> llt(g);
-  sample.g = g;
-  sample.ginv = ginv;
+// ComputeCurvature's steps, one tensor at a time.
 
-  // R^l_ijk = d_j Gamma^l_ik - d_k Gamma^l_ij + Gamma^l_jm Gamma^m_ik - Gamma^l_km Gamma^m_ij.
+/// A rank-4 tensor of a 3-manifold, indexed [a][b][c][d].
+using Tensor4 = double[3][3][3][3];
+
+/// R^l_ijk = d_j Gamma^l_ik - d_k Gamma^l_ij + Gamma^l_jm Gamma^m_ik - Gamma^l_km Gamma^m_ij.
+void RiemannTensor(const Mat3Stack& gamma, const std::array<Mat3Stack, 3>& dGamma, Tensor4& riemann)
+{
   for (int l = 0; l < 3; ++l)
   {
     for (int i = 0; i < 3; ++i)
@@ -94,25 +89,16 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
           {
             value += gamma[l](j, m) * gamma[m](i, k) - gamma[l](k, m) * gamma[m](i, j);
           }
-          sample.Riemann[l][i][j][k] = value;
+          riemann[l][i][j][k] = value;
         }
       }
     }
   }
+}
 
-  // Ric_ik = R^j_ijk, S = g^ik Ric_ik.
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      sample.Ricci(i, k) =
-        sample.Riemann[0][i][0][k] + sample.Riemann[1][i][1][k] + sample.Riemann[2][i][2][k];
-    }
-  }
-  sample.Scalar = (ginv.cwiseProduct(sample.Ricci)).sum();
-
-  // Lowered: lowered[m][i][j][k] = R_mijk = g_ml R^l_ijk = <R(d_j, d_k) d_i, d_m>.
-  double lowered[3][3][3][3];
+/// Lowered: lowered[m][i][j][k] = R_mijk = g_ml R^l_ijk = <R(d_j, d_k) d_i, d_m>.
+void LowerFirstIndex(const Mat3& g, const Tensor4& riemann, Tensor4& lowered)
+{
   for (int m = 0; m < 3; ++m)
   {
     for (int i = 0; i < 3; ++i)
@@ -121,28 +107,23 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
       {
         for (int k = 0; k < 3; ++k)
         {
-          lowered[m][i][j][k] = g(m, 0) * sample.Riemann[0][i][j][k] +
-            g(m, 1) * sample.Riemann[1][i][j][k] + g(m, 2) * sample.Riemann[2][i][j][k];
+          lowered[m][i][j][k] = g(m, 0) * riemann[0][i][j][k] + g(m, 1) * riemann[1][i][j][k] +
+            g(m, 2) * riemann[2][i][j][k];
         }
       }
     }
   }
+}
 
-  // K(d_a, d_b) = <R(d_a, d_b) d_b, d_a> / (g_aa g_bb - g_ab^2) = R_abab / (...).
-  const auto coordinateSectional = [&](int a, int b)
-  { return lowered[a][b][a][b] / (g(a, a) * g(b, b) - g(a, b) * g(a, b)); };
-  sample.SectionalXY = coordinateSectional(0, 1);
-  sample.SectionalXZ = coordinateSectional(0, 2);
-  sample.SectionalYZ = coordinateSectional(1, 2);
-
-  // A g-orthonormal frame: columns of E = L^-T (g = L L^T), so E^T g E = I.
+/// The components F_abcd = R_mijk E_ma E_ib E_jc E_kd in a g-orthonormal
+/// frame: the columns of E = L^-T (g = L L^T), so E^T g E = I; one index at
+/// a time.
+void FrameComponents(const Eigen::LLT<Mat3>& llt, const Tensor4& lowered, Tensor4& frame)
+{
   const Mat3 lower = llt.matrixL();
   const Mat3 e = lower.transpose().triangularView<Eigen::Upper>().solve(Mat3::Identity());
-  // The frame components F_abcd = R_mijk E_ma E_ib E_jc E_kd, one index at a time.
-  double work[3][3][3][3];
-  double frame[3][3][3][3];
-  const auto transformIndex =
-    [&e](const double(&in)[3][3][3][3], double(&out)[3][3][3][3], int position)
+  Tensor4 work;
+  const auto transformIndex = [&e](const Tensor4& in, Tensor4& out, int position)
   {
     for (int a = 0; a < 3; ++a)
     {
@@ -170,7 +151,11 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
   transformIndex(work, frame, 1);
   transformIndex(frame, work, 2);
   transformIndex(work, frame, 3);
+}
 
+/// |Rm|: the Frobenius norm of the frame components.
+double FrameNorm(const Tensor4& frame)
+{
   double squared = 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -185,12 +170,15 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
       }
     }
   }
-  sample.RiemannNorm = std::sqrt(squared);
+  return std::sqrt(squared);
+}
 
-  // The curvature operator on Lambda^2 in the orthonormal bivector basis
-  // e_1^e_2, e_0^e_2, e_0^e_1: Q(e_j^e_k, e_m^e_i) = F_mijk, so that
-  // Q(u^w, u^w) = <R(u, w)w, u> = K(u, w) for orthonormal u, w. In 3D every
-  // unit bivector is a plane: the eigenvalues are the extremes of K.
+/// The curvature operator on Lambda^2 in the orthonormal bivector basis
+/// e_1^e_2, e_0^e_2, e_0^e_1: Q(e_j^e_k, e_m^e_i) = F_mijk, so that
+/// Q(u^w, u^w) = <R(u, w)w, u> = K(u, w) for orthonormal u, w. In 3D every
+/// unit bivector is a plane: the eigenvalues are the extremes of K.
+bool SectionalExtremes(const Tensor4& frame, double& minimum, double& maximum)
+{
   static const int pairs[3][2] = { { 1, 2 }, { 0, 2 }, { 0, 1 } };
   Mat3 q;
   for (int row = 0; row < 3; ++row)
@@ -206,8 +194,57 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
   {
     return false;
   }
-  sample.SectionalMin = eigen.eigenvalues()[0];
-  sample.SectionalMax = eigen.eigenvalues()[2];
+  minimum = eigen.eigenvalues()[0];
+  maximum = eigen.eigenvalues()[2];
+  return true;
+}
+} // namespace
+
+// ComputeCurvature as named steps: ChristoffelAndDerivatives -> RiemannTensor
+// -> Ricci and scalar -> LowerFirstIndex -> coordinate sectional curvatures
+// -> FrameComponents -> FrameNorm and SectionalExtremes.
+bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& sample)
+{
+  Mat3 g;
+  Mat3 ginv;
+  Mat3Stack gamma;
+  std::array<Mat3Stack, 3> dGamma;
+  if (!ChristoffelAndDerivatives(metric, p, g, ginv, gamma, dGamma))
+  {
+    return false;
+  }
+  const Eigen::LLT<Mat3> llt(g);
+  sample.g = g;
+  sample.ginv = ginv;
+  RiemannTensor(gamma, dGamma, sample.Riemann);
+
+  // Ric_ik = R^j_ijk, S = g^ik Ric_ik.
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sample.Ricci(i, k) =
+        sample.Riemann[0][i][0][k] + sample.Riemann[1][i][1][k] + sample.Riemann[2][i][2][k];
+    }
+  }
+  sample.Scalar = (ginv.cwiseProduct(sample.Ricci)).sum();
+
+  Tensor4 lowered;
+  LowerFirstIndex(g, sample.Riemann, lowered);
+  // K(d_a, d_b) = <R(d_a, d_b) d_b, d_a> / (g_aa g_bb - g_ab^2) = R_abab / (...).
+  const auto coordinateSectional = [&](int a, int b)
+  { return lowered[a][b][a][b] / (g(a, a) * g(b, b) - g(a, b) * g(a, b)); };
+  sample.SectionalXY = coordinateSectional(0, 1);
+  sample.SectionalXZ = coordinateSectional(0, 2);
+  sample.SectionalYZ = coordinateSectional(1, 2);
+
+  Tensor4 frame;
+  FrameComponents(llt, lowered, frame);
+  sample.RiemannNorm = FrameNorm(frame);
+  if (!SectionalExtremes(frame, sample.SectionalMin, sample.SectionalMax))
+  {
+    return false;
+  }
 
   sample.VolumeForm = std::sqrt(g.determinant());
   return std::isfinite(sample.Scalar) && std::isfinite(sample.RiemannNorm) &&

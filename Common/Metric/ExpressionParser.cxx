@@ -687,6 +687,8 @@ private:
     return this->Add(std::move(node));
   }
 
+  // A name: a symbol (Symbol) or a function call (Call), each refused with a
+  // hint where it is not allowed.
   int Name(const Token& token)
   {
     const std::string name = this->Text.substr(token.Begin, token.End - token.Begin);
@@ -696,66 +698,87 @@ private:
     const ExpressionFunction* function = FindFunction(name);
     if (!call)
     {
-      if (function)
-      {
-        this->Fail(token.Begin,
-          "\"" + name + "\" is a function; write " + name + "(" +
-            (function->Arguments == 2 ? "a, b" : "...") + ")");
-      }
-      if (!known)
-      {
-        std::string hint;
-        if (name != Lower(name) &&
-          (IsVariable(Lower(name)) || Lower(name) == "pi" ||
-            std::find(this->Parameters.begin(), this->Parameters.end(), Lower(name)) !=
-              this->Parameters.end()))
-        {
-          hint = " (names are case-sensitive: \"" + Lower(name) + "\")";
-        }
-        else if (name == "e")
-        {
-          hint = " (write exp(...) for the exponential)";
-        }
-        this->Fail(
-          token.Begin, "unknown symbol \"" + name + "\"; allowed: " + this->AllowedNames() + hint);
-      }
-      Node node;
-      node.Type = Kind::Name;
-      node.Begin = token.Begin;
-      node.End = token.End;
-      node.Text = name;
-      if (name == "pi")
-      {
-        node.IsConstant = true;
-        node.Value = 3.14159265358979323846;
-        node.Bits = 2.0;
-      }
-      return this->Add(std::move(node));
+      return this->Symbol(token, name, function, known);
     }
     if (!function)
     {
-      if (known)
-      {
-        this->Fail(
-          token.Begin, "\"" + name + "\" is not a function; write " + name + "*(...) to multiply");
-      }
+      this->FailUnknownFunction(token, name, known);
+    }
+    return this->Call(token, name, *function);
+  }
+
+  /// A variable, a parameter or pi (a constant), not followed by "(".
+  int Symbol(
+    const Token& token, const std::string& name, const ExpressionFunction* function, bool known)
+  {
+    if (function)
+    {
+      this->Fail(token.Begin,
+        "\"" + name + "\" is a function; write " + name + "(" +
+          (function->Arguments == 2 ? "a, b" : "...") + ")");
+    }
+    if (!known)
+    {
       std::string hint;
-      if (FindFunction(Lower(name)))
+      if (name != Lower(name) &&
+        (IsVariable(Lower(name)) || Lower(name) == "pi" ||
+          std::find(this->Parameters.begin(), this->Parameters.end(), Lower(name)) !=
+            this->Parameters.end()))
       {
         hint = " (names are case-sensitive: \"" + Lower(name) + "\")";
       }
-      else if (name == "ln")
+      else if (name == "e")
       {
-        hint = " (the natural logarithm is log)";
-      }
-      else if (name == "arctan2" || name == "atan")
-      {
-        hint = " (use atan2(y, x))";
+        hint = " (write exp(...) for the exponential)";
       }
       this->Fail(
-        token.Begin, "unknown function \"" + name + "\"; supported: " + FunctionList() + hint);
+        token.Begin, "unknown symbol \"" + name + "\"; allowed: " + this->AllowedNames() + hint);
     }
-    // Arguments: sum (',' sum)*
+    Node node;
+    node.Type = Kind::Name;
+    node.Begin = token.Begin;
+    node.End = token.End;
+    node.Text = name;
+    if (name == "pi")
+    {
+      node.IsConstant = true;
+      node.Value = 3.14159265358979323846;
+      node.Bits = 2.0;
+    }
+    return this->Add(std::move(node));
+  }
+
+  /// A name followed by "(" that is no function: a symbol used as one, or a
+  /// misspelt function (with a hint).
+  [[noreturn]] void FailUnknownFunction(
+    const Token& token, const std::string& name, bool known) const
+  {
+    if (known)
+    {
+      this->Fail(
+        token.Begin, "\"" + name + "\" is not a function; write " + name + "*(...) to multiply");
+    }
+    std::string hint;
+    if (FindFunction(Lower(name)))
+    {
+      hint = " (names are case-sensitive: \"" + Lower(name) + "\")";
+    }
+    else if (name == "ln")
+    {
+      hint = " (the natural logarithm is log)";
+    }
+    else if (name == "arctan2" || name == "atan")
+    {
+      hint = " (use atan2(y, x))";
+    }
+    this->Fail(
+      token.Begin, "unknown function \"" + name + "\"; supported: " + FunctionList() + hint);
+  }
+
+  /// A call of `function`: its arguments, sum (',' sum)*, counted against
+  /// the function's.
+  int Call(const Token& token, const std::string& name, const ExpressionFunction& function)
+  {
     const Token open = this->Take();
     Node node;
     node.Type = Kind::Call;
@@ -793,9 +816,9 @@ private:
     const Token& close = this->Take();
     node.End = close.End;
     const int count = static_cast<int>(node.Children.size());
-    if (count != function->Arguments)
+    if (count != function.Arguments)
     {
-      std::string usage = function->Arguments == 1 ? "1 argument" : "2 arguments";
+      std::string usage = function.Arguments == 1 ? "1 argument" : "2 arguments";
       if (name == "atan2")
       {
         usage += " (y, x)";

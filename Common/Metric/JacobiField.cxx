@@ -177,6 +177,49 @@ double RankThreshold(const Metric& metric, const JacobiSample& sample, double to
     std::sqrt(std::max(0.0, metric.InnerProduct(sample.Point, sample.DJ[1], sample.DJ[1])));
   return std::max(100.0 * tolerance, 1e-6) * scale;
 }
+
+/// TraceJacobiFields' first step: the state (x, v, J0, J0', J1, J1') at the
+/// seed: v the unit-speed direction, J = 0 and J' an orthonormal transverse
+/// frame. False, with `reason` DegenerateMetric, where g is not a metric
+/// (`reason` unchanged for a zero direction).
+bool InitialState(const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
+{
+  Mat3 g;
+  if (!metric.Tensor(p, g))
+  {
+    reason = DegenerateMetric;
+    return false;
+  }
+  const Eigen::LLT<Mat3> llt(g);
+  if (!g.allFinite() || llt.info() != Eigen::Success)
+  {
+    reason = DegenerateMetric;
+    return false;
+  }
+  const Mat3 ginv = llt.solve(Mat3::Identity());
+  Vec3 v0, w0, w1;
+  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), direction, v0, w0, w1))
+  {
+    return false; // zero direction
+  }
+  y << p, v0, Vec3::Zero(), w0, Vec3::Zero(), w1;
+  return true;
+}
+
+/// The arc lengths strictly inside (0, length) that the trace must land on, sorted.
+std::vector<double> LandingStops(const std::vector<double>& landings, double length)
+{
+  std::vector<double> stops;
+  for (double landing : landings)
+  {
+    if (landing > 0.0 && landing < length)
+    {
+      stops.push_back(landing);
+    }
+  }
+  std::sort(stops.begin(), stops.end());
+  return stops;
+}
 } // namespace
 
 void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
@@ -190,28 +233,12 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
   {
     return;
   }
-  Mat3 g;
-  if (!metric.Tensor(p, g))
+  Vec18 y;
+  if (!InitialState(metric, p, backward ? Vec3(-direction) : direction, y, trace.Reason))
   {
-    trace.Reason = DegenerateMetric;
     return;
-  }
-  const Eigen::LLT<Mat3> llt(g);
-  if (!g.allFinite() || llt.info() != Eigen::Success)
-  {
-    trace.Reason = DegenerateMetric;
-    return;
-  }
-  const Mat3 ginv = llt.solve(Mat3::Identity());
-  Vec3 v0, w0, w1;
-  const Vec3 seedDirection = backward ? Vec3(-direction) : direction;
-  if (!TransverseFrame(g, ginv, std::sqrt(g.determinant()), seedDirection, v0, w0, w1))
-  {
-    return; // zero direction
   }
   const double sign = backward ? -1.0 : 1.0;
-  Vec18 y;
-  y << p, v0, Vec3::Zero(), w0, Vec3::Zero(), w1;
   JacobiSample sample;
   double s = 0.0;
   const auto record = [&]() -> bool
@@ -236,15 +263,7 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
     return;
   }
 
-  std::vector<double> stops;
-  for (double landing : landings)
-  {
-    if (landing > 0.0 && landing < options.MaximumLength)
-    {
-      stops.push_back(landing);
-    }
-  }
-  std::sort(stops.begin(), stops.end());
+  const std::vector<double> stops = LandingStops(landings, options.MaximumLength);
   std::size_t nextStop = 0;
 
   FlowStepper<Vec18> stepper(options.Integrator, options.Step, options.Tolerance,
@@ -333,6 +352,128 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
   return FindConjugatePoints(metric, p, direction, options, tolerance, maximumCount);
 }
 
+namespace
+{
+// FindConjugatePoints' steps: the two root searches on an interval of the
+// traced samples, and the record of a root found.
+
+/// A sign change of det J in [previous, current]: its zero by bisection to
+/// `tolerance`. False when a sample on the way cannot be integrated.
+bool BisectDeterminant(const Metric& metric, const JacobiSample& previous,
+  const JacobiSample& current, double spacing, double tolerance, JacobiSample& root)
+{
+  double a = previous.ArcLength;
+  double b = current.ArcLength;
+  double fa = previous.Determinant;
+  JacobiSample middle = current;
+  while (b - a > tolerance && current.Determinant != 0.0)
+  {
+    const double c = 0.5 * (a + b);
+    if (!SampleAt(metric, previous, c, spacing, middle))
+    {
+      return false;
+    }
+    if (middle.Determinant == 0.0)
+    {
+      a = b = c;
+      break;
+    }
+    if ((middle.Determinant < 0.0) == (fa < 0.0))
+    {
+      a = c;
+      fa = middle.Determinant;
+    }
+    else
+    {
+      b = c;
+    }
+  }
+  return SampleAt(metric, previous, 0.5 * (a + b), spacing, root);
+}
+
+/// A touching zero candidate (|det J| dips without a sign change): the
+/// golden-section minimum of the smallest singular value over
+/// [previous, following], a root when that value is below the rank threshold.
+bool MinimiseSingularValue(const Metric& metric, const JacobiSample& previous,
+  const JacobiSample& following, double spacing, double tolerance, JacobiSample& root)
+{
+  constexpr double ratio = 0.6180339887498949;
+  double a = previous.ArcLength;
+  double b = following.ArcLength;
+  JacobiSample left, right;
+  double c = b - ratio * (b - a);
+  double d = a + ratio * (b - a);
+  if (!SampleAt(metric, previous, c, spacing, left) ||
+    !SampleAt(metric, previous, d, spacing, right))
+  {
+    return false;
+  }
+  while (b - a > tolerance)
+  {
+    bool ok = true;
+    if (left.SingularValues[1] < right.SingularValues[1])
+    {
+      b = d;
+      d = c;
+      right = left;
+      c = b - ratio * (b - a);
+      ok = SampleAt(metric, previous, c, spacing, left);
+    }
+    else
+    {
+      a = c;
+      c = d;
+      left = right;
+      d = a + ratio * (b - a);
+      ok = SampleAt(metric, previous, d, spacing, right);
+    }
+    if (!ok)
+    {
+      return false;
+    }
+  }
+  return SampleAt(metric, previous, 0.5 * (a + b), spacing, root) &&
+    root.SingularValues[1] <= RankThreshold(metric, root, tolerance);
+}
+
+/// Append `root` as the next conjugate point, unless it is the one just
+/// found seen again from the neighbouring interval.
+void AddConjugatePoint(const Metric& metric, const JacobiSample& root, double spacing,
+  double tolerance, std::vector<ConjugatePoint>& points)
+{
+  if (!points.empty() && root.ArcLength - points.back().ArcLength < 0.5 * spacing)
+  {
+    return; // the same conjugate point seen from both neighbouring intervals
+  }
+  ConjugatePoint point;
+  point.ArcLength = root.ArcLength;
+  point.Point = root.Point;
+  // Rank drop 2 when the other singular value vanishes too. Integration
+  // error splits a double zero by about the step's error (1e-6 at RK4 step
+  // 0.01 on the unit sphere), while at a simple conjugate point the other
+  // singular value is of the size of the fields: compare relative to |DJ|.
+  point.Multiplicity = root.SingularValues[0] <=
+      1e-3 * RankThreshold(metric, root, tolerance) / std::max(100.0 * tolerance, 1e-6)
+    ? 2
+    : 1;
+  point.Index = static_cast<int>(points.size()) + 1;
+  points.push_back(point);
+}
+
+// The search stops where the integration stops being trustworthy: g(v, v)
+// must stay 1 (it drifts, then blows up, where a geodesic runs off through
+// a coordinate singularity, e.g. towards the point at infinity of the
+// stereographic sphere). Conjugate points are not reported beyond.
+bool Trustworthy(const JacobiSample& sample)
+{
+  return sample.Point.allFinite() && std::isfinite(sample.SpeedDrift) &&
+    std::abs(sample.SpeedDrift) <= 1e-4;
+}
+} // namespace
+
+// FindConjugatePoints as named steps: trace the Jacobi fields, then over
+// each interval of samples BisectDeterminant (a sign change of det J) or
+// MinimiseSingularValue (a touching zero), AddConjugatePoint for each root.
 std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,
   const Vec3& direction, const GeodesicOptions& options, double tolerance, int maximumCount)
 {
@@ -343,39 +484,6 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
   tolerance = std::max(tolerance, 1e-14);
   const std::size_t n = samples.size();
 
-  // The sample spacing around the current interval (variable with dp45).
-  double spacing = options.Step;
-  const auto add = [&](const JacobiSample& root)
-  {
-    if (!points.empty() && root.ArcLength - points.back().ArcLength < 0.5 * spacing)
-    {
-      return; // the same conjugate point seen from both neighbouring intervals
-    }
-    ConjugatePoint point;
-    point.ArcLength = root.ArcLength;
-    point.Point = root.Point;
-    // Rank drop 2 when the other singular value vanishes too. Integration
-    // error splits a double zero by about the step's error (1e-6 at RK4 step
-    // 0.01 on the unit sphere), while at a simple conjugate point the other
-    // singular value is of the size of the fields: compare relative to |DJ|.
-    point.Multiplicity = root.SingularValues[0] <=
-        1e-3 * RankThreshold(metric, root, tolerance) / std::max(100.0 * tolerance, 1e-6)
-      ? 2
-      : 1;
-    point.Index = static_cast<int>(points.size()) + 1;
-    points.push_back(point);
-  };
-
-  // The search stops where the integration stops being trustworthy: g(v, v)
-  // must stay 1 (it drifts, then blows up, where a geodesic runs off through
-  // a coordinate singularity, e.g. towards the point at infinity of the
-  // stereographic sphere). Conjugate points are not reported beyond.
-  const auto trustworthy = [&](const JacobiSample& sample)
-  {
-    return sample.Point.allFinite() && std::isfinite(sample.SpeedDrift) &&
-      std::abs(sample.SpeedDrift) <= 1e-4;
-  };
-
   // Sample 0 is the seed (J = 0): start the search at the interval [1, 2].
   for (std::size_t i = 2; i < n; ++i)
   {
@@ -383,50 +491,22 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
     {
       break;
     }
-    if (!trustworthy(samples[i]))
+    if (!Trustworthy(samples[i]))
     {
       break;
     }
     const JacobiSample& previous = samples[i - 1];
     const JacobiSample& current = samples[i];
-    spacing = current.ArcLength - previous.ArcLength;
+    // The sample spacing around the current interval (variable with dp45).
+    const double spacing = current.ArcLength - previous.ArcLength;
     const double d0 = previous.Determinant;
     const double d1 = current.Determinant;
+    JacobiSample root;
     if (d1 == 0.0 || d0 * d1 < 0.0)
     {
-      // Sign change in [s_{i-1}, s_i]: bisection on the determinant.
-      double a = previous.ArcLength;
-      double b = current.ArcLength;
-      double fa = d0;
-      JacobiSample middle = current;
-      bool ok = true;
-      while (b - a > tolerance && d1 != 0.0)
+      if (BisectDeterminant(metric, previous, current, spacing, tolerance, root))
       {
-        const double c = 0.5 * (a + b);
-        if (!SampleAt(metric, previous, c, spacing, middle))
-        {
-          ok = false;
-          break;
-        }
-        if (middle.Determinant == 0.0)
-        {
-          a = b = c;
-          break;
-        }
-        if ((middle.Determinant < 0.0) == (fa < 0.0))
-        {
-          a = c;
-          fa = middle.Determinant;
-        }
-        else
-        {
-          b = c;
-        }
-      }
-      JacobiSample root;
-      if (ok && SampleAt(metric, previous, 0.5 * (a + b), spacing, root))
-      {
-        add(root);
+        AddConjugatePoint(metric, root, spacing, tolerance, points);
       }
       continue;
     }
@@ -435,50 +515,10 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
       const double d2 = samples[i + 1].Determinant;
       const bool sameSign =
         (d0 > 0.0 && d1 > 0.0 && d2 > 0.0) || (d0 < 0.0 && d1 < 0.0 && d2 < 0.0);
-      if (sameSign && std::abs(d1) < std::abs(d0) && std::abs(d1) <= std::abs(d2))
+      if (sameSign && std::abs(d1) < std::abs(d0) && std::abs(d1) <= std::abs(d2) &&
+        MinimiseSingularValue(metric, previous, samples[i + 1], spacing, tolerance, root))
       {
-        // Touching zero candidate: golden-section minimum of the smallest
-        // singular value over [s_{i-1}, s_{i+1}].
-        constexpr double ratio = 0.6180339887498949;
-        double a = previous.ArcLength;
-        double b = samples[i + 1].ArcLength;
-        JacobiSample left, right;
-        double c = b - ratio * (b - a);
-        double d = a + ratio * (b - a);
-        if (!SampleAt(metric, previous, c, spacing, left) || !SampleAt(metric, previous, d, spacing, right))
-        {
-          continue;
-        }
-        bool ok = true;
-        while (b - a > tolerance)
-        {
-          if (left.SingularValues[1] < right.SingularValues[1])
-          {
-            b = d;
-            d = c;
-            right = left;
-            c = b - ratio * (b - a);
-            ok = SampleAt(metric, previous, c, spacing, left);
-          }
-          else
-          {
-            a = c;
-            c = d;
-            left = right;
-            d = a + ratio * (b - a);
-            ok = SampleAt(metric, previous, d, spacing, right);
-          }
-          if (!ok)
-          {
-            break;
-          }
-        }
-        JacobiSample root;
-        if (ok && SampleAt(metric, previous, 0.5 * (a + b), spacing, root) &&
-          root.SingularValues[1] <= RankThreshold(metric, root, tolerance))
-        {
-          add(root);
-        }
+        AddConjugatePoint(metric, root, spacing, tolerance, points);
       }
     }
   }

@@ -57,21 +57,13 @@ int vtkRiemannConjugateLocus::RequestData(
   {
     return 1;
   }
-  const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
-  if (!observer.allFinite())
-  {
-    vtkErrorMacro(<< "Observer must be finite.");
-    return 1;
-  }
-
   vtkNew<vtkPolyData> grid;
-  std::string message;
-  if (!vtkRiemannDirectionGrid::Build(
-        this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid, message))
+  if (!this->CheckObserver(this->Observer) ||
+    !this->BuildDirectionGrid(this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid))
   {
-    vtkErrorMacro(<< "ConeAxis: " << message << ".");
     return 1;
   }
+  const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
   std::vector<riemann::Vec3> directions(static_cast<size_t>(grid->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
   {

@@ -78,6 +78,84 @@ std::vector<vtkIdType> BoundaryLoop(vtkCellArray* triangles)
   } while (current != loop.front() && loop.size() <= neighbours.size());
   return loop.size() == neighbours.size() ? loop : std::vector<vtkIdType>();
 }
+
+// Build's steps for three directions or more: TriangulateStereographic ->
+// OrientOutward.
+
+/// The triangles of the directions' Delaunay triangulation after a
+/// stereographic projection from a pole onto the plane orthogonal to it:
+/// -axis for a cap (outside it); for the whole sphere the last direction
+/// (the one nearest -axis), whose star is added afterwards as the cone over
+/// the boundary of the others' triangulation.
+void TriangulateStereographic(
+  vtkPoints* directions, const Vector& axis, bool wholeSphere, vtkCellArray* triangles)
+{
+  const int count = static_cast<int>(directions->GetNumberOfPoints());
+  Vector pole = { -axis[0], -axis[1], -axis[2] };
+  const int projectedCount = wholeSphere ? count - 1 : count;
+  if (wholeSphere)
+  {
+    directions->GetPoint(count - 1, pole.data());
+  }
+  Vector p0 = std::abs(pole[0]) < 0.9 ? Vector{ 1.0, 0.0, 0.0 } : Vector{ 0.0, 1.0, 0.0 };
+  Vector e0, e1;
+  vtkMath::Cross(pole.data(), p0.data(), e0.data());
+  vtkMath::Normalize(e0.data());
+  vtkMath::Cross(pole.data(), e0.data(), e1.data());
+  vtkNew<vtkPoints> projected;
+  projected->SetDataTypeToDouble();
+  projected->SetNumberOfPoints(projectedCount);
+  for (int i = 0; i < projectedCount; ++i)
+  {
+    double d[3];
+    directions->GetPoint(i, d);
+    const double scale = 1.0 / (1.0 - vtkMath::Dot(d, pole.data()));
+    projected->SetPoint(
+      i, scale * vtkMath::Dot(d, e0.data()), scale * vtkMath::Dot(d, e1.data()), 0.0);
+  }
+  vtkNew<vtkPolyData> plane;
+  plane->SetPoints(projected);
+  vtkNew<vtkDelaunay2D> delaunay;
+  delaunay->SetInputData(plane);
+  delaunay->Update();
+  triangles->DeepCopy(delaunay->GetOutput()->GetPolys());
+  if (wholeSphere)
+  {
+    // The pole's neighbours are the boundary of the planar triangulation.
+    const std::vector<vtkIdType> loop = BoundaryLoop(triangles);
+    for (size_t k = 0; k < loop.size(); ++k)
+    {
+      const vtkIdType star[3] = { count - 1, loop[k], loop[(k + 1) % loop.size()] };
+      triangles->InsertNextCell(3, star);
+    }
+  }
+}
+
+/// Every triangle turned to face outward (normal . centroid > 0).
+void OrientOutward(vtkPoints* directions, vtkCellArray* triangles)
+{
+  vtkNew<vtkCellArray> oriented;
+  oriented->AllocateExact(triangles->GetNumberOfCells(), 3 * triangles->GetNumberOfCells());
+  vtkNew<vtkIdList> cell;
+  for (triangles->InitTraversal(); triangles->GetNextCell(cell);)
+  {
+    double a[3], b[3], c[3], ab[3], ac[3], normal[3];
+    directions->GetPoint(cell->GetId(0), a);
+    directions->GetPoint(cell->GetId(1), b);
+    directions->GetPoint(cell->GetId(2), c);
+    vtkMath::Subtract(b, a, ab);
+    vtkMath::Subtract(c, a, ac);
+    vtkMath::Cross(ab, ac, normal);
+    const double centroid[3] = { a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2] };
+    vtkIdType t[3] = { cell->GetId(0), cell->GetId(1), cell->GetId(2) };
+    if (vtkMath::Dot(normal, centroid) < 0.0)
+    {
+      std::swap(t[1], t[2]);
+    }
+    oriented->InsertNextCell(3, t);
+  }
+  triangles->ShallowCopy(oriented);
+}
 }
 
 bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[3],
@@ -115,70 +193,8 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
   vtkNew<vtkCellArray> triangles;
   if (count >= 3)
   {
-    // Stereographic projection from a pole onto the plane orthogonal to it:
-    // -axis for a cap (outside it); for the whole sphere the last direction
-    // (the one nearest -axis), whose star is added afterwards as the cone
-    // over the boundary of the others' triangulation.
-    Vector pole = { -axis[0], -axis[1], -axis[2] };
-    const int projectedCount = wholeSphere ? count - 1 : count;
-    if (wholeSphere)
-    {
-      directions->GetPoint(count - 1, pole.data());
-    }
-    Vector p0 = std::abs(pole[0]) < 0.9 ? Vector{ 1.0, 0.0, 0.0 } : Vector{ 0.0, 1.0, 0.0 };
-    Vector e0, e1;
-    vtkMath::Cross(pole.data(), p0.data(), e0.data());
-    vtkMath::Normalize(e0.data());
-    vtkMath::Cross(pole.data(), e0.data(), e1.data());
-    vtkNew<vtkPoints> projected;
-    projected->SetDataTypeToDouble();
-    projected->SetNumberOfPoints(projectedCount);
-    for (int i = 0; i < projectedCount; ++i)
-    {
-      double d[3];
-      directions->GetPoint(i, d);
-      const double scale = 1.0 / (1.0 - vtkMath::Dot(d, pole.data()));
-      projected->SetPoint(i, scale * vtkMath::Dot(d, e0.data()),
-        scale * vtkMath::Dot(d, e1.data()), 0.0);
-    }
-    vtkNew<vtkPolyData> plane;
-    plane->SetPoints(projected);
-    vtkNew<vtkDelaunay2D> delaunay;
-    delaunay->SetInputData(plane);
-    delaunay->Update();
-    triangles->DeepCopy(delaunay->GetOutput()->GetPolys());
-    if (wholeSphere)
-    {
-      // The pole's neighbours are the boundary of the planar triangulation.
-      const std::vector<vtkIdType> loop = BoundaryLoop(triangles);
-      for (size_t k = 0; k < loop.size(); ++k)
-      {
-        const vtkIdType star[3] = { count - 1, loop[k], loop[(k + 1) % loop.size()] };
-        triangles->InsertNextCell(3, star);
-      }
-    }
-    // Orient every triangle outward (normal . centroid > 0).
-    vtkNew<vtkCellArray> oriented;
-    oriented->AllocateExact(triangles->GetNumberOfCells(), 3 * triangles->GetNumberOfCells());
-    vtkNew<vtkIdList> cell;
-    for (triangles->InitTraversal(); triangles->GetNextCell(cell);)
-    {
-      double a[3], b[3], c[3], ab[3], ac[3], normal[3];
-      directions->GetPoint(cell->GetId(0), a);
-      directions->GetPoint(cell->GetId(1), b);
-      directions->GetPoint(cell->GetId(2), c);
-      vtkMath::Subtract(b, a, ab);
-      vtkMath::Subtract(c, a, ac);
-      vtkMath::Cross(ab, ac, normal);
-      const double centroid[3] = { a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2] };
-      vtkIdType t[3] = { cell->GetId(0), cell->GetId(1), cell->GetId(2) };
-      if (vtkMath::Dot(normal, centroid) < 0.0)
-      {
-        std::swap(t[1], t[2]);
-      }
-      oriented->InsertNextCell(3, t);
-    }
-    triangles->ShallowCopy(oriented);
+    TriangulateStereographic(directions, axis, wholeSphere, triangles);
+    OrientOutward(directions, triangles);
   }
   grid->SetPoints(directions);
   grid->SetPolys(triangles);

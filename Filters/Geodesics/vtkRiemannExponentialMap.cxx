@@ -15,10 +15,12 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -59,23 +61,6 @@ double vtkRiemannExponentialMap::GetRadius(int i) const
 
 namespace
 {
-vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
-vtkSmartPointer<vtkIntArray> NewIntArray(const char* name, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
 /// Index of the sample landed on arc length r, or -1 if the geodesic
 /// stopped before it.
 long SampleAtRadius(const std::vector<riemann::JacobiSample>& samples, double r)
@@ -88,76 +73,35 @@ long SampleAtRadius(const std::vector<riemann::JacobiSample>& samples, double r)
   }
   return static_cast<long>(found - samples.begin());
 }
-}
 
-int vtkRiemannExponentialMap::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+/// Step 2 of RequestData: every direction of the grid traced with its Jacobi
+/// fields from the observer, landing on each radius, in parallel (progress
+/// and abort between batches of 64). False when aborted.
+bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
+  const riemann::Vec3& observer, vtkPolyData* grid, const riemann::GeodesicOptions& options,
+  const std::vector<double>& radii, std::vector<riemann::JacobiTrace>& traces)
 {
-  vtkPolyData* bundle = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* wavefronts = vtkPolyData::GetData(outputVector, 1);
-  bundle->Initialize();
-  wavefronts->Initialize();
-  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
-  if (!metric)
-  {
-    return 1;
-  }
-  const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
-  if (!observer.allFinite())
-  {
-    vtkErrorMacro(<< "Observer must be finite.");
-    return 1;
-  }
-  for (double r : this->Radii)
-  {
-    if (!(r > 0.0) || !std::isfinite(r))
-    {
-      vtkErrorMacro(<< "Every radius must be a positive number; got " << r << ".");
-      return 1;
-    }
-  }
-  const double stepsPerGeodesic = this->IntegrationSettings->GetMaximumPropagation() /
-    this->IntegrationSettings->GetInitialIntegrationStep();
-  const double samples = static_cast<double>(this->NumberOfDirections) * (stepsPerGeodesic + 1.0);
-  if (samples > MaximumNumberOfSamples)
-  {
-    vtkErrorMacro(<< "Too many samples: " << this->NumberOfDirections << " directions x "
-                  << stepsPerGeodesic
-                  << " steps is more than " << MaximumNumberOfSamples
-                  << " (about 8 GiB); use fewer directions or a longer InitialIntegrationStep.");
-    return 1;
-  }
-  vtkNew<vtkPolyData> grid;
-  std::string message;
-  if (!vtkRiemannDirectionGrid::Build(
-        this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid, message))
-  {
-    vtkErrorMacro(<< "ConeAxis: " << message << ".");
-    return 1;
-  }
-
-  const riemann::GeodesicOptions options = this->MakeGeodesicOptions();
-
-  // Trace in parallel (progress and abort between batches).
   const vtkIdType count = grid->GetNumberOfPoints();
-  std::vector<riemann::JacobiTrace> traces(static_cast<size_t>(count));
-  const vtkIdType done = vtkRiemannForInBatches(this, count, 64,
+  traces.resize(static_cast<size_t>(count));
+  const vtkIdType done = vtkRiemannForInBatches(self, count, 64,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType i = first; i < last; ++i)
       {
         double d[3];
         grid->GetPoint(i, d);
-        riemann::TraceJacobiFields(*metric, observer, riemann::Vec3(d[0], d[1], d[2]), options,
-          traces[i], false, this->Radii);
+        riemann::TraceJacobiFields(
+          metric, observer, riemann::Vec3(d[0], d[1], d[2]), options, traces[i], false, radii);
       }
     });
-  if (done < count)
-  {
-    return 1; // aborted: empty outputs
-  }
+  return done == count;
+}
 
-  // Port 0: the ray bundle.
+/// Step 3: port 0, the ray bundle: a polyline per direction that made a step,
+/// with ArcLength, SpeedDrift and the transverse Jacobian per point and
+/// DirectionId and ReasonForTermination per line.
+void BuildBundle(const std::vector<riemann::JacobiTrace>& traces, vtkPolyData* bundle)
+{
   vtkIdType pointCount = 0;
   vtkIdType lineCount = 0;
   for (const riemann::JacobiTrace& trace : traces)
@@ -173,16 +117,17 @@ int vtkRiemannExponentialMap::RequestData(
   points->SetNumberOfPoints(pointCount);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(lineCount, pointCount);
-  auto arcLength = NewArray("ArcLength", 1, pointCount);
-  auto speedDrift = NewArray("SpeedDrift", 1, pointCount);
-  auto determinant = NewArray("TransverseJacobian", 1, pointCount);
-  auto singular = NewArray("TransverseJacobianSingularValues", 2, pointCount);
-  auto lineDirection = NewIntArray("DirectionId", lineCount);
-  auto reasons = NewIntArray("ReasonForTermination", lineCount);
+  auto arcLength = vtkRiemannNewArray<vtkDoubleArray>("ArcLength", 1, pointCount);
+  auto speedDrift = vtkRiemannNewArray<vtkDoubleArray>("SpeedDrift", 1, pointCount);
+  auto determinant = vtkRiemannNewArray<vtkDoubleArray>("TransverseJacobian", 1, pointCount);
+  auto singular =
+    vtkRiemannNewArray<vtkDoubleArray>("TransverseJacobianSingularValues", 2, pointCount);
+  auto lineDirection = vtkRiemannNewArray<vtkIntArray>("DirectionId", 1, lineCount);
+  auto reasons = vtkRiemannNewArray<vtkIntArray>("ReasonForTermination", 1, lineCount);
   vtkIdType next = 0;
   vtkIdType line = 0;
   std::vector<vtkIdType> ids;
-  for (vtkIdType i = 0; i < count; ++i)
+  for (size_t i = 0; i < traces.size(); ++i)
   {
     const std::vector<riemann::JacobiSample>& samples = traces[i].Samples;
     if (samples.size() < 2)
@@ -212,8 +157,15 @@ int vtkRiemannExponentialMap::RequestData(
   bundle->GetPointData()->AddArray(singular);
   bundle->GetCellData()->AddArray(lineDirection);
   bundle->GetCellData()->AddArray(reasons);
+}
 
-  // Port 1: one geodesic sphere per radius, over the grid's triangles.
+/// Step 4: port 1, one geodesic sphere per radius over the grid's triangles
+/// (the samples landed on that radius), with a warning for each radius beyond
+/// MaximumPropagation.
+void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
+  const std::vector<riemann::JacobiTrace>& traces, const std::vector<double>& radii,
+  double maximumPropagation, vtkPolyData* wavefronts)
+{
   vtkNew<vtkPoints> spherePoints;
   spherePoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> triangles;
@@ -225,14 +177,14 @@ int vtkRiemannExponentialMap::RequestData(
   cellRadius->SetName("Radius");
   vtkNew<vtkIntArray> sphereDirection;
   sphereDirection->SetName("DirectionId");
-  std::vector<vtkIdType> local(static_cast<size_t>(count));
-  for (double r : this->Radii)
+  const vtkIdType count = static_cast<vtkIdType>(traces.size());
+  std::vector<vtkIdType> local(traces.size());
+  for (double r : radii)
   {
-    if (r > this->IntegrationSettings->GetMaximumPropagation())
+    if (r > maximumPropagation)
     {
-      vtkWarningMacro(<< "Radius " << r << " is beyond MaximumPropagation ("
-                      << this->IntegrationSettings->GetMaximumPropagation()
-                      << "): no wavefront there.");
+      vtkWarningWithObjectMacro(self, << "Radius " << r << " is beyond MaximumPropagation ("
+                                      << maximumPropagation << "): no wavefront there.");
       continue;
     }
     for (vtkIdType i = 0; i < count; ++i)
@@ -262,7 +214,70 @@ int vtkRiemannExponentialMap::RequestData(
   wavefronts->GetPointData()->AddArray(sphereDirection);
   wavefronts->GetPointData()->AddArray(pointRadius);
   wavefronts->GetCellData()->AddArray(cellRadius);
+}
+}
+
+// RequestData as named steps: CheckRequest -> the direction grid ->
+// TraceInParallel -> BuildBundle (port 0) -> BuildWavefronts (port 1).
+int vtkRiemannExponentialMap::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* bundle = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* wavefronts = vtkPolyData::GetData(outputVector, 1);
+  bundle->Initialize();
+  wavefronts->Initialize();
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric || !this->CheckRequest())
+  {
+    return 1;
+  }
+  vtkNew<vtkPolyData> grid;
+  if (!this->BuildDirectionGrid(this->NumberOfDirections, this->ConeAxis, this->ConeAngle, grid))
+  {
+    return 1;
+  }
+  const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
+  std::vector<riemann::JacobiTrace> traces;
+  if (!TraceInParallel(
+        this, *metric, observer, grid, this->MakeGeodesicOptions(), this->Radii, traces))
+  {
+    return 1; // aborted: empty outputs
+  }
+  BuildBundle(traces, bundle);
+  BuildWavefronts(this, grid, traces, this->Radii,
+    this->IntegrationSettings->GetMaximumPropagation(), wavefronts);
   return 1;
+}
+
+bool vtkRiemannExponentialMap::CheckRequest()
+{
+  if (!this->CheckObserver(this->Observer))
+  {
+    return false;
+  }
+  for (double r : this->Radii)
+  {
+    if (!(r > 0.0) || !std::isfinite(r))
+    {
+      std::ostringstream error;
+      error << "Every radius must be a positive number; got " << r << ".";
+      this->ReportError(error.str());
+      return false;
+    }
+  }
+  const double stepsPerGeodesic = this->IntegrationSettings->GetMaximumPropagation() /
+    this->IntegrationSettings->GetInitialIntegrationStep();
+  const double samples = static_cast<double>(this->NumberOfDirections) * (stepsPerGeodesic + 1.0);
+  if (samples > MaximumNumberOfSamples)
+  {
+    std::ostringstream error;
+    error << "Too many samples: " << this->NumberOfDirections << " directions x "
+          << stepsPerGeodesic << " steps is more than " << MaximumNumberOfSamples
+          << " (about 8 GiB); use fewer directions or a longer InitialIntegrationStep.";
+    this->ReportError(error.str());
+    return false;
+  }
+  return true;
 }
 
 void vtkRiemannExponentialMap::PrintSelf(ostream& os, vtkIndent indent)

@@ -97,6 +97,10 @@ protected:
   std::vector<double> Radii;
 
 private:
+  /// Step 1 of RequestData: Observer, Radii and the sample budget, each
+  /// refused by name (ReportError); the other steps are in the .cxx.
+  bool CheckRequest();
+
   vtkRiemannExponentialMap(const vtkRiemannExponentialMap&) = delete;
   void operator=(const vtkRiemannExponentialMap&) = delete;
 };

@@ -3,10 +3,14 @@
 #include "GeodesicTrace.h"
 #include "Metric.h"
 #include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 vtkCxxSetObjectMacro(vtkRiemannGeodesicAlgorithm, Metric, vtkRiemannMetric);
 
@@ -45,6 +49,28 @@ void vtkRiemannGeodesicAlgorithm::ReportError(const std::string& message)
   vtkErrorMacro(<< message);
 }
 
+bool vtkRiemannGeodesicAlgorithm::CheckObserver(const double observer[3])
+{
+  if (!std::isfinite(observer[0]) || !std::isfinite(observer[1]) || !std::isfinite(observer[2]))
+  {
+    this->ReportError("Observer must be finite.");
+    return false;
+  }
+  return true;
+}
+
+bool vtkRiemannGeodesicAlgorithm::BuildDirectionGrid(
+  int numberOfDirections, const double coneAxis[3], double coneAngle, vtkPolyData* grid)
+{
+  std::string message;
+  if (!vtkRiemannDirectionGrid::Build(numberOfDirections, coneAxis, coneAngle, grid, message))
+  {
+    this->ReportError("ConeAxis: " + message + ".");
+    return false;
+  }
+  return true;
+}
+
 std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricAndSettings()
 {
   this->LastError.clear();
@@ -54,7 +80,8 @@ std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricA
       "No metric: call SetMetric() with a vtkRiemannMetric that has a valid definition.");
     return nullptr;
   }
-  const std::string settingsError = this->IntegrationSettings->CheckSettings();
+  const std::string settingsError =
+    this->UsesIntegrationSettings() ? this->IntegrationSettings->CheckSettings() : std::string();
   if (!settingsError.empty())
   {
     this->ReportError("Integration settings: " + settingsError + ".");

@@ -16,7 +16,11 @@
  *
  * A subclass's RequestData starts with CheckMetricAndSettings(): on a missing
  * metric or an unusable setting it reports one error through vtkErrorMacro
- * (also kept in GetLastError()) and the filter produces empty output.
+ * (also kept in GetLastError()) and the filter produces empty output. The
+ * settings are checked only when the subclass uses them
+ * (UsesIntegrationSettings(); vtkRiemannRayBundle takes the scene's unless
+ * UseSceneSettings is off). Every later error that empties the output goes
+ * through ReportError() too, so GetLastError() always says why.
  */
 #ifndef vtkRiemannGeodesicAlgorithm_h
 #define vtkRiemannGeodesicAlgorithm_h
@@ -74,11 +78,30 @@ protected:
    */
   VTK_WRAPEXCLUDE std::shared_ptr<const riemann::Metric> CheckMetricAndSettings();
 
+  /**
+   * Whether this execution integrates with GetIntegrationSettings(): true
+   * here. A subclass that takes its integration from elsewhere at times
+   * returns false then, and CheckMetricAndSettings() does not check settings
+   * that it will not use.
+   */
+  virtual bool UsesIntegrationSettings() const { return true; }
+
   /// The core's geodesic options from the integration settings.
   VTK_WRAPEXCLUDE riemann::GeodesicOptions MakeGeodesicOptions() const;
 
   /// vtkErrorMacro with `message`, kept for GetLastError().
   void ReportError(const std::string& message);
+
+  ///@{
+  /**
+   * The checks of the filters that shoot geodesics from an observer over a
+   * cone of directions (vtkRiemannExponentialMap, vtkRiemannConjugateLocus):
+   * false after ReportError ("Observer must be finite.", "ConeAxis: ...").
+   */
+  bool CheckObserver(const double observer[3]);
+  bool BuildDirectionGrid(
+    int numberOfDirections, const double coneAxis[3], double coneAngle, vtkPolyData* grid);
+  ///@}
 
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;

@@ -17,10 +17,14 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <array>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannGeodesicTracer);
@@ -64,11 +68,22 @@ struct Seed
   bool Backward;
 };
 
+/// Per path point: the transverse Jacobian's determinant and its two singular values.
+using JacobianSamples = std::vector<std::array<double, 3>>;
+
+/// What TraceInParallel returns: the paths in seed order (Traced of them,
+/// fewer than the seeds after an abort) and their Jacobians when asked.
+struct Traces
+{
+  std::vector<riemann::GeodesicPath> Paths;
+  std::vector<JacobianSamples> Jacobians;
+  vtkIdType Traced = 0;
+};
+
 /// The geodesic with its Jacobi fields, as a GeodesicPath plus the
 /// transverse Jacobian (determinant, singular values) at every point.
 void TraceWithJacobian(const riemann::Metric& metric, const Seed& seed,
-  const riemann::GeodesicOptions& options, riemann::GeodesicPath& path,
-  std::vector<std::array<double, 3>>& jacobian)
+  const riemann::GeodesicOptions& options, riemann::GeodesicPath& path, JacobianSamples& jacobian)
 {
   riemann::JacobiTrace trace;
   riemann::TraceJacobiFields(metric, seed.Position, seed.Direction, options, trace, seed.Backward);
@@ -87,42 +102,33 @@ void TraceWithJacobian(const riemann::Metric& metric, const Seed& seed,
       { sample.Determinant, sample.SingularValues[0], sample.SingularValues[1] });
   }
 }
-}
 
-int vtkRiemannGeodesicTracer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+/// Step 1 of RequestData: the seeds, in start order, one per start and
+/// direction of integration (two for BOTH). The starts are the input's points
+/// with their directions (or StartDirection), or StartPosition without an
+/// input. Returns the error that empties the output ("" when all is well);
+/// a missing direction array is only a warning.
+std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input, std::vector<Seed>& seeds)
 {
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
-  if (!metric)
-  {
-    return 1;
-  }
-
-  // Gather seeds: the input's points with their directions, or the start ivars.
-  std::vector<Seed> seeds;
-  const riemann::Vec3 startDirection(
-    this->StartDirection[0], this->StartDirection[1], this->StartDirection[2]);
-  vtkDataSet* input =
-    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  const double* start = self->GetStartDirection();
+  const riemann::Vec3 startDirection(start[0], start[1], start[2]);
+  const char* arrayName = self->GetDirectionArrayName();
   std::vector<std::pair<riemann::Vec3, riemann::Vec3>> starts;
   if (input)
   {
-    vtkDataArray* directions = this->DirectionArrayName
-      ? input->GetPointData()->GetArray(this->DirectionArrayName)
-      : nullptr;
+    vtkDataArray* directions = arrayName ? input->GetPointData()->GetArray(arrayName) : nullptr;
     if (directions && directions->GetNumberOfComponents() != 3)
     {
-      vtkErrorMacro(<< "The seeds' array \"" << this->DirectionArrayName << "\" has "
-                    << directions->GetNumberOfComponents() << " components; it needs 3.");
-      return 1;
+      std::ostringstream message;
+      message << "The seeds' array \"" << arrayName << "\" has "
+              << directions->GetNumberOfComponents() << " components; it needs 3.";
+      return message.str();
     }
     if (!directions && input->GetNumberOfPoints() > 0)
     {
-      vtkWarningMacro(<< "The seeds have no point-data array \""
-                      << (this->DirectionArrayName ? this->DirectionArrayName : "")
-                      << "\"; every seed uses StartDirection.");
+      vtkWarningWithObjectMacro(self, << "The seeds have no point-data array \""
+                                      << (arrayName ? arrayName : "")
+                                      << "\"; every seed uses StartDirection.");
     }
     for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
     {
@@ -139,105 +145,119 @@ int vtkRiemannGeodesicTracer::RequestData(
   }
   else
   {
-    starts.emplace_back(
-      riemann::Vec3(this->StartPosition[0], this->StartPosition[1], this->StartPosition[2]),
-      startDirection);
+    const double* position = self->GetStartPosition();
+    starts.emplace_back(riemann::Vec3(position[0], position[1], position[2]), startDirection);
   }
+  const int integrationDirection = self->GetIntegrationDirection();
   for (size_t i = 0; i < starts.size(); ++i)
   {
-    if (this->IntegrationDirection != BACKWARD)
+    if (integrationDirection != vtkRiemannGeodesicTracer::BACKWARD)
     {
       seeds.push_back({ starts[i].first, starts[i].second, static_cast<vtkIdType>(i), false });
     }
-    if (this->IntegrationDirection != FORWARD)
+    if (integrationDirection != vtkRiemannGeodesicTracer::FORWARD)
     {
       seeds.push_back({ starts[i].first, starts[i].second, static_cast<vtkIdType>(i), true });
     }
   }
+  return std::string();
+}
 
-  riemann::GeodesicOptions options = this->MakeGeodesicOptions();
-  options.UseBounds = this->UseDomainBounds;
-  std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
-
-  // Trace in parallel (progress and abort between batches).
-  std::vector<riemann::GeodesicPath> paths(seeds.size());
-  // Per path point: determinant and the two singular values (when asked).
-  const bool jacobian = this->ComputeTransverseJacobian;
-  std::vector<std::vector<std::array<double, 3>>> jacobians(jacobian ? seeds.size() : 0);
+/// Step 2: every seed's geodesic, in parallel, with progress and abort
+/// between batches of 256 seeds. A seed whose direction cannot be normalised
+/// gets an empty path.
+Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
+  const std::vector<Seed>& seeds, const riemann::GeodesicOptions& options, bool jacobian)
+{
+  Traces traces;
+  traces.Paths.resize(seeds.size());
+  traces.Jacobians.resize(jacobian ? seeds.size() : 0);
   const vtkIdType count = static_cast<vtkIdType>(seeds.size());
-  const vtkIdType traced = vtkRiemannForInBatches(this, count, 256,
+  traces.Traced = vtkRiemannForInBatches(self, count, 256,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType i = first; i < last; ++i)
       {
         const Seed& seed = seeds[i];
         riemann::Vec3 velocity;
-        if (!riemann::UnitSpeedVelocity(*metric, seed.Position, seed.Direction, velocity))
+        if (!riemann::UnitSpeedVelocity(metric, seed.Position, seed.Direction, velocity))
         {
-          paths[i].Clear();
+          traces.Paths[i].Clear();
           continue;
         }
         if (jacobian)
         {
-          TraceWithJacobian(*metric, seed, options, paths[i], jacobians[i]);
+          TraceWithJacobian(metric, seed, options, traces.Paths[i], traces.Jacobians[i]);
         }
         else
         {
           riemann::TraceGeodesic(
-            *metric, seed.Position, velocity, options, paths[i], seed.Backward);
+            metric, seed.Position, velocity, options, traces.Paths[i], seed.Backward);
         }
       }
     });
+  return traces;
+}
 
-  // Assemble the polylines in seed order. A path of one point (a seed outside
-  // DomainBounds, a zero length or step budget) makes no line; say so.
-  vtkIdType pointCount = 0;
-  vtkIdType lineCount = 0;
+/// Step 3: warn about the paths that make no line: none at all (the geodesic
+/// could not start) or a single point (a seed outside DomainBounds, a zero
+/// length or step budget).
+void WarnAboutShortPaths(vtkObject* self, const Traces& traces)
+{
   vtkIdType unstarted = 0;
   vtkIdType stillborn = 0;
-  for (vtkIdType i = 0; i < traced; ++i)
+  for (vtkIdType i = 0; i < traces.Traced; ++i)
   {
-    const size_t n = paths[i].Points.size();
+    const size_t n = traces.Paths[i].Points.size();
     unstarted += n == 0 ? 1 : 0;
     stillborn += n == 1 ? 1 : 0;
+  }
+  if (unstarted > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << unstarted << " of " << traces.Traced
+            << " geodesics could not start: zero or non-finite direction, or a "
+               "degenerate metric at the seed.");
+  }
+  if (stillborn > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << stillborn << " of " << traces.Traced
+            << " geodesics made no step: the seed is outside DomainBounds.");
+  }
+}
+
+/// Step 4: the polylines of two or more points, in seed order, with their
+/// point arrays (ArcLength, Velocity, SpeedDrift and the Jacobian's when
+/// asked) and cell arrays (SeedIds, ReasonForTermination).
+void BuildOutput(
+  const std::vector<Seed>& seeds, const Traces& traces, bool jacobian, vtkPolyData* output)
+{
+  vtkIdType pointCount = 0;
+  vtkIdType lineCount = 0;
+  for (vtkIdType i = 0; i < traces.Traced; ++i)
+  {
+    const size_t n = traces.Paths[i].Points.size();
     if (n >= 2)
     {
       pointCount += static_cast<vtkIdType>(n);
       ++lineCount;
     }
   }
-  if (unstarted > 0)
-  {
-    vtkWarningMacro(<< unstarted << " of " << traced
-                    << " geodesics could not start: zero or non-finite direction, or a "
-                       "degenerate metric at the seed.");
-  }
-  if (stillborn > 0)
-  {
-    vtkWarningMacro(<< stillborn << " of " << traced
-                    << " geodesics made no step: the seed is outside DomainBounds.");
-  }
-
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(pointCount);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(lineCount, pointCount);
-  auto makeArray = [](vtkDoubleArray* array, const char* name, int components, vtkIdType tuples)
-  {
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(tuples);
-  };
-  vtkNew<vtkDoubleArray> arcLength, velocity, speedDrift;
-  makeArray(arcLength, "ArcLength", 1, pointCount);
-  makeArray(velocity, "Velocity", 3, pointCount);
-  makeArray(speedDrift, "SpeedDrift", 1, pointCount);
-  vtkNew<vtkDoubleArray> determinant, singularValues;
+  auto arcLength = vtkRiemannNewArray<vtkDoubleArray>("ArcLength", 1, pointCount);
+  auto velocity = vtkRiemannNewArray<vtkDoubleArray>("Velocity", 3, pointCount);
+  auto speedDrift = vtkRiemannNewArray<vtkDoubleArray>("SpeedDrift", 1, pointCount);
+  vtkSmartPointer<vtkDoubleArray> determinant, singularValues;
   if (jacobian)
   {
-    makeArray(determinant, "TransverseJacobian", 1, pointCount);
-    makeArray(singularValues, "TransverseJacobianSingularValues", 2, pointCount);
+    determinant = vtkRiemannNewArray<vtkDoubleArray>("TransverseJacobian", 1, pointCount);
+    singularValues =
+      vtkRiemannNewArray<vtkDoubleArray>("TransverseJacobianSingularValues", 2, pointCount);
   }
   vtkNew<vtkIntArray> seedIds, reasons;
   seedIds->SetName("SeedIds");
@@ -248,9 +268,9 @@ int vtkRiemannGeodesicTracer::RequestData(
   vtkIdType next = 0;
   vtkIdType line = 0;
   std::vector<vtkIdType> ids;
-  for (vtkIdType i = 0; i < traced; ++i)
+  for (vtkIdType i = 0; i < traces.Traced; ++i)
   {
-    const riemann::GeodesicPath& path = paths[i];
+    const riemann::GeodesicPath& path = traces.Paths[i];
     if (path.Points.size() < 2)
     {
       continue;
@@ -265,8 +285,8 @@ int vtkRiemannGeodesicTracer::RequestData(
       speedDrift->SetValue(next, path.SpeedDrift[k]);
       if (jacobian)
       {
-        determinant->SetValue(next, jacobians[i][k][0]);
-        singularValues->SetTypedTuple(next, jacobians[i][k].data() + 1);
+        determinant->SetValue(next, traces.Jacobians[i][k][0]);
+        singularValues->SetTypedTuple(next, traces.Jacobians[i][k].data() + 1);
       }
     }
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
@@ -288,6 +308,37 @@ int vtkRiemannGeodesicTracer::RequestData(
   }
   output->GetCellData()->AddArray(seedIds);
   output->GetCellData()->AddArray(reasons);
+}
+} // namespace
+
+// RequestData as named steps: GatherSeeds -> TraceInParallel ->
+// WarnAboutShortPaths -> BuildOutput (each in the anonymous namespace above).
+int vtkRiemannGeodesicTracer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
+  if (!metric)
+  {
+    return 1;
+  }
+  vtkDataSet* input =
+    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  std::vector<Seed> seeds;
+  const std::string error = GatherSeeds(this, input, seeds);
+  if (!error.empty())
+  {
+    this->ReportError(error);
+    return 1;
+  }
+  riemann::GeodesicOptions options = this->MakeGeodesicOptions();
+  options.UseBounds = this->UseDomainBounds;
+  std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
+  const Traces traces =
+    TraceInParallel(this, *metric, seeds, options, this->ComputeTransverseJacobian);
+  WarnAboutShortPaths(this, traces);
+  BuildOutput(seeds, traces, this->ComputeTransverseJacobian, output);
   return 1;
 }
 

@@ -33,13 +33,6 @@ double Uniform(std::uint32_t bits)
 {
   return (bits >> 8) * (1.0 / 16777216.0);
 }
-
-/// One ray of a tile: which pixel, which sample (-1: the pixel-centre ray).
-struct TileRay
-{
-  int Pixel;
-  int Sample;
-};
 } // namespace
 
 /// The exact geodesics of a diffeomorphism metric from the eye.
@@ -174,26 +167,34 @@ bool CPUTracer::ExactHit(const Vec3& v, Vec3& position, double& length) const
   return true;
 }
 
+// RenderTile as named steps: StartRays -> MarchWavefront -> GatherPixels.
 long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* image) const
 {
-  const Metric& metric = *this->MetricPointer;
-  const Scene& scene = *this->ScenePointer;
-  const CPUTracerSettings& settings = this->Settings;
-  const int samples = settings.SamplesPerPixel;
-  const int columns = x1 - x0;
-  const int rows = y1 - y0;
-  if (columns <= 0 || rows <= 0)
+  if (x1 - x0 <= 0 || y1 - y0 <= 0)
   {
     return 0;
   }
-  // Stratified jitter: samples in an nx x ny grid of cells of the pixel.
-  const int nx = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples))));
-  const int ny = (samples + nx - 1) / nx;
-
   std::vector<TileRay> rays;
   std::vector<RayMarcher> marchers;
+  this->StartRays(x0, y0, x1, y1, rays, marchers);
+  const long long steps = this->MarchWavefront(marchers);
+  this->GatherPixels(rays, marchers, image);
+  return steps;
+}
+
+// Step 1: every ray of the tile started at the eye, pixel by pixel: the
+// pixel-centre ray alone with one sample; with N > 1 the centre ray (for the
+// AOVs) then N rays through stratified jitter in an nx x ny grid of cells of
+// the pixel, hashed from Seed, pixel and sample (the same on any thread).
+void CPUTracer::StartRays(int x0, int y0, int x1, int y1, std::vector<TileRay>& rays,
+  std::vector<RayMarcher>& marchers) const
+{
+  const CPUTracerSettings& settings = this->Settings;
+  const int samples = settings.SamplesPerPixel;
+  const int nx = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples))));
+  const int ny = (samples + nx - 1) / nx;
   const int perPixel = samples > 1 ? samples + 1 : 1;
-  rays.reserve(static_cast<std::size_t>(columns) * rows * perPixel);
+  rays.reserve(static_cast<std::size_t>(x1 - x0) * (y1 - y0) * perPixel);
   marchers.reserve(rays.capacity());
   for (int row = y0; row < y1; ++row)
   {
@@ -217,9 +218,17 @@ long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* ima
       }
     }
   }
+}
 
-  // The wavefront: every live ray takes a step, then all segments are intersected.
-  const std::size_t count = rays.size();
+// Step 2: the wavefront. Every live ray takes a step, then all the new
+// segments go to Embree in one stream query and each is tested against the
+// analytic objects; the nearer hit wins, and rays that hit leave the front.
+// Returns the number of steps taken.
+long long CPUTracer::MarchWavefront(std::vector<RayMarcher>& marchers) const
+{
+  const Metric& metric = *this->MetricPointer;
+  const Scene& scene = *this->ScenePointer;
+  const std::size_t count = marchers.size();
   std::vector<std::size_t> live(count);
   for (std::size_t i = 0; i < count; ++i)
   {
@@ -250,8 +259,8 @@ long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* ima
     if (meshes)
     {
       meshHits.assign(stepped.size(), SceneHit());
-      this->Meshes->Intersect(
-        a.data(), b.data(), stepped.size(), meshHits.data(), meshFound.get(), settings.UseRayStreams);
+      this->Meshes->Intersect(a.data(), b.data(), stepped.size(), meshHits.data(), meshFound.get(),
+        this->Settings.UseRayStreams);
     }
     live.clear();
     for (std::size_t k = 0; k < stepped.size(); ++k)
@@ -275,9 +284,17 @@ long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* ima
       }
     }
   }
+  return steps;
+}
 
-  // Shade and gather: the colour is the mean of the samples (the centre ray
-  // alone with one sample); the centre ray gives the AOVs.
+// Step 3: shade and gather. The colour is the mean of the samples (the
+// centre ray alone with one sample); the centre ray gives the AOVs.
+void CPUTracer::GatherPixels(const std::vector<TileRay>& rays,
+  const std::vector<RayMarcher>& marchers, PixelResult* image) const
+{
+  const Metric& metric = *this->MetricPointer;
+  const Scene& scene = *this->ScenePointer;
+  const int samples = this->Settings.SamplesPerPixel;
   for (const TileRay& ray : rays)
   {
     for (float& c : image[ray.Pixel].Color)
@@ -286,7 +303,7 @@ long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* ima
     }
   }
   const double weight = 1.0 / samples;
-  for (std::size_t i = 0; i < count; ++i)
+  for (std::size_t i = 0; i < rays.size(); ++i)
   {
     const RayMarcher& ray = marchers[i];
     PixelResult& pixel = image[rays[i].Pixel];
@@ -300,41 +317,47 @@ long long CPUTracer::RenderTile(int x0, int y0, int x1, int y1, PixelResult* ima
         pixel.Color[c] += static_cast<float>(weight * color[c]);
       }
     }
-    if (!centre)
+    if (centre)
     {
-      continue;
-    }
-    // The pixel-centre ray: the arbitrary output variables.
-    const Vec3 position = ray.Position();
-    for (int c = 0; c < 3; ++c)
-    {
-      pixel.HitPosition[c] = ray.IsHit() ? static_cast<float>(position[c]) : NaN;
-    }
-    pixel.ArcLength = static_cast<float>(ray.Length());
-    pixel.Steps = ray.Steps();
-    pixel.Reason = ray.Reason();
-    const Vec3 velocity = ray.Velocity();
-    const double speed = metric.InnerProduct(position, velocity, velocity);
-    pixel.SpeedDrift = std::isfinite(speed) ? static_cast<float>(speed - 1.0) : NaN;
-    pixel.HitError = NaN;
-    if (settings.ComputeHitError && this->Reference)
-    {
-      const int column = rays[i].Pixel % settings.Width;
-      const int row = rays[i].Pixel / settings.Width;
-      Vec3 exactPosition;
-      double exactLength = 0.0;
-      const bool exactHit =
-        this->ExactHit(this->Direction(column + 0.5, row + 0.5), exactPosition, exactLength);
-      if (exactHit && ray.IsHit())
-      {
-        pixel.HitError = static_cast<float>((exactPosition - position).norm());
-      }
-      else if (exactHit != ray.IsHit())
-      {
-        pixel.HitError = std::numeric_limits<float>::infinity();
-      }
+      this->WriteCentreRay(ray, rays[i].Pixel, pixel);
     }
   }
-  return steps;
+}
+
+// The arbitrary output variables of a pixel-centre ray, and its distance to
+// the exact hit when ComputeHitError and the metric has an exact reference
+// (infinite when only one of them hits).
+void CPUTracer::WriteCentreRay(const RayMarcher& ray, int pixelIndex, PixelResult& pixel) const
+{
+  const CPUTracerSettings& settings = this->Settings;
+  const Vec3 position = ray.Position();
+  for (int c = 0; c < 3; ++c)
+  {
+    pixel.HitPosition[c] = ray.IsHit() ? static_cast<float>(position[c]) : NaN;
+  }
+  pixel.ArcLength = static_cast<float>(ray.Length());
+  pixel.Steps = ray.Steps();
+  pixel.Reason = ray.Reason();
+  const Vec3 velocity = ray.Velocity();
+  const double speed = this->MetricPointer->InnerProduct(position, velocity, velocity);
+  pixel.SpeedDrift = std::isfinite(speed) ? static_cast<float>(speed - 1.0) : NaN;
+  pixel.HitError = NaN;
+  if (settings.ComputeHitError && this->Reference)
+  {
+    const int column = pixelIndex % settings.Width;
+    const int row = pixelIndex / settings.Width;
+    Vec3 exactPosition;
+    double exactLength = 0.0;
+    const bool exactHit =
+      this->ExactHit(this->Direction(column + 0.5, row + 0.5), exactPosition, exactLength);
+    if (exactHit && ray.IsHit())
+    {
+      pixel.HitError = static_cast<float>((exactPosition - position).norm());
+    }
+    else if (exactHit != ray.IsHit())
+    {
+      pixel.HitError = std::numeric_limits<float>::infinity();
+    }
+  }
 }
 } // namespace riemann

@@ -35,10 +35,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace riemann
 {
 class EmbreeMeshIntersector;
+class RayMarcher;
 struct EnvironmentMap;
 
 /// One pixel of the CPU image: colour and arbitrary output variables (AOVs).
@@ -122,6 +124,22 @@ public:
 
 private:
   struct Exact;
+  /// One ray of a tile: which pixel, which sample (-1: the pixel-centre ray).
+  struct TileRay
+  {
+    int Pixel;
+    int Sample;
+  };
+
+  ///@{
+  /// RenderTile's steps, in order (RiemannCPUTracer.cxx says why each is one).
+  void StartRays(int x0, int y0, int x1, int y1, std::vector<TileRay>& rays,
+    std::vector<RayMarcher>& marchers) const;
+  long long MarchWavefront(std::vector<RayMarcher>& marchers) const;
+  void GatherPixels(const std::vector<TileRay>& rays, const std::vector<RayMarcher>& marchers,
+    PixelResult* image) const;
+  void WriteCentreRay(const RayMarcher& ray, int pixelIndex, PixelResult& pixel) const;
+  ///@}
   std::shared_ptr<const Metric> MetricPointer;
   std::shared_ptr<const Scene> ScenePointer;
   std::shared_ptr<const EnvironmentMap> Environment;

@@ -7,6 +7,7 @@
 #include "RiemannShading.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannNewArray.h"
 #include "vtkRiemannObserverSettings.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkRiemannScene.h"
@@ -140,26 +141,6 @@ int vtkRiemannCPURayTracer::RequestInformation(
   vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 3);
   return 1;
 }
-
-namespace
-{
-vtkSmartPointer<vtkFloatArray> NewFloatArray(const char* name, int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
-vtkSmartPointer<vtkIntArray> NewIntArray(const char* name, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkIntArray>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-} // namespace
 
 int vtkRiemannCPURayTracer::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
@@ -338,13 +319,14 @@ void vtkRiemannCPURayTracer::FillOutput(vtkImageData* output)
   output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
   output->SetSpacing(1, 1, 1);
   output->SetOrigin(0, 0, 0);
-  auto color = NewFloatArray("Color", 3, n);
-  auto hitPosition = NewFloatArray("HitPosition", 3, n);
-  auto arcLength = NewFloatArray("ArcLength", 1, n);
-  auto stepCount = NewIntArray("Steps", n);
-  auto reason = NewIntArray("ReasonForTermination", n);
-  auto drift = NewFloatArray("SpeedDrift", 1, n);
-  auto hitError = this->HitErrorComputed ? NewFloatArray("HitError", 1, n) : nullptr;
+  auto color = vtkRiemannNewArray<vtkFloatArray>("Color", 3, n);
+  auto hitPosition = vtkRiemannNewArray<vtkFloatArray>("HitPosition", 3, n);
+  auto arcLength = vtkRiemannNewArray<vtkFloatArray>("ArcLength", 1, n);
+  auto stepCount = vtkRiemannNewArray<vtkIntArray>("Steps", 1, n);
+  auto reason = vtkRiemannNewArray<vtkIntArray>("ReasonForTermination", 1, n);
+  auto drift = vtkRiemannNewArray<vtkFloatArray>("SpeedDrift", 1, n);
+  auto hitError =
+    this->HitErrorComputed ? vtkRiemannNewArray<vtkFloatArray>("HitError", 1, n) : nullptr;
   const std::vector<riemann::PixelResult>& pixels = this->Internals->Pixels;
   for (vtkIdType i = 0; i < n; ++i)
   {

@@ -1,10 +1,10 @@
 #include "vtkRiemannRayBundle.h"
 
 #include "ObserverCamera.h"
-#include "RiemannShading.h"
 #include "RiemannEmbreeMeshIntersector.h"
 #include "RiemannRay.h"
 #include "RiemannScene.h"
+#include "RiemannShading.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -17,9 +17,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannNewArray.h"
 #include "vtkRiemannObserverSettings.h"
 #include "vtkRiemannScene.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -27,6 +29,8 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannRayBundle);
@@ -63,6 +67,100 @@ vtkMTimeType vtkRiemannRayBundle::GetMTime()
   return time;
 }
 
+namespace
+{
+using Pixel = std::pair<int, int>;
+
+/// Step 2 of RequestData: every ray of the bundle traced from the eye through
+/// its pixel in parallel, stopping at the scene's objects and, through
+/// Embree, its meshes (`meshes` null when it has none).
+std::vector<riemann::RayPath> TraceRays(const riemann::Metric& metric, const riemann::Scene& scene,
+  const riemann::ObserverCamera& camera, const riemann::Vec3& eye, const riemann::RaySettings& rays,
+  const std::vector<Pixel>& pixels, int width, int height,
+  const riemann::EmbreeMeshIntersector* meshes)
+{
+  std::vector<riemann::RayPath> paths(pixels.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType k = first; k < last; ++k)
+      {
+        const riemann::Vec3 v =
+          camera.PixelDirection(pixels[k].first, pixels[k].second, width, height);
+        riemann::TraceRay(metric, scene, eye, v, rays, paths[k], true, meshes);
+      }
+    });
+  return paths;
+}
+
+/// Step 3: one polyline per ray with ArcLength per point, and per line
+/// PixelIndex, Hit, HitPosition (NaN for a miss), EndColor (the surface's
+/// colour, or the background), Length and ReasonForTermination.
+void BuildOutput(const std::vector<riemann::RayPath>& paths, const std::vector<Pixel>& pixels,
+  const riemann::Scene& scene, vtkPolyData* output)
+{
+  vtkIdType pointCount = 0;
+  for (const riemann::RayPath& path : paths)
+  {
+    pointCount += static_cast<vtkIdType>(path.Points.size());
+  }
+  const vtkIdType lineCount = static_cast<vtkIdType>(paths.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(pointCount);
+  vtkNew<vtkCellArray> lines;
+  lines->AllocateExact(lineCount, pointCount);
+  auto arcLength = vtkRiemannNewArray<vtkDoubleArray>("ArcLength", 1, pointCount);
+  auto pixelIndex = vtkRiemannNewArray<vtkIntArray>("PixelIndex", 2, lineCount);
+  auto hit = vtkRiemannNewArray<vtkIntArray>("Hit", 1, lineCount);
+  auto hitPosition = vtkRiemannNewArray<vtkDoubleArray>("HitPosition", 3, lineCount);
+  auto endColor = vtkRiemannNewArray<vtkUnsignedCharArray>("EndColor", 3, lineCount);
+  auto length = vtkRiemannNewArray<vtkDoubleArray>("Length", 1, lineCount);
+  auto reason = vtkRiemannNewArray<vtkIntArray>("ReasonForTermination", 1, lineCount);
+
+  vtkIdType next = 0;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType k = 0; k < lineCount; ++k)
+  {
+    const riemann::RayPath& path = paths[k];
+    ids.resize(path.Points.size());
+    for (size_t i = 0; i < path.Points.size(); ++i, ++next)
+    {
+      ids[i] = next;
+      points->SetPoint(next, path.Points[i].data());
+      arcLength->SetValue(next, path.ArcLength[i]);
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    pixelIndex->SetTypedComponent(k, 0, pixels[k].first);
+    pixelIndex->SetTypedComponent(k, 1, pixels[k].second);
+    hit->SetValue(k, path.Hit ? 1 : 0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const riemann::Vec3 position = path.Hit ? path.HitInfo.Position : riemann::Vec3(nan, nan, nan);
+    hitPosition->SetTypedTuple(k, position.data());
+    const riemann::Vec3 color =
+      path.Hit ? riemann::SurfaceColor(scene, path.HitInfo) : scene.Background;
+    for (int c = 0; c < 3; ++c)
+    {
+      endColor->SetTypedComponent(
+        k, c, static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
+    }
+    length->SetValue(k, path.Length);
+    reason->SetValue(k, path.Reason);
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(arcLength);
+  for (vtkDataArray* array :
+    std::initializer_list<vtkDataArray*>{ pixelIndex, hit, hitPosition, endColor, length, reason })
+  {
+    output->GetCellData()->AddArray(array);
+  }
+  output->GetCellData()->SetScalars(endColor);
+}
+} // namespace
+
+// RequestData as named steps: the scene, camera and meshes -> SelectPixels ->
+// TraceRays -> BuildOutput.
 int vtkRiemannRayBundle::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -77,11 +175,12 @@ int vtkRiemannRayBundle::RequestData(
     ? this->Scene->GetSceneSnapshot()
     : std::make_shared<const riemann::Scene>(riemann::DefaultScene());
 
-  // The camera, projection and integration follow the pass's rules.
-  const riemann::CameraSettings settings = vtkRiemannCameraSettings(this->Camera,
-    static_cast<double>(this->Width) / this->Height,
-    scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera,
-    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
+  // Step 1: the camera, projection and integration follow the pass's rules;
+  // mesh objects (the CPU tracer's) stop the rays here too, through Embree.
+  const riemann::CameraSettings settings =
+    vtkRiemannCameraSettings(this->Camera, static_cast<double>(this->Width) / this->Height,
+      scene->HasCamera ? scene->Camera : riemann::DefaultScene().Camera,
+      vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
   std::unique_ptr<riemann::ObserverCamera> camera;
   try
   {
@@ -89,15 +188,36 @@ int vtkRiemannRayBundle::RequestData(
   }
   catch (const std::runtime_error& e)
   {
-    vtkErrorMacro(<< "Bad camera: " << e.what());
+    this->ReportError(std::string("Bad camera: ") + e.what());
     return 1;
   }
-
   const riemann::RaySettings rays =
     vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
+  std::unique_ptr<riemann::EmbreeMeshIntersector> meshes;
+  if (scene->HasMeshes())
+  {
+    try
+    {
+      meshes = std::make_unique<riemann::EmbreeMeshIntersector>(*scene);
+    }
+    catch (const std::runtime_error& e)
+    {
+      this->ReportError(std::string("The scene's meshes: ") + e.what());
+      return 1;
+    }
+  }
 
-  // The pixels: an N x N sub-grid (block centres), or a strided region.
-  std::vector<std::pair<int, int>> pixels;
+  std::vector<Pixel> pixels;
+  this->SelectPixels(pixels);
+  const std::vector<riemann::RayPath> paths = TraceRays(*metric, *scene, *camera, settings.Position,
+    rays, pixels, this->Width, this->Height, meshes.get());
+  this->UpdateProgress(1.0);
+  BuildOutput(paths, pixels, *scene, output);
+  return 1;
+}
+
+void vtkRiemannRayBundle::SelectPixels(std::vector<std::pair<int, int>>& pixels) const
+{
   if (this->UsePixelRegion)
   {
     const int c0 = std::max(0, std::min(this->PixelRegion[0], this->PixelRegion[1]));
@@ -125,111 +245,6 @@ int vtkRiemannRayBundle::RequestData(
       }
     }
   }
-
-  // Mesh objects (the CPU tracer's) stop the rays here too, through Embree.
-  std::unique_ptr<riemann::EmbreeMeshIntersector> meshes;
-  if (scene->HasMeshes())
-  {
-    try
-    {
-      meshes = std::make_unique<riemann::EmbreeMeshIntersector>(*scene);
-    }
-    catch (const std::runtime_error& e)
-    {
-      vtkErrorMacro(<< "The scene's meshes: " << e.what());
-      return 1;
-    }
-  }
-
-  std::vector<riemann::RayPath> paths(pixels.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()),
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType k = first; k < last; ++k)
-      {
-        const riemann::Vec3 v =
-          camera->PixelDirection(pixels[k].first, pixels[k].second, this->Width, this->Height);
-        riemann::TraceRay(
-          *metric, *scene, settings.Position, v, rays, paths[k], true, meshes.get());
-      }
-    });
-  this->UpdateProgress(1.0);
-
-  vtkIdType pointCount = 0;
-  for (const riemann::RayPath& path : paths)
-  {
-    pointCount += static_cast<vtkIdType>(path.Points.size());
-  }
-  const vtkIdType lineCount = static_cast<vtkIdType>(paths.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(pointCount);
-  vtkNew<vtkCellArray> lines;
-  lines->AllocateExact(lineCount, pointCount);
-  vtkNew<vtkDoubleArray> arcLength;
-  arcLength->SetName("ArcLength");
-  arcLength->SetNumberOfTuples(pointCount);
-  vtkNew<vtkIntArray> pixelIndex;
-  pixelIndex->SetName("PixelIndex");
-  pixelIndex->SetNumberOfComponents(2);
-  pixelIndex->SetNumberOfTuples(lineCount);
-  vtkNew<vtkIntArray> hit;
-  hit->SetName("Hit");
-  hit->SetNumberOfTuples(lineCount);
-  vtkNew<vtkDoubleArray> hitPosition;
-  hitPosition->SetName("HitPosition");
-  hitPosition->SetNumberOfComponents(3);
-  hitPosition->SetNumberOfTuples(lineCount);
-  vtkNew<vtkUnsignedCharArray> endColor;
-  endColor->SetName("EndColor");
-  endColor->SetNumberOfComponents(3);
-  endColor->SetNumberOfTuples(lineCount);
-  vtkNew<vtkDoubleArray> length;
-  length->SetName("Length");
-  length->SetNumberOfTuples(lineCount);
-  vtkNew<vtkIntArray> reason;
-  reason->SetName("ReasonForTermination");
-  reason->SetNumberOfTuples(lineCount);
-
-  vtkIdType next = 0;
-  std::vector<vtkIdType> ids;
-  for (vtkIdType k = 0; k < lineCount; ++k)
-  {
-    const riemann::RayPath& path = paths[k];
-    ids.resize(path.Points.size());
-    for (size_t i = 0; i < path.Points.size(); ++i, ++next)
-    {
-      ids[i] = next;
-      points->SetPoint(next, path.Points[i].data());
-      arcLength->SetValue(next, path.ArcLength[i]);
-    }
-    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    pixelIndex->SetTypedComponent(k, 0, pixels[k].first);
-    pixelIndex->SetTypedComponent(k, 1, pixels[k].second);
-    hit->SetValue(k, path.Hit ? 1 : 0);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const riemann::Vec3 position = path.Hit ? path.HitInfo.Position : riemann::Vec3(nan, nan, nan);
-    hitPosition->SetTypedTuple(k, position.data());
-    const riemann::Vec3 color =
-      path.Hit ? riemann::SurfaceColor(*scene, path.HitInfo) : scene->Background;
-    for (int c = 0; c < 3; ++c)
-    {
-      endColor->SetTypedComponent(
-        k, c, static_cast<unsigned char>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0))));
-    }
-    length->SetValue(k, path.Length);
-    reason->SetValue(k, path.Reason);
-  }
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetPointData()->AddArray(arcLength);
-  for (vtkDataArray* array :
-    std::initializer_list<vtkDataArray*>{ pixelIndex, hit, hitPosition, endColor, length, reason })
-  {
-    output->GetCellData()->AddArray(array);
-  }
-  output->GetCellData()->SetScalars(endColor);
-  return 1;
 }
 
 void vtkRiemannRayBundle::PrintSelf(ostream& os, vtkIndent indent)

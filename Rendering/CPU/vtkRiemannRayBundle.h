@@ -33,6 +33,9 @@
 #include "RiemannRenderingCPUModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
 
+#include <utility> // For SelectPixels
+#include <vector>  // For SelectPixels
+
 class vtkCamera;
 class vtkRiemannScene;
 
@@ -102,6 +105,8 @@ protected:
   ~vtkRiemannRayBundle() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// The integration settings are checked only when they apply (UseSceneSettings off).
+  bool UsesIntegrationSettings() const override { return !this->UseSceneSettings; }
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
@@ -117,6 +122,10 @@ protected:
   bool UseSceneSettings = true;
 
 private:
+  /// The bundle's pixels, (column, row): the strided PixelRegion when
+  /// UsePixelRegion, else the centres of a SubgridResolution^2 grid of blocks.
+  void SelectPixels(std::vector<std::pair<int, int>>& pixels) const;
+
   vtkRiemannRayBundle(const vtkRiemannRayBundle&) = delete;
   void operator=(const vtkRiemannRayBundle&) = delete;
 };

@@ -365,7 +365,165 @@ bool IsMeshExtension(std::string extension)
   return extension == ".vtp" || extension == ".ply" || extension == ".obj" || extension == ".stl";
 }
 
-SceneObject ParseObject(const Json& object, const std::string& path, const std::string& baseDirectory)
+// ParseObject's steps: one parser per object type. Each checks the object's
+// keys, fills `result` and sets [lo, hi], the box that a "position" material
+// spans by default.
+
+/// A "grid": the paper's lattice of bars unless told otherwise.
+void ParseGrid(const Json& object, const std::string& path, SceneObject& result, Vec3& lo, Vec3& hi)
+{
+  CheckKeys(object, path, { "type", "spacing", "thickness", "extent", "material" });
+  result.Type = ObjectType::Grid;
+  // The paper's grid unless told otherwise.
+  result.Spacing = 1.0;
+  result.Thickness = 0.06;
+  const double paperExtent[6] = { -4, 4, -4, 4, -4, 4 };
+  std::copy(paperExtent, paperExtent + 6, result.Extent);
+  if (object.contains("spacing"))
+  {
+    result.Spacing = Positive(object.at("spacing"), path + ".spacing");
+  }
+  if (object.contains("thickness"))
+  {
+    result.Thickness = Positive(object.at("thickness"), path + ".thickness");
+  }
+  if (!(result.Thickness < result.Spacing))
+  {
+    Fail(path + ".thickness",
+      "must be less than the spacing (" + Json(result.Thickness).dump() +
+        " >= " + Json(result.Spacing).dump() + "): the bars would fill space");
+  }
+  if (object.contains("extent"))
+  {
+    Bounds(object.at("extent"), path + ".extent", false, result.Extent);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double lines = (result.Extent[2 * axis + 1] - result.Extent[2 * axis]) / result.Spacing;
+    if (!(lines <= MaximumLatticeLines))
+    {
+      Fail(path + ".spacing",
+        std::string("the extent holds more than ") +
+          std::to_string(static_cast<int>(MaximumLatticeLines)) + " lattice lines along " +
+          AxisName(axis) + "; use a larger spacing or a smaller extent");
+    }
+  }
+  lo = Vec3(result.Extent[0], result.Extent[2], result.Extent[4]);
+  hi = Vec3(result.Extent[1], result.Extent[3], result.Extent[5]);
+}
+
+void ParseSphere(
+  const Json& object, const std::string& path, SceneObject& result, Vec3& lo, Vec3& hi)
+{
+  CheckKeys(object, path, { "type", "center", "radius", "material" });
+  result.Type = ObjectType::Sphere;
+  result.A = Vector(Required(object, "center", path), path + ".center");
+  result.Radius = Positive(Required(object, "radius", path), path + ".radius");
+  lo = result.A - Vec3::Constant(result.Radius);
+  hi = result.A + Vec3::Constant(result.Radius);
+}
+
+/// A "plane": a point and a unit normal; the material spans [-5, 5]^3.
+void ParsePlane(
+  const Json& object, const std::string& path, SceneObject& result, Vec3& lo, Vec3& hi)
+{
+  CheckKeys(object, path, { "type", "point", "normal", "material" });
+  result.Type = ObjectType::Plane;
+  result.A = Vector(Required(object, "point", path), path + ".point");
+  const Vec3 normal = Vector(Required(object, "normal", path), path + ".normal");
+  const double length = normal.norm();
+  if (!(length > 0) || !std::isfinite(length))
+  {
+    Fail(path + ".normal", "expected a non-zero vector");
+  }
+  result.B = normal / length;
+  lo = Vec3::Constant(-5);
+  hi = Vec3::Constant(5);
+}
+
+void ParseBox(const Json& object, const std::string& path, SceneObject& result, Vec3& lo, Vec3& hi)
+{
+  CheckKeys(object, path, { "type", "min", "max", "material" });
+  result.Type = ObjectType::Box;
+  result.A = Vector(Required(object, "min", path), path + ".min");
+  result.B = Vector(Required(object, "max", path), path + ".max");
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (result.A[axis] > result.B[axis])
+    {
+      Fail(path,
+        std::string("min > max on ") + AxisName(axis) + " (" + object.at("min")[axis].dump() +
+          " > " + object.at("max")[axis].dump() + ")");
+    }
+  }
+  lo = result.A;
+  hi = result.B;
+}
+
+/// A "mesh": a file the VTK layer reads (checked to exist here), and how to
+/// colour it by one of its point arrays.
+void ParseMesh(const Json& object, const std::string& path, const std::string& baseDirectory,
+  SceneObject& result, Vec3& lo, Vec3& hi)
+{
+  CheckKeys(
+    object, path, { "type", "file", "material", "color_array", "color_map", "color_range" });
+  result.Type = ObjectType::Mesh;
+  const std::string filePath = path + ".file";
+  const std::string name = String(Required(object, "file", path), filePath);
+  const std::filesystem::path file = Resolve(name, baseDirectory);
+  if (!IsMeshExtension(file.extension().string()))
+  {
+    Fail(filePath,
+      "unknown mesh format \"" + file.extension().string() + "\" of \"" + name +
+        "\"; expected .vtp, .ply, .obj or .stl");
+  }
+  std::error_code error;
+  if (name.empty() || !std::filesystem::is_regular_file(file, error))
+  {
+    Fail(filePath, "mesh file \"" + name + "\" not found (looked for " + file.string() + ")");
+  }
+  result.MeshFile = file.string();
+  if (object.contains("color_array"))
+  {
+    result.ColorArray = String(object.at("color_array"), path + ".color_array");
+  }
+  if (object.contains("color_map"))
+  {
+    result.ColorMap = String(object.at("color_map"), path + ".color_map");
+    if (result.ColorMap != "cool-to-warm" && result.ColorMap != "viridis" &&
+      result.ColorMap != "grayscale" && result.ColorMap != "rainbow")
+    {
+      Fail(path + ".color_map",
+        "unknown colour map \"" + result.ColorMap +
+          "\"; expected \"cool-to-warm\", \"viridis\", \"grayscale\" or \"rainbow\"");
+    }
+  }
+  if (object.contains("color_range"))
+  {
+    const Json& range = object.at("color_range");
+    const std::string rangePath = path + ".color_range";
+    if (!range.is_array() || range.size() != 2)
+    {
+      Fail(rangePath, "expected [min, max], got " + Describe(range));
+    }
+    result.ColorRange[0] = Number(range[0], rangePath + "[0]");
+    result.ColorRange[1] = Number(range[1], rangePath + "[1]");
+    if (!(result.ColorRange[0] < result.ColorRange[1]))
+    {
+      Fail(rangePath, "expected min < max, got " + range.dump());
+    }
+    result.HasColorRange = true;
+  }
+  result.HasMaterialBounds = object.contains("material") && object.at("material").is_object() &&
+    object.at("material").contains("bounds");
+  // Placeholder bounds until the triangles are known (SetMesh).
+  lo = Vec3::Constant(-1);
+  hi = Vec3::Constant(1);
+}
+
+/// One entry of "objects": its type's parser, then its material.
+SceneObject ParseObject(
+  const Json& object, const std::string& path, const std::string& baseDirectory)
 {
   if (!object.is_object())
   {
@@ -377,143 +535,23 @@ SceneObject ParseObject(const Json& object, const std::string& path, const std::
   Vec3 hi;
   if (type == "grid")
   {
-    CheckKeys(object, path, { "type", "spacing", "thickness", "extent", "material" });
-    result.Type = ObjectType::Grid;
-    // The paper's grid unless told otherwise.
-    result.Spacing = 1.0;
-    result.Thickness = 0.06;
-    const double paperExtent[6] = { -4, 4, -4, 4, -4, 4 };
-    std::copy(paperExtent, paperExtent + 6, result.Extent);
-    if (object.contains("spacing"))
-    {
-      result.Spacing = Positive(object.at("spacing"), path + ".spacing");
-    }
-    if (object.contains("thickness"))
-    {
-      result.Thickness = Positive(object.at("thickness"), path + ".thickness");
-    }
-    if (!(result.Thickness < result.Spacing))
-    {
-      Fail(path + ".thickness",
-        "must be less than the spacing (" + Json(result.Thickness).dump() +
-          " >= " + Json(result.Spacing).dump() + "): the bars would fill space");
-    }
-    if (object.contains("extent"))
-    {
-      Bounds(object.at("extent"), path + ".extent", false, result.Extent);
-    }
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      const double lines = (result.Extent[2 * axis + 1] - result.Extent[2 * axis]) / result.Spacing;
-      if (!(lines <= MaximumLatticeLines))
-      {
-        Fail(path + ".spacing",
-          std::string("the extent holds more than ") +
-            std::to_string(static_cast<int>(MaximumLatticeLines)) + " lattice lines along " +
-            AxisName(axis) + "; use a larger spacing or a smaller extent");
-      }
-    }
-    lo = Vec3(result.Extent[0], result.Extent[2], result.Extent[4]);
-    hi = Vec3(result.Extent[1], result.Extent[3], result.Extent[5]);
+    ParseGrid(object, path, result, lo, hi);
   }
   else if (type == "sphere")
   {
-    CheckKeys(object, path, { "type", "center", "radius", "material" });
-    result.Type = ObjectType::Sphere;
-    result.A = Vector(Required(object, "center", path), path + ".center");
-    result.Radius = Positive(Required(object, "radius", path), path + ".radius");
-    lo = result.A - Vec3::Constant(result.Radius);
-    hi = result.A + Vec3::Constant(result.Radius);
+    ParseSphere(object, path, result, lo, hi);
   }
   else if (type == "plane")
   {
-    CheckKeys(object, path, { "type", "point", "normal", "material" });
-    result.Type = ObjectType::Plane;
-    result.A = Vector(Required(object, "point", path), path + ".point");
-    const Vec3 normal = Vector(Required(object, "normal", path), path + ".normal");
-    const double length = normal.norm();
-    if (!(length > 0) || !std::isfinite(length))
-    {
-      Fail(path + ".normal", "expected a non-zero vector");
-    }
-    result.B = normal / length;
-    lo = Vec3::Constant(-5);
-    hi = Vec3::Constant(5);
+    ParsePlane(object, path, result, lo, hi);
   }
   else if (type == "box")
   {
-    CheckKeys(object, path, { "type", "min", "max", "material" });
-    result.Type = ObjectType::Box;
-    result.A = Vector(Required(object, "min", path), path + ".min");
-    result.B = Vector(Required(object, "max", path), path + ".max");
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      if (result.A[axis] > result.B[axis])
-      {
-        Fail(path,
-          std::string("min > max on ") + AxisName(axis) + " (" + object.at("min")[axis].dump() +
-            " > " + object.at("max")[axis].dump() + ")");
-      }
-    }
-    lo = result.A;
-    hi = result.B;
+    ParseBox(object, path, result, lo, hi);
   }
   else if (type == "mesh")
   {
-    CheckKeys(object, path,
-      { "type", "file", "material", "color_array", "color_map", "color_range" });
-    result.Type = ObjectType::Mesh;
-    const std::string filePath = path + ".file";
-    const std::string name = String(Required(object, "file", path), filePath);
-    const std::filesystem::path file = Resolve(name, baseDirectory);
-    if (!IsMeshExtension(file.extension().string()))
-    {
-      Fail(filePath,
-        "unknown mesh format \"" + file.extension().string() + "\" of \"" + name +
-          "\"; expected .vtp, .ply, .obj or .stl");
-    }
-    std::error_code error;
-    if (name.empty() || !std::filesystem::is_regular_file(file, error))
-    {
-      Fail(filePath, "mesh file \"" + name + "\" not found (looked for " + file.string() + ")");
-    }
-    result.MeshFile = file.string();
-    if (object.contains("color_array"))
-    {
-      result.ColorArray = String(object.at("color_array"), path + ".color_array");
-    }
-    if (object.contains("color_map"))
-    {
-      result.ColorMap = String(object.at("color_map"), path + ".color_map");
-      if (result.ColorMap != "cool-to-warm" && result.ColorMap != "viridis" &&
-        result.ColorMap != "grayscale" && result.ColorMap != "rainbow")
-      {
-        Fail(path + ".color_map",
-          "unknown colour map \"" + result.ColorMap +
-            "\"; expected \"cool-to-warm\", \"viridis\", \"grayscale\" or \"rainbow\"");
-      }
-    }
-    if (object.contains("color_range"))
-    {
-      const Json& range = object.at("color_range");
-      const std::string rangePath = path + ".color_range";
-      if (!range.is_array() || range.size() != 2)
-      {
-        Fail(rangePath, "expected [min, max], got " + Describe(range));
-      }
-      result.ColorRange[0] = Number(range[0], rangePath + "[0]");
-      result.ColorRange[1] = Number(range[1], rangePath + "[1]");
-      if (!(result.ColorRange[0] < result.ColorRange[1]))
-      {
-        Fail(rangePath, "expected min < max, got " + range.dump());
-      }
-      result.HasColorRange = true;
-    }
-    result.HasMaterialBounds = object.contains("material") &&
-      object.at("material").is_object() && object.at("material").contains("bounds");
-    // Placeholder bounds until the triangles are known (SetMesh).
-    lo = Vec3::Constant(-1);
-    hi = Vec3::Constant(1);
+    ParseMesh(object, path, baseDirectory, result, lo, hi);
   }
   else
   {

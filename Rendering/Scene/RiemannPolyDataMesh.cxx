@@ -108,19 +108,15 @@ std::string ArrayNames(vtkPointData* data)
   }
   return names.empty() ? "none" : names;
 }
-} // namespace
 
-std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColoring& coloring)
+// MeshFromPolyData's steps: TriangulatedSurface -> CopyGeometry ->
+// ColorByArray or CopyRgbColors -> CheckMesh.
+
+/// The surface as triangles (polygons and strips split; vertices and lines
+/// dropped) with point normals: the data's own, else computed smooth across
+/// faces and split at sharp edges (a cube stays a cube).
+vtkSmartPointer<vtkPolyData> TriangulatedSurface(vtkPolyData* data)
 {
-  if (!data)
-  {
-    throw SceneDefinitionError("no mesh (null vtkPolyData)");
-  }
-  if (data->GetNumberOfPolys() + data->GetNumberOfStrips() == 0)
-  {
-    throw SceneDefinitionError("the mesh has no triangles (" +
-      std::to_string(data->GetNumberOfPoints()) + " points, no polygons or strips)");
-  }
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(data);
   triangles->PassVertsOff();
@@ -140,22 +136,25 @@ std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColo
     last = normals.Get();
   }
   last->Update();
-  vtkPolyData* surface = last->GetOutput();
+  return last->GetOutput();
+}
 
-  auto mesh = std::make_shared<TriangleMesh>();
+/// The points, the triangles and the point normals (when there are), as floats.
+void CopyGeometry(vtkPolyData* surface, TriangleMesh& mesh)
+{
   const vtkIdType points = surface->GetNumberOfPoints();
-  mesh->Points.resize(3 * static_cast<std::size_t>(points));
+  mesh.Points.resize(3 * static_cast<std::size_t>(points));
   for (vtkIdType i = 0; i < points; ++i)
   {
     double p[3];
     surface->GetPoint(i, p);
     for (int c = 0; c < 3; ++c)
     {
-      mesh->Points[3 * i + c] = static_cast<float>(p[c]);
+      mesh.Points[3 * i + c] = static_cast<float>(p[c]);
     }
   }
   vtkCellArray* polys = surface->GetPolys();
-  mesh->Triangles.reserve(3 * static_cast<std::size_t>(polys->GetNumberOfCells()));
+  mesh.Triangles.reserve(3 * static_cast<std::size_t>(polys->GetNumberOfCells()));
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
@@ -164,81 +163,114 @@ std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColo
     {
       for (int k = 0; k < 3; ++k)
       {
-        mesh->Triangles.push_back(static_cast<unsigned int>(ids[k]));
+        mesh.Triangles.push_back(static_cast<unsigned int>(ids[k]));
       }
     }
   }
   if (vtkDataArray* pointNormals = surface->GetPointData()->GetNormals())
   {
-    mesh->Normals.resize(mesh->Points.size());
+    mesh.Normals.resize(mesh.Points.size());
     for (vtkIdType i = 0; i < points; ++i)
     {
       double v[3];
       pointNormals->GetTuple(i, v);
       for (int c = 0; c < 3; ++c)
       {
-        mesh->Normals[3 * i + c] = static_cast<float>(v[c]);
+        mesh.Normals[3 * i + c] = static_cast<float>(v[c]);
       }
     }
   }
+}
 
-  vtkPointData* pointData = surface->GetPointData();
+/// Colours from the point array `coloring.Array` (its magnitude when it has
+/// several components) through the colour map, over coloring.Range or the
+/// array's own range. Throws when the surface has no such array.
+void ColorByArray(vtkPointData* pointData, const MeshColoring& coloring, TriangleMesh& mesh)
+{
+  vtkDataArray* values = pointData->GetArray(coloring.Array.c_str());
+  if (!values)
+  {
+    throw SceneDefinitionError("the mesh has no point array \"" + coloring.Array +
+      "\" to colour by (its point arrays: " + ArrayNames(pointData) + ")");
+  }
+  const int components = values->GetNumberOfComponents();
+  double range[2] = { coloring.Range[0], coloring.Range[1] };
+  if (!coloring.HasRange)
+  {
+    values->GetRange(range, components == 1 ? 0 : -1);
+  }
+  if (!(range[1] > range[0]))
+  {
+    range[1] = range[0] + 1.0; // a constant array: one colour
+  }
+  auto map = ColorMap(coloring.ColorMap, range[0], range[1]);
+  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  mesh.Colors.resize(mesh.Points.size());
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double value = 0.0;
+    if (components == 1)
+    {
+      value = values->GetComponent(i, 0);
+    }
+    else
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        value += values->GetComponent(i, c) * values->GetComponent(i, c);
+      }
+      value = std::sqrt(value);
+    }
+    double rgb[3];
+    map->GetColor(value, rgb);
+    for (int c = 0; c < 3; ++c)
+    {
+      mesh.Colors[3 * i + c] = static_cast<float>(rgb[c]);
+    }
+  }
+}
+
+/// Colours from the surface's own RGB(A) unsigned-char scalars, when it has them.
+void CopyRgbColors(vtkPointData* pointData, TriangleMesh& mesh)
+{
+  auto* rgb = vtkUnsignedCharArray::SafeDownCast(pointData->GetScalars());
+  if (!rgb || rgb->GetNumberOfComponents() < 3)
+  {
+    return;
+  }
+  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  mesh.Colors.resize(mesh.Points.size());
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mesh.Colors[3 * i + c] = rgb->GetTypedComponent(i, c) / 255.0f;
+    }
+  }
+}
+} // namespace
+
+std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColoring& coloring)
+{
+  if (!data)
+  {
+    throw SceneDefinitionError("no mesh (null vtkPolyData)");
+  }
+  if (data->GetNumberOfPolys() + data->GetNumberOfStrips() == 0)
+  {
+    throw SceneDefinitionError("the mesh has no triangles (" +
+      std::to_string(data->GetNumberOfPoints()) + " points, no polygons or strips)");
+  }
+  const vtkSmartPointer<vtkPolyData> surface = TriangulatedSurface(data);
+  auto mesh = std::make_shared<TriangleMesh>();
+  CopyGeometry(surface, *mesh);
   if (!coloring.Array.empty())
   {
-    vtkDataArray* values = pointData->GetArray(coloring.Array.c_str());
-    if (!values)
-    {
-      throw SceneDefinitionError("the mesh has no point array \"" + coloring.Array +
-        "\" to colour by (its point arrays: " + ArrayNames(pointData) + ")");
-    }
-    const int components = values->GetNumberOfComponents();
-    double range[2] = { coloring.Range[0], coloring.Range[1] };
-    if (!coloring.HasRange)
-    {
-      values->GetRange(range, components == 1 ? 0 : -1);
-    }
-    if (!(range[1] > range[0]))
-    {
-      range[1] = range[0] + 1.0; // a constant array: one colour
-    }
-    auto map = ColorMap(coloring.ColorMap, range[0], range[1]);
-    mesh->Colors.resize(mesh->Points.size());
-    for (vtkIdType i = 0; i < points; ++i)
-    {
-      double value = 0.0;
-      if (components == 1)
-      {
-        value = values->GetComponent(i, 0);
-      }
-      else
-      {
-        for (int c = 0; c < components; ++c)
-        {
-          value += values->GetComponent(i, c) * values->GetComponent(i, c);
-        }
-        value = std::sqrt(value);
-      }
-      double rgb[3];
-      map->GetColor(value, rgb);
-      for (int c = 0; c < 3; ++c)
-      {
-        mesh->Colors[3 * i + c] = static_cast<float>(rgb[c]);
-      }
-    }
+    ColorByArray(surface->GetPointData(), coloring, *mesh);
   }
-  else if (auto* rgb = vtkUnsignedCharArray::SafeDownCast(pointData->GetScalars()))
+  else
   {
-    if (rgb->GetNumberOfComponents() >= 3)
-    {
-      mesh->Colors.resize(mesh->Points.size());
-      for (vtkIdType i = 0; i < points; ++i)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          mesh->Colors[3 * i + c] = rgb->GetTypedComponent(i, c) / 255.0f;
-        }
-      }
-    }
+    CopyRgbColors(surface->GetPointData(), *mesh);
   }
   const std::string problem = CheckMesh(*mesh);
   if (!problem.empty())

@@ -92,6 +92,41 @@ void AddPiece(
 
 namespace
 {
+/// A grid object as one box per bar: bars parallel to axis a through the
+/// lattice lines of the other two axes, clipped to the extent.
+void AddGridBars(
+  vtkAppendPolyData* append, const riemann::SceneObject& o, const riemann::Scene& scene, int object)
+{
+  const double* e = o.Extent;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3;
+    const int c = (a + 2) % 3;
+    // The lattice lines inside the extent, with the ray tracers' 1e-9
+    // slack so that rounding (-0.3 / 0.1 = -2.9999999999999996) keeps
+    // the boundary lines.
+    const auto first = [&](int axis) { return std::ceil(e[2 * axis] / o.Spacing - 1e-9); };
+    const auto last = [&](int axis) { return std::floor(e[2 * axis + 1] / o.Spacing + 1e-9); };
+    for (double i = first(b); i <= last(b); ++i)
+    {
+      for (double j = first(c); j <= last(c); ++j)
+      {
+        double bounds[6];
+        // Bars run the extent plus half the thickness (RiemannScene.h).
+        bounds[2 * a] = e[2 * a] - 0.5 * o.Thickness;
+        bounds[2 * a + 1] = e[2 * a + 1] + 0.5 * o.Thickness;
+        bounds[2 * b] = i * o.Spacing - 0.5 * o.Thickness;
+        bounds[2 * b + 1] = i * o.Spacing + 0.5 * o.Thickness;
+        bounds[2 * c] = j * o.Spacing - 0.5 * o.Thickness;
+        bounds[2 * c + 1] = j * o.Spacing + 0.5 * o.Thickness;
+        vtkNew<vtkCubeSource> bar;
+        bar->SetBounds(bounds);
+        AddPiece(append, bar, scene, object);
+      }
+    }
+  }
+}
+
 /// A mesh object's triangles, coloured per vertex as the tracer colours them.
 void AddMesh(vtkAppendPolyData* append, const riemann::TriangleMesh& mesh,
   const riemann::Scene& scene, int object)
@@ -159,40 +194,8 @@ int vtkRiemannSceneSource::RequestData(
     switch (o.Type)
     {
       case riemann::ObjectType::Grid:
-      {
-        // One box per bar: bars parallel to axis a through the lattice lines
-        // of the other two axes, clipped to the extent.
-        const double* e = o.Extent;
-        for (int a = 0; a < 3; ++a)
-        {
-          const int b = (a + 1) % 3;
-          const int c = (a + 2) % 3;
-          // The lattice lines inside the extent, with the ray tracers' 1e-9
-          // slack so that rounding (-0.3 / 0.1 = -2.9999999999999996) keeps
-          // the boundary lines.
-          const auto first = [&](int axis) { return std::ceil(e[2 * axis] / o.Spacing - 1e-9); };
-          const auto last = [&](int axis)
-          { return std::floor(e[2 * axis + 1] / o.Spacing + 1e-9); };
-          for (double i = first(b); i <= last(b); ++i)
-          {
-            for (double j = first(c); j <= last(c); ++j)
-            {
-              double bounds[6];
-              // Bars run the extent plus half the thickness (RiemannScene.h).
-              bounds[2 * a] = e[2 * a] - 0.5 * o.Thickness;
-              bounds[2 * a + 1] = e[2 * a + 1] + 0.5 * o.Thickness;
-              bounds[2 * b] = i * o.Spacing - 0.5 * o.Thickness;
-              bounds[2 * b + 1] = i * o.Spacing + 0.5 * o.Thickness;
-              bounds[2 * c] = j * o.Spacing - 0.5 * o.Thickness;
-              bounds[2 * c + 1] = j * o.Spacing + 0.5 * o.Thickness;
-              vtkNew<vtkCubeSource> bar;
-              bar->SetBounds(bounds);
-              AddPiece(append, bar, scene, object);
-            }
-          }
-        }
+        AddGridBars(append, o, scene, object);
         break;
-      }
       case riemann::ObjectType::Sphere:
       {
         vtkNew<vtkSphereSource> sphere;

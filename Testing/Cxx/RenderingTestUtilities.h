@@ -1,17 +1,12 @@
 // Shared by the rendering tests of this module: Mesa/Xvfb set-up and an
-// ErrorEvent collector.
+// ErrorEvent collector (ErrorObserver.h).
 #ifndef RiemannRenderingTestUtilities_h
 #define RiemannRenderingTestUtilities_h
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
-#include "vtkFloatingPointExceptions.h"
-#include "vtkNew.h"
-#include "vtkObject.h"
-#include "vtkRenderWindow.h"
+#include "ErrorObserver.h"
 
-#include <string>
-#include <vector>
+#include "vtkFloatingPointExceptions.h"
+#include "vtkRenderWindow.h"
 
 namespace riemann
 {
@@ -42,34 +37,6 @@ inline void KeepXServerConnection()
   }();
   (void)kept;
 }
-
-/// Collects the ErrorEvents of an object.
-struct ErrorObserver
-{
-  vtkNew<vtkCallbackCommand> Command;
-  std::vector<std::string> Messages;
-
-  explicit ErrorObserver(vtkObject* object)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
-      {
-        auto* self = static_cast<ErrorObserver*>(clientData);
-        self->Messages.emplace_back(callData ? static_cast<const char*>(callData) : "");
-      });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-  std::string All() const
-  {
-    std::string all;
-    for (const std::string& m : this->Messages)
-    {
-      all += m + "\n";
-    }
-    return all;
-  }
-};
 } // namespace testing
 } // namespace riemann
 

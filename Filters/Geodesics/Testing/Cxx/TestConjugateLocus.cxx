@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -182,4 +183,40 @@ TEST(ConjugateLocus, NoMetricIsAnErrorWithEmptyOutput)
   EXPECT_EQ(counter.Errors, 1);
   EXPECT_EQ(locus->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(locus->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(ConjugateLocus, ErrorsAreKeptInGetLastError)
+{
+  vtkNew<vtkRiemannConjugateLocus> locus;
+  locus->SetMetric(MakeMetric(SphereJson));
+  locus->SetNumberOfDirections(10);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(4.0);
+  ErrorCounter counter;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&counter);
+  callback->SetCallback(ErrorCounter::Callback);
+  locus->AddObserver(vtkCommand::ErrorEvent, callback);
+
+  locus->SetObserver(std::numeric_limits<double>::infinity(), 0.0, 0.0);
+  locus->Update();
+  EXPECT_EQ(counter.Errors, 1);
+  EXPECT_STREQ(locus->GetLastError(), "Observer must be finite.");
+  EXPECT_EQ(locus->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(locus->GetOutput(1)->GetNumberOfPoints(), 0);
+
+  locus->SetObserver(Observer[0], Observer[1], Observer[2]);
+  locus->SetConeAngle(30.0);
+  locus->SetConeAxis(0.0, 0.0, 0.0);
+  locus->Update();
+  EXPECT_EQ(counter.Errors, 2);
+  EXPECT_STREQ(locus->GetLastError(), "ConeAxis: the cone axis must be a finite nonzero vector.");
+  EXPECT_EQ(locus->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(locus->GetOutput(1)->GetNumberOfPoints(), 0);
+
+  // All well again: the antipode in every direction, no error left.
+  locus->SetConeAxis(0.0, 0.0, 1.0);
+  locus->Update();
+  EXPECT_EQ(counter.Errors, 2);
+  EXPECT_STREQ(locus->GetLastError(), "");
+  EXPECT_EQ(locus->GetOutput(0)->GetNumberOfPoints(), 10);
 }

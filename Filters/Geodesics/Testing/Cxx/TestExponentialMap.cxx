@@ -30,6 +30,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace
@@ -282,6 +283,7 @@ TEST(ExponentialMap, ErrorsGiveEmptyOutputs)
   expmap->AddRadius(-1.0);
   expmap->Update(); // negative radius
   EXPECT_EQ(counter.Errors, 2);
+  EXPECT_STREQ(expmap->GetLastError(), "Every radius must be a positive number; got -1.");
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
   EXPECT_EQ(expmap->GetOutput(1)->GetNumberOfPoints(), 0);
   expmap->RemoveAllRadii();
@@ -289,6 +291,9 @@ TEST(ExponentialMap, ErrorsGiveEmptyOutputs)
   expmap->GetIntegrationSettings()->SetMaximumPropagation(100.0);
   expmap->Update(); // 1e10 samples: refused before tracing
   EXPECT_EQ(counter.Errors, 3);
+  EXPECT_STREQ(expmap->GetLastError(),
+    "Too many samples: 1000000 directions x 10000 steps is more than 3e+07 (about 8 GiB); use "
+    "fewer directions or a longer InitialIntegrationStep.");
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
   expmap->SetNumberOfDirections(100);
   expmap->GetIntegrationSettings()->SetMaximumPropagation(5.0);
@@ -296,7 +301,20 @@ TEST(ExponentialMap, ErrorsGiveEmptyOutputs)
   expmap->SetConeAxis(0.0, 0.0, 0.0);
   expmap->Update(); // zero axis
   EXPECT_EQ(counter.Errors, 4);
+  EXPECT_STREQ(expmap->GetLastError(), "ConeAxis: the cone axis must be a finite nonzero vector.");
   EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
+  expmap->SetConeAxis(0.0, 0.0, 1.0);
+  expmap->SetObserver(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0);
+  expmap->Update(); // non-finite observer
+  EXPECT_EQ(counter.Errors, 5);
+  EXPECT_STREQ(expmap->GetLastError(), "Observer must be finite.");
+  EXPECT_EQ(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(expmap->GetOutput(1)->GetNumberOfPoints(), 0);
+  expmap->SetObserver(0.0, 0.0, 0.0);
+  expmap->Update(); // all well again: the error is cleared
+  EXPECT_EQ(counter.Errors, 5);
+  EXPECT_STREQ(expmap->GetLastError(), "");
+  EXPECT_GT(expmap->GetOutput(0)->GetNumberOfPoints(), 0);
 }
 
 TEST(ConjugateLocus, SphereLocusSurfaceCollapsesToTheAntipode)

@@ -532,6 +532,8 @@ TEST(GeodesicTracer, DirectionArrayWithWrongComponentsIsAnError)
   tracer->Update();
   ASSERT_EQ(log.Errors.size(), 1u);
   EXPECT_NE(log.Errors[0].find("Direction"), std::string::npos) << log.Errors[0];
+  EXPECT_STREQ(
+    tracer->GetLastError(), "The seeds' array \"Direction\" has 2 components; it needs 3.");
   EXPECT_EQ(tracer->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(tracer->GetOutput()->GetNumberOfCells(), 0);
 }

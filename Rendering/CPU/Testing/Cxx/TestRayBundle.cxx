@@ -16,10 +16,11 @@
 // - No metric (or one without a definition): a VTK error, empty output.
 //
 // Rendering runs on Mesa llvmpipe under Xvfb: images stay tiny.
-#include "vtkRiemannMetric.h"
-#include "vtkRiemannRayBundle.h"
 #include "RiemannSceneIntersection.h"
 #include "RiemannShading.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayBundle.h"
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
 
@@ -57,6 +58,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -718,4 +720,80 @@ TEST(RayBundle, NoMetricIsAnErrorAndEmptyOutput)
   EXPECT_EQ(bundle->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(bundle->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_EQ(bundle->GetOutput()->GetCellData()->GetNumberOfArrays(), 0);
+}
+
+// An observer the metric cannot place: an error kept in GetLastError(), empty output.
+TEST(RayBundle, BadCameraIsKeptInGetLastError)
+{
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(R"J({"type": "conformal", "n": "2/(1 - x^2 - y^2 - z^2)"})J"))
+    << metric->GetLastError();
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0, 0, 3);
+  vtkNew<vtkRiemannRayBundle> bundle;
+  ErrorObserver errors(bundle);
+  bundle->SetMetric(metric);
+  bundle->SetCamera(camera);
+  bundle->Update();
+  ASSERT_EQ(errors.Messages.size(), 1u) << errors.All();
+  EXPECT_STREQ(bundle->GetLastError(), "Bad camera: the metric is degenerate at the observer");
+  EXPECT_NE(errors.Messages[0].find(bundle->GetLastError()), std::string::npos) << errors.All();
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfCells(), 0);
+
+  // Inside the ball the observer is placed, and the error is gone.
+  camera->SetPosition(0, 0, 0.5);
+  bundle->SetSubgridResolution(2);
+  bundle->Update();
+  EXPECT_EQ(errors.Messages.size(), 1u) << errors.All();
+  EXPECT_STREQ(bundle->GetLastError(), "");
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfLines(), 4);
+}
+
+// The bundle's own integration settings are checked only when they are used:
+// with UseSceneSettings on (the default) the scene's "integrator" block
+// applies, and a NaN InitialIntegrationStep left in the unused settings is
+// no error; with it off the same setting is refused by name.
+TEST(RayBundle, ChecksItsIntegrationSettingsOnlyWhenUsed)
+{
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(EuclideanJson));
+  vtkNew<vtkRiemannRayBundle> bundle;
+  ErrorObserver errors(bundle);
+  bundle->SetMetric(metric);
+  bundle->SetSubgridResolution(4);
+  bundle->GetIntegrationSettings()->SetInitialIntegrationStep(
+    std::numeric_limits<double>::quiet_NaN());
+
+  ASSERT_TRUE(bundle->GetUseSceneSettings());
+  bundle->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+  EXPECT_STREQ(bundle->GetLastError(), "");
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfLines(), 16);
+
+  bundle->UseSceneSettingsOff();
+  bundle->Update();
+  ASSERT_EQ(errors.Messages.size(), 1u) << errors.All();
+  EXPECT_NE(errors.Messages[0].find("InitialIntegrationStep"), std::string::npos)
+    << errors.Messages[0];
+  EXPECT_STREQ(bundle->GetLastError(),
+    "Integration settings: InitialIntegrationStep is nan: expected a finite number > 0.");
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfCells(), 0);
+
+  // A usable step: the bundle's own settings trace the rays.
+  bundle->GetIntegrationSettings()->SetInitialIntegrationStep(0.05);
+  bundle->Update();
+  EXPECT_EQ(errors.Messages.size(), 1u) << errors.All();
+  EXPECT_STREQ(bundle->GetLastError(), "");
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfLines(), 16);
+
+  // Back to the scene's settings: the NaN is not looked at again.
+  bundle->GetIntegrationSettings()->SetInitialIntegrationStep(
+    std::numeric_limits<double>::quiet_NaN());
+  bundle->UseSceneSettingsOn();
+  bundle->Update();
+  EXPECT_EQ(errors.Messages.size(), 1u) << errors.All();
+  EXPECT_STREQ(bundle->GetLastError(), "");
+  EXPECT_EQ(bundle->GetOutput()->GetNumberOfLines(), 16);
 }
