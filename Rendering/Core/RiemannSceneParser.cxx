@@ -40,6 +40,10 @@ const Json& Required(const Json& object, const char* key, const std::string& pat
 constexpr std::streamoff MaximumFileSize = 64 << 20;
 /// Lattice lines per axis of one grid (keeps the intersection loops bounded).
 constexpr double MaximumLatticeLines = 10000;
+/// Lattice line indices |extent / spacing| per axis: the intersection loops
+/// step through line indices by 1 (in floats on the GPU, exact to 2^24), and
+/// past 2^53 (2^24) a step no longer moves (the loop never ends).
+constexpr double MaximumLatticeIndex = 1e6;
 constexpr int MaximumIntegratorSteps = 1000000;
 
 double Number(const Json& value, const std::string& path)
@@ -411,6 +415,17 @@ SceneObject ParseObject(const Json& object, const std::string& path, const std::
           std::string("the extent holds more than ") +
             std::to_string(static_cast<int>(MaximumLatticeLines)) + " lattice lines along " +
             AxisName(axis) + "; use a larger spacing or a smaller extent");
+      }
+      const double farthest =
+        std::max(std::abs(result.Extent[2 * axis]), std::abs(result.Extent[2 * axis + 1])) /
+        result.Spacing;
+      if (!(farthest <= MaximumLatticeIndex))
+      {
+        Fail(path + ".extent",
+          std::string("reaches more than ") +
+            std::to_string(static_cast<int>(MaximumLatticeIndex)) +
+            " spacings from the origin along " + AxisName(axis) +
+            "; use a larger spacing or an extent nearer the origin");
       }
     }
     lo = Vec3(result.Extent[0], result.Extent[2], result.Extent[4]);

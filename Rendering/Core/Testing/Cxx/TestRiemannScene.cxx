@@ -554,6 +554,9 @@ TEST(Scene, RefusesBadInput)
       "scene.objects[0].extent: expected an array of 6 numbers" },
     { R"({"objects": [{"type": "grid", "spacing": 0.0005, "thickness": 0.0001}]})",
       "scene.objects[0].spacing: the extent holds more than 10000 lattice lines along x" },
+    // Lattice indices past 2^53 no longer step by 1 (the intersection loop hung).
+    { R"({"objects": [{"type": "grid", "extent": [0,0,1e20,1e20,0,0]}]})",
+      "scene.objects[0].extent: reaches more than 1000000 spacings from the origin along y" },
     { R"({"objects": [{"type": "plane", "point": [0,0,0], "normal": [0,0,0]}]})",
       "scene.objects[0].normal: expected a non-zero vector" },
     { R"({"objects": [{"type": "box", "min": [0,2,0], "max": [1,1,1]}]})",
