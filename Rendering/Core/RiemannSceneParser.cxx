@@ -585,8 +585,9 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   {
     root = Json::parse(json);
   }
-  catch (const Json::parse_error& e)
+  catch (const Json::exception& e)
   {
+    // Syntax errors, and numbers out of double's range (out_of_range.406).
     Fail(path, std::string("invalid JSON: ") + e.what());
   }
   if (!root.is_object())
