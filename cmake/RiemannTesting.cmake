@@ -70,8 +70,11 @@ endfunction ()
 #
 # `Python.<name>` for each <dir>/Test<name>.py, run by /usr/bin/python3 (the
 # interpreter Debian's vtkmodules are built for; VTK 9.1 on Debian has no
-# vtkpython target) with the environment above.
+# vtkpython target) with the environment above. None without RIEMANN_WRAP_PYTHON.
 function (riemann_add_python_tests dir)
+  if (NOT RIEMANN_WRAP_PYTHON)
+    return () # they import the package `riemann`, which is not built
+  endif ()
   if (NOT IS_ABSOLUTE "${dir}")
     set(dir "${CMAKE_SOURCE_DIR}/${dir}")
   endif ()
