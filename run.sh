@@ -8,6 +8,12 @@
 #   ./run.sh bench [ARGS...]  build, then run build/bin/RiemannBenchmarks
 #                             (ARGS go to google-benchmark, e.g. --benchmark_filter=Gauss)
 #   ./run.sh build            install missing packages, configure, build; nothing else
+#   ./run.sh sanitize [ARGS...]  Clang build with AddressSanitizer (+ LeakSanitizer)
+#                             and UndefinedBehaviorSanitizer in build-asan/ (no Python
+#                             wrapping, no benchmarks), then the C++ and CLI tests
+#                             (ctest -L 'Cxx|Cli|Image'; extra ARGS go to ctest, e.g.
+#                             ./run.sh sanitize -R '^CommonMetric\.' -V). Any sanitizer
+#                             report fails it; reports: build-asan/sanitizer-logs/
 #
 # Each run installs missing Debian packages (only when something is missing),
 # configures build/ once (Ninja) and builds incrementally, so a re-run with
@@ -40,7 +46,7 @@ log() { printf '[run.sh] %s\n' "$*" >&2; }
 die() { printf '[run.sh] error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,17s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
+  sed -n '2,23s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
 }
 
 # --- 1. Debian packages: install only what is missing ------------------------
@@ -104,6 +110,59 @@ run_tests() {
   "${XVFB[@]}" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2 "$@"
 }
 
+# --- Sanitizer build: Clang, AddressSanitizer + UBSan (cmake/RiemannSanitize.cmake)
+ASAN_BUILD_DIR="$ROOT/build-asan"
+# LeakSanitizer suppressions for system libraries (Mesa, GiNaC's CLN, ...);
+# never for the project's own code.
+SANITIZER_SUPPRESSIONS="$ROOT/Testing/Fuzz/lsan.supp"
+
+build_sanitize() {
+  if [[ ! -f "$ASAN_BUILD_DIR/build.ninja" ]]; then
+    log "configure: $ASAN_BUILD_DIR (Ninja, Clang, -fsanitize=address,undefined)"
+    local launcher=()
+    if command -v ccache >/dev/null; then
+      launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    fi
+    # The C++ tests and the riemann CLI only: the Python-wrapped modules cannot
+    # be loaded into the uninstrumented /usr/bin/python3, benchmarks are not tests.
+    cmake -S "$ROOT" -B "$ASAN_BUILD_DIR" -G Ninja \
+      -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
+      -DPython3_EXECUTABLE="$PYTHON" \
+      -DRIEMANN_SANITIZE=ON -DRIEMANN_WRAP_PYTHON=OFF -DRIEMANN_BUILD_BENCHMARKS=OFF
+  fi
+  log "build: cmake --build build-asan"
+  cmake --build "$ASAN_BUILD_DIR"
+}
+
+run_sanitize_tests() {
+  # Reports (ASan, LSan and UBSan alike: log_path is a common option, set
+  # once) go to files, report.<pid>, so that a report from a riemann run
+  # that was expected to fail (a CLI test of bad input) fails too.
+  local logs="$ASAN_BUILD_DIR/sanitizer-logs"
+  rm -rf "$logs"
+  mkdir -p "$logs"
+  local status=0
+  log "sanitize: ctest --test-dir build-asan -L 'Cxx|Cli|Image' $*"
+  "${XVFB[@]}" env \
+    ASAN_OPTIONS="detect_leaks=1:log_path=$logs/report" \
+    LSAN_OPTIONS="suppressions=$SANITIZER_SUPPRESSIONS:print_suppressions=0" \
+    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+    ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -j2 -L 'Cxx|Cli|Image' "$@" \
+    || status=$?
+  local report
+  for report in "$logs"/*; do
+    [[ -e "$report" ]] || continue
+    log "sanitizer report: $report"
+    cat "$report" >&2
+    status=1
+  done
+  if ((status != 0)); then
+    die "sanitize: tests failed or sanitizer reports (see above; logs in $logs)"
+  fi
+  log "sanitize: no sanitizer reports"
+}
+
 run_bench() {
   local bench="$BUILD_DIR/bin/RiemannBenchmarks"
   [[ -x "$bench" ]] || die "no $bench (no Testing/Benchmarks/Bench*.cxx yet, or libbenchmark-dev missing)"
@@ -114,13 +173,18 @@ run_bench() {
 mode="demo"
 if (($# > 0)); then
   case "$1" in
-    demo | test | bench | build) mode="$1"; shift ;;
+    demo | test | bench | build | sanitize) mode="$1"; shift ;;
     -h | --help | help) usage; exit 0 ;;
     # Anything else (e.g. --width 640) is passed on to the demo.
   esac
 fi
 
 install_packages
+if [[ "$mode" == sanitize ]]; then
+  build_sanitize
+  run_sanitize_tests "$@"
+  exit 0
+fi
 build
 case "$mode" in
   demo) run_demo "$@" ;;

@@ -52,16 +52,29 @@ function (riemann_add_gtest_dir dir name)
     DISCOVERY_TIMEOUT 60
     WORKING_DIRECTORY "${RIEMANN_TEST_OUTPUT_DIR}"
     PROPERTIES
-      ENVIRONMENT "${RIEMANN_TEST_ENVIRONMENT}"
       LABELS      "Cxx")
+  # The environment, set here rather than in PROPERTIES above: CMake 3.25's
+  # gtest_discover_tests flattens PROPERTIES into one list, so ENVIRONMENT
+  # kept only its first variable (the tests then fell back to __FILE__ for
+  # their data, a relative path under ccache's base_dir). This file runs in
+  # ctest after gtest's own, which lists the tests in ${name}_TESTS.
+  set(environment_file "${CMAKE_CURRENT_BINARY_DIR}/${name}_environment.cmake")
+  file(WRITE "${environment_file}"
+    "foreach (test IN LISTS ${name}_TESTS)\n"
+    "  set_tests_properties(\"\${test}\" PROPERTIES ENVIRONMENT [==[${RIEMANN_TEST_ENVIRONMENT}]==])\n"
+    "endforeach ()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${environment_file}")
 endfunction ()
 
 # riemann_add_python_tests(<dir>)
 #
 # `Python.<name>` for each <dir>/Test<name>.py, run by /usr/bin/python3 (the
 # interpreter Debian's vtkmodules are built for; VTK 9.1 on Debian has no
-# vtkpython target) with the environment above.
+# vtkpython target) with the environment above. None without RIEMANN_WRAP_PYTHON.
 function (riemann_add_python_tests dir)
+  if (NOT RIEMANN_WRAP_PYTHON)
+    return () # they import the package `riemann`, which is not built
+  endif ()
   if (NOT IS_ABSOLUTE "${dir}")
     set(dir "${CMAKE_SOURCE_DIR}/${dir}")
   endif ()

@@ -40,6 +40,10 @@ const Json& Required(const Json& object, const char* key, const std::string& pat
 constexpr std::streamoff MaximumFileSize = 64 << 20;
 /// Lattice lines per axis of one grid (keeps the intersection loops bounded).
 constexpr double MaximumLatticeLines = 10000;
+/// Lattice line indices |extent / spacing| per axis: the intersection loops
+/// step through line indices by 1 (in floats on the GPU, exact to 2^24), and
+/// past 2^53 (2^24) a step no longer moves (the loop never ends).
+constexpr double MaximumLatticeIndex = 1e6;
 constexpr int MaximumIntegratorSteps = 1000000;
 
 double Number(const Json& value, const std::string& path)
@@ -407,6 +411,17 @@ void ParseGrid(const Json& object, const std::string& path, SceneObject& result,
           std::to_string(static_cast<int>(MaximumLatticeLines)) + " lattice lines along " +
           AxisName(axis) + "; use a larger spacing or a smaller extent");
     }
+    const double farthest =
+      std::max(std::abs(result.Extent[2 * axis]), std::abs(result.Extent[2 * axis + 1])) /
+      result.Spacing;
+    if (!(farthest <= MaximumLatticeIndex))
+    {
+      Fail(path + ".extent",
+        std::string("reaches more than ") +
+          std::to_string(static_cast<int>(MaximumLatticeIndex)) +
+          " spacings from the origin along " + AxisName(axis) +
+          "; use a larger spacing or an extent nearer the origin");
+    }
   }
   lo = Vec3(result.Extent[0], result.Extent[2], result.Extent[4]);
   hi = Vec3(result.Extent[1], result.Extent[3], result.Extent[5]);
@@ -608,8 +623,9 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   {
     root = Json::parse(json);
   }
-  catch (const Json::parse_error& e)
+  catch (const Json::exception& e)
   {
+    // Syntax errors, and numbers out of double's range (out_of_range.406).
     Fail(path, std::string("invalid JSON: ") + e.what());
   }
   if (!root.is_object())

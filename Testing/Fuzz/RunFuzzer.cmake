@@ -1,8 +1,10 @@
 # cmake -DFUZZER=<FuzzExpression> -DCORPUS=<committed seeds> -DWORK=<scratch dir>
-#       -DDICTIONARY=<dict> -DSECONDS=<n> -P RunFuzzer.cmake
+#       -DDICTIONARY=<dict> -DSECONDS=<n> [-DEXTRA_CORPUS=<more seeds>]
+#       [-DMAX_LEN=<bytes, default 256>] -P RunFuzzer.cmake
 #
-# Run by the ctest test Fuzz.Expressions: fuzz for SECONDS seconds, starting
-# from the committed seed corpus (read only; new inputs go to WORK/corpus).
+# Run by the ctest tests Fuzz.Expressions and Fuzz.Scenes: fuzz for SECONDS
+# seconds, starting from the committed seed corpus (read only; new inputs go
+# to WORK/corpus).
 # A crash, a timeout (one input running over 10 s), a leak or a sanitizer
 # report stops libFuzzer with a non-zero status and leaves the input in
 # WORK/crash-*, timeout-*, leak-*: the test fails and prints how to replay it.
@@ -12,18 +14,26 @@ foreach (var FUZZER CORPUS WORK DICTIONARY SECONDS)
   endif ()
 endforeach ()
 
+if (NOT DEFINED MAX_LEN)
+  set(MAX_LEN 256)
+endif ()
+set(seeds "${CORPUS}")
+if (DEFINED EXTRA_CORPUS)
+  list(APPEND seeds "${EXTRA_CORPUS}")
+endif ()
+
 file(MAKE_DIRECTORY "${WORK}/corpus")
 execute_process(
   COMMAND "${FUZZER}"
           "-max_total_time=${SECONDS}"
-          -max_len=256
+          "-max_len=${MAX_LEN}"
           -timeout=10
           -rss_limit_mb=2048
           -print_final_stats=1
           "-dict=${DICTIONARY}"
           "-artifact_prefix=${WORK}/"
           "${WORK}/corpus"
-          "${CORPUS}"
+          ${seeds}
   RESULT_VARIABLE status)
 if (NOT status EQUAL 0)
   file(GLOB artifacts "${WORK}/crash-*" "${WORK}/timeout-*" "${WORK}/leak-*" "${WORK}/oom-*"

@@ -480,6 +480,8 @@ TEST(Scene, RefusesBadInput)
   const std::pair<std::string, std::string> cases[] = {
     // Syntax and top level.
     { R"({"objects": [)", "scene: invalid JSON" },
+    // nlohmann::json throws out_of_range, not parse_error, for this one.
+    { R"({"fog": {"density": 1e400}})", "scene: invalid JSON" },
     { R"([1, 2])", "scene: expected a JSON object, got an array of 2" },
     { R"({"objets": []})", "scene: unknown key \"objets\"; expected one of \"metric\"" },
     { R"({"name": 3})", "scene.name: expected a string, got 3" },
@@ -554,6 +556,9 @@ TEST(Scene, RefusesBadInput)
       "scene.objects[0].extent: expected an array of 6 numbers" },
     { R"({"objects": [{"type": "grid", "spacing": 0.0005, "thickness": 0.0001}]})",
       "scene.objects[0].spacing: the extent holds more than 10000 lattice lines along x" },
+    // Lattice indices past 2^53 no longer step by 1 (the intersection loop hung).
+    { R"({"objects": [{"type": "grid", "extent": [0,0,1e20,1e20,0,0]}]})",
+      "scene.objects[0].extent: reaches more than 1000000 spacings from the origin along y" },
     { R"({"objects": [{"type": "plane", "point": [0,0,0], "normal": [0,0,0]}]})",
       "scene.objects[0].normal: expected a non-zero vector" },
     { R"({"objects": [{"type": "box", "min": [0,2,0], "max": [1,1,1]}]})",
