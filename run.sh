@@ -11,7 +11,7 @@
 #   ./run.sh sanitize [ARGS...]  Clang build with AddressSanitizer (+ LeakSanitizer)
 #                             and UndefinedBehaviorSanitizer in build-asan/ (no Python
 #                             wrapping, no benchmarks), then the C++ and CLI tests
-#                             (ctest -L 'Cxx|Image', then -L Cli; extra ARGS go to both,
+#                             (ctest -L Cxx, then -L Cli; extra ARGS go to both,
 #                             e.g. -V). Any sanitizer report fails it; reports:
 #                             build-asan/sanitizer-logs/ (Testing/Fuzz/README.md)
 #
@@ -153,9 +153,9 @@ run_sanitize_tests() {
   # the other CPU tracer, mesh and CLI tests cover. Cli.riemann (its CPU
   # renders have a 60 s limit each) runs last, alone.
   local skip='CPURayTracer\.RendersEveryShippedSceneAsTheGpu|^Image\.mesh-two-bumps-cpu$'
-  log "sanitize: ctest --test-dir build-asan -L 'Cxx|Image' -E '$skip' $*; then -L Cli"
+  log "sanitize: ctest --test-dir build-asan -L Cxx -E '$skip' $*; then -L Cli"
   "${XVFB[@]}" env "${sanitizer_env[@]}" \
-    ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -j2 -L 'Cxx|Image' -E "$skip" "$@" \
+    ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -j2 -L Cxx -E "$skip" "$@" \
     || status=$?
   "${XVFB[@]}" env "${sanitizer_env[@]}" \
     ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -L Cli "$@" \
