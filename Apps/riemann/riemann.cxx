@@ -34,7 +34,7 @@ int main(int argc, char** argv)
   VtkMessageRouting routing;
 
   CLI::App app{ "riemann: design Riemannian metrics on R^3 and compute with them.\n"
-                "Metrics are JSON files (see Data/metrics/, README.md and Common/Metric/MetricDefinition.h)." };
+                "Metrics are JSON files (see Data/metrics/ and Documentation/MetricFormat.md)." };
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("riemann 0.1.0"));
   app.add_flag_callback(
