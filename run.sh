@@ -40,6 +40,7 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3-numpy xvfb xauth libgl1-mesa-dri
   clang libclang-rt-14-dev glslang-tools
+  qtbase5-dev libqt5opengl5-dev libvtk9-qt-dev
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }
@@ -129,7 +130,7 @@ build_sanitize() {
       -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
       -DPython3_EXECUTABLE="$PYTHON" \
-      -DRIEMANN_SANITIZE=ON -DRIEMANN_WRAP_PYTHON=OFF -DRIEMANN_BUILD_BENCHMARKS=OFF
+      -DRIEMANN_SANITIZE=ON -DRIEMANN_WRAP_PYTHON=OFF -DRIEMANN_BUILD_BENCHMARKS=OFF -DRIEMANN_BUILD_STUDIO=OFF
   fi
   log "build: cmake --build build-asan"
   cmake --build "$ASAN_BUILD_DIR"

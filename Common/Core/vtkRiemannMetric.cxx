@@ -59,6 +59,19 @@ bool vtkRiemannMetric::SetParsedDefinition(
   return true;
 }
 
+void vtkRiemannMetric::ShallowCopy(vtkRiemannMetric* other)
+{
+  if (!other || other == this)
+  {
+    return;
+  }
+  std::atomic_store(&this->Metric, other->GetMetric());
+  this->Definition = other->Definition;
+  this->Time = other->Time;
+  this->LastError.clear();
+  this->Modified();
+}
+
 bool vtkRiemannMetric::SetTime(double t)
 {
   if (t == this->Time)

@@ -70,6 +70,14 @@ public:
     const std::string& json, std::shared_ptr<const riemann::Metric> metricAtTimeZero);
 
   /// The JSON text of the current definition ("" when none has been set).
+  /**
+   * Make this metric the same as `other` (definition, time and the parsed
+   * core metric, which is immutable and so shared, not parsed again). A
+   * computation on another thread gets its own handle this way, so that
+   * the original can be redefined meanwhile (as the desktop app does).
+   */
+  void ShallowCopy(vtkRiemannMetric* other);
+
   const char* GetDefinition() const { return this->Definition.c_str(); }
 
   /// Why the last SetDefinition/SetDefinitionFile failed ("" after a success).

@@ -35,6 +35,20 @@ bool vtkRiemannScene::Install(std::shared_ptr<const riemann::Scene> scene,
   return true;
 }
 
+void vtkRiemannScene::ShallowCopy(vtkRiemannScene* other)
+{
+  if (!other || other == this)
+  {
+    return;
+  }
+  // Without a definition the other scene is the default one: so is this.
+  std::atomic_store(&this->Scene, std::atomic_load(&other->Scene));
+  this->Definition = other->Definition;
+  this->DefinitionFile = other->DefinitionFile;
+  this->LastError.clear();
+  this->Modified();
+}
+
 bool vtkRiemannScene::SetDefinition(const char* json)
 {
   if (!json)

@@ -66,6 +66,13 @@ public:
   bool SetDefinitionFile(const char* path);
   ///@}
 
+  /**
+   * Make this scene the same as `other`, sharing its (immutable) parsed
+   * scene and meshes: a computation on another thread gets its own handle
+   * this way while the original may be redefined.
+   */
+  void ShallowCopy(vtkRiemannScene* other);
+
   /// The JSON text of the current definition ("" when none has been set).
   const char* GetDefinition() const { return this->Definition.c_str(); }
 

@@ -105,6 +105,23 @@ class MetricDefinitionTest(unittest.TestCase):
         self.assertFalse(m.EvaluateChristoffelSymbols([0, 0, 0], [0.0] * 27))
         self.assertTrue(math.isnan(m.EvaluateVolumeForm([0, 0, 0])))
 
+    def test_shallow_copy_keeps_its_metric_when_the_original_changes(self):
+        original = make(GRAPH)
+        self.assertTrue(original.SetTime(0.25))
+        copy = riemann.vtkRiemannMetric()
+        copy.ShallowCopy(original)
+        self.assertEqual(copy.GetDefinition(), original.GetDefinition())
+        self.assertEqual(copy.GetTime(), 0.25)
+        p = [0.3, -0.2, 0.1]
+        g_graph = [0.0] * 9
+        self.assertTrue(copy.EvaluateMetricTensor(p, g_graph))
+        # Redefine the original: the copy still answers for the graph.
+        self.assertTrue(original.SetDefinition(EUCLIDEAN))
+        g_copy = [0.0] * 9
+        self.assertTrue(copy.EvaluateMetricTensor(p, g_copy))
+        self.assertEqual(g_copy, g_graph)
+        self.assertNotAlmostEqual(g_copy[0], 1.0, places=6)
+
     def test_families(self):
         for definition, family in ((TWIST, 'diffeo'), (GRAPH, 'graph'), (CONFORMAL, 'conformal'),
                                    (TENSOR, 'tensor'), (EUCLIDEAN, 'euclidean')):

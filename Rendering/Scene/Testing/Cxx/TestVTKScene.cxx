@@ -87,3 +87,24 @@ TEST(VTKScene, FileWithMetricAndCamera)
   EXPECT_FALSE(noCamera->HasCamera());
   EXPECT_FALSE(noCamera->ApplyCamera(camera));
 }
+
+TEST(VTKScene, ShallowCopySharesTheParsedScene)
+{
+  vtkNew<vtkRiemannScene> scene;
+  const char* json = R"({"objects": [{"type": "sphere", "center": [1, 2, 3], "radius": 0.5}]})";
+  ASSERT_TRUE(scene->SetDefinition(json)) << scene->GetLastError();
+  vtkNew<vtkRiemannScene> copy;
+  copy->ShallowCopy(scene);
+  EXPECT_STREQ(copy->GetDefinition(), json);
+  EXPECT_EQ(&copy->GetScene(), &scene->GetScene()); // shared, not parsed again
+  // Redefining the original leaves the copy's scene alone (what a job on
+  // another thread relies on).
+  ASSERT_TRUE(scene->SetDefinition(R"({"objects": []})")) << scene->GetLastError();
+  EXPECT_EQ(copy->GetNumberOfObjects(), 1);
+  EXPECT_EQ(copy->GetScene().Objects[0].A, riemann::Vec3(1, 2, 3));
+  // A copy of an undefined scene is the default scene again.
+  vtkNew<vtkRiemannScene> undefined;
+  copy->ShallowCopy(undefined);
+  EXPECT_FALSE(copy->HasDefinition());
+  EXPECT_EQ(copy->GetNumberOfObjects(), undefined->GetNumberOfObjects());
+}

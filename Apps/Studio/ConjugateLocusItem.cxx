@@ -1,0 +1,155 @@
+// Conjugate points and caustic surfaces of a point (vtkRiemannConjugateLocus).
+#include "PipelineItems.h"
+
+#include "ColorMaps.h"
+
+#include "vtkRiemannConjugateLocus.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+
+namespace riemann
+{
+namespace studio
+{
+ConjugateLocusItem::ConjugateLocusItem(const QString& name)
+  : PipelineItem(name,
+      { { "Observer", { 0.0, 0.0, 2.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
+        { "ConeAngle", 30.0 }, { "NumberOfDirections", 800 },
+        { "MaximumNumberOfConjugatePoints", 2 }, { "Tolerance", 1e-8 },
+        // The filter's own defaults: adaptive, tight per-step error.
+        { "IntegratorType", "dp45" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-9 },
+        { "MaximumPropagation", 6.0 }, { "MaximumNumberOfSteps", 100000 },
+        { "ColorArray", "ArcLength" } })
+{
+  for (vtkActor* actor : { this->Points.Get(), this->Caustics.Get() })
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    actor->SetMapper(mapper);
+    this->Assembly->AddPart(actor);
+  }
+  this->Points->GetProperty()->SetPointSize(4.0);
+  this->Points->GetProperty()->SetRenderPointsAsSpheres(true);
+  this->UpdateDisplay();
+}
+
+std::vector<PropertySpec> ConjugateLocusItem::Properties() const
+{
+  PropertySpec observer;
+  observer.Key = "Observer";
+  observer.Label = "Point";
+  observer.Type = PropertySpec::Vector3;
+
+  PropertySpec axis;
+  axis.Key = "ConeAxis";
+  axis.Label = "Cone axis";
+  axis.Type = PropertySpec::Vector3;
+  axis.NonZero = true;
+
+  PropertySpec cone;
+  cone.Key = "ConeAngle";
+  cone.Label = "Cone angle";
+  cone.Minimum = 0.0;
+  cone.Maximum = 180.0;
+
+  PropertySpec count;
+  count.Key = "NumberOfDirections";
+  count.Label = "Directions";
+  count.Type = PropertySpec::Integer;
+  count.Minimum = 4;
+  count.Maximum = 1000000;
+
+  PropertySpec maximum;
+  maximum.Key = "MaximumNumberOfConjugatePoints";
+  maximum.Label = "Points per geodesic";
+  maximum.Type = PropertySpec::Integer;
+  maximum.Minimum = 1;
+  maximum.Maximum = 100;
+
+  PropertySpec tolerance;
+  tolerance.Key = "Tolerance";
+  tolerance.Label = "Root tolerance";
+  tolerance.Minimum = 1e-15;
+  tolerance.Maximum = 1.0;
+  tolerance.Help = "Arc-length accuracy of each conjugate point";
+
+  std::vector<PropertySpec> specs{ observer, axis, cone, count, maximum, tolerance };
+  for (const PropertySpec& spec : this->IntegrationProperties())
+  {
+    specs.push_back(spec);
+  }
+  for (const PropertySpec& spec : this->DisplayProperties())
+  {
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& inputs) const
+{
+  auto locus = vtkSmartPointer<vtkRiemannConjugateLocus>::New();
+  vtkNew<vtkRiemannMetric> metric;
+  metric->ShallowCopy(inputs.Metric);
+  locus->SetMetric(metric);
+  this->ApplyIntegration(locus->GetIntegrationSettings());
+  double observer[3], axis[3];
+  this->Vector("Observer", observer, 3);
+  this->Vector("ConeAxis", axis, 3);
+  locus->SetObserver(observer);
+  locus->SetConeAxis(axis);
+  locus->SetConeAngle(this->Number("ConeAngle"));
+  locus->SetNumberOfDirections(this->Integer("NumberOfDirections"));
+  locus->SetMaximumNumberOfConjugatePoints(this->Integer("MaximumNumberOfConjugatePoints"));
+  locus->SetTolerance(this->Number("Tolerance"));
+  return locus;
+}
+
+void ConjugateLocusItem::UpdateDisplay()
+{
+  const std::string array = this->Text("ColorArray");
+  const std::string map = this->Text("ColorMap");
+  const double opacity = this->Number("Opacity");
+  const double pointColor[3] = { 1.0, 0.4, 0.3 };
+  const double causticColor[3] = { 1.0, 0.6, 0.2 };
+  auto* points = vtkPolyData::SafeDownCast(this->Result(0));
+  auto* caustics = vtkPolyData::SafeDownCast(this->Result(1));
+  if (points)
+  {
+    vtkPolyDataMapper::SafeDownCast(this->Points->GetMapper())->SetInputData(points);
+  }
+  if (caustics)
+  {
+    vtkPolyDataMapper::SafeDownCast(this->Caustics->GetMapper())->SetInputData(caustics);
+  }
+  ApplyColoring(this->Points, points, array, map, opacity, pointColor);
+  ApplyColoring(this->Caustics, caustics, array, map, 0.7 * opacity, causticColor);
+  this->Points->SetVisibility(points != nullptr);
+  this->Caustics->SetVisibility(caustics != nullptr);
+}
+
+std::vector<std::string> ConjugateLocusItem::PythonLines(const std::string& var) const
+{
+  std::vector<std::string> lines{
+    var + " = riemann.vtkRiemannConjugateLocus()",
+    var + ".SetMetric(metric)",
+    var + ".SetObserver" + PythonTuple(this->Settings().at("Observer")),
+    var + ".SetConeAxis" + PythonTuple(this->Settings().at("ConeAxis")),
+    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
+    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
+    var + ".SetMaximumNumberOfConjugatePoints(" +
+      std::to_string(this->Integer("MaximumNumberOfConjugatePoints")) + ")",
+    var + ".SetTolerance(" + PythonNumber(this->Number("Tolerance")) + ")",
+  };
+  for (const std::string& line : this->IntegrationPythonLines(var))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+}
+}

@@ -1,0 +1,155 @@
+// The exponential map at a point: rays and wavefronts (vtkRiemannExponentialMap).
+#include "PipelineItems.h"
+
+#include "ColorMaps.h"
+
+#include "vtkRiemannExponentialMap.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+
+namespace riemann
+{
+namespace studio
+{
+ExponentialMapItem::ExponentialMapItem(const QString& name)
+  : PipelineItem(name,
+      { { "Observer", { 0.0, 0.0, 3.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
+        { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 }, { "NumberOfWavefronts", 4 },
+        { "IntegratorType", "rk4" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
+        { "MaximumPropagation", 5.0 }, { "MaximumNumberOfSteps", 10000 },
+        { "ColorArray", "TransverseJacobian" } })
+{
+  for (vtkActor* actor : { this->Rays.Get(), this->Wavefronts.Get() })
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    actor->SetMapper(mapper);
+    this->Assembly->AddPart(actor);
+  }
+  this->UpdateDisplay();
+}
+
+std::vector<PropertySpec> ExponentialMapItem::Properties() const
+{
+  PropertySpec observer;
+  observer.Key = "Observer";
+  observer.Label = "Point";
+  observer.Type = PropertySpec::Vector3;
+  observer.Help = "Where the geodesics start (the exponential map's base point)";
+
+  PropertySpec axis;
+  axis.Key = "ConeAxis";
+  axis.Label = "Cone axis";
+  axis.Type = PropertySpec::Vector3;
+  axis.NonZero = true;
+
+  PropertySpec cone;
+  cone.Key = "ConeAngle";
+  cone.Label = "Cone angle";
+  cone.Minimum = 0.0;
+  cone.Maximum = 180.0;
+  cone.Help = "Half-angle in degrees (180: the whole sphere of directions)";
+
+  PropertySpec count;
+  count.Key = "NumberOfDirections";
+  count.Label = "Directions";
+  count.Type = PropertySpec::Integer;
+  count.Minimum = 4;
+  count.Maximum = 1000000;
+
+  PropertySpec fronts;
+  fronts.Key = "NumberOfWavefronts";
+  fronts.Label = "Wavefronts";
+  fronts.Type = PropertySpec::Integer;
+  fronts.Minimum = 0;
+  fronts.Maximum = 100;
+  fronts.Help = "Geodesic spheres at radii L k / N, k = 1..N (L: the length)";
+
+  std::vector<PropertySpec> specs{ observer, axis, cone, count, fronts };
+  for (const PropertySpec& spec : this->IntegrationProperties())
+  {
+    specs.push_back(spec);
+  }
+  for (const PropertySpec& spec : this->DisplayProperties())
+  {
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& inputs) const
+{
+  auto expmap = vtkSmartPointer<vtkRiemannExponentialMap>::New();
+  vtkNew<vtkRiemannMetric> metric;
+  metric->ShallowCopy(inputs.Metric);
+  expmap->SetMetric(metric);
+  this->ApplyIntegration(expmap->GetIntegrationSettings());
+  double observer[3], axis[3];
+  this->Vector("Observer", observer, 3);
+  this->Vector("ConeAxis", axis, 3);
+  expmap->SetObserver(observer);
+  expmap->SetConeAxis(axis);
+  expmap->SetConeAngle(this->Number("ConeAngle"));
+  expmap->SetNumberOfDirections(this->Integer("NumberOfDirections"));
+  const int fronts = this->Integer("NumberOfWavefronts");
+  const double length = this->Number("MaximumPropagation");
+  for (int k = 1; k <= fronts; ++k)
+  {
+    expmap->AddRadius(length * k / fronts);
+  }
+  return expmap;
+}
+
+void ExponentialMapItem::UpdateDisplay()
+{
+  const std::string array = this->Text("ColorArray");
+  const std::string map = this->Text("ColorMap");
+  const double opacity = this->Number("Opacity");
+  const double rayColor[3] = { 0.9, 0.9, 0.9 };
+  const double frontColor[3] = { 0.3, 0.7, 1.0 };
+  auto* rays = vtkPolyData::SafeDownCast(this->Result(0));
+  auto* fronts = vtkPolyData::SafeDownCast(this->Result(1));
+  if (rays)
+  {
+    vtkPolyDataMapper::SafeDownCast(this->Rays->GetMapper())->SetInputData(rays);
+  }
+  if (fronts)
+  {
+    vtkPolyDataMapper::SafeDownCast(this->Wavefronts->GetMapper())->SetInputData(fronts);
+  }
+  // The rays stay faint so the wavefronts read.
+  ApplyColoring(this->Rays, rays, array, map, 0.35 * opacity, rayColor);
+  ApplyColoring(this->Wavefronts, fronts, array, map, 0.8 * opacity, frontColor);
+  this->Rays->SetVisibility(rays != nullptr);
+  this->Wavefronts->SetVisibility(fronts != nullptr);
+}
+
+std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var) const
+{
+  std::vector<std::string> lines{
+    var + " = riemann.vtkRiemannExponentialMap()",
+    var + ".SetMetric(metric)",
+    var + ".SetObserver" + PythonTuple(this->Settings().at("Observer")),
+    var + ".SetConeAxis" + PythonTuple(this->Settings().at("ConeAxis")),
+    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
+    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
+  };
+  const int fronts = this->Integer("NumberOfWavefronts");
+  const double length = this->Number("MaximumPropagation");
+  for (int k = 1; k <= fronts; ++k)
+  {
+    lines.push_back(var + ".AddRadius(" + PythonNumber(length * k / fronts) + ")");
+  }
+  for (const std::string& line : this->IntegrationPythonLines(var))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+}
+}

@@ -1,0 +1,252 @@
+// A field of the metric on a grid (curvature, volume form or the metric
+// tensor), shown as a slice, an isosurface or tensor glyphs.
+#include "PipelineItems.h"
+
+#include "ColorMaps.h"
+
+#include "vtkRiemannCurvatureField.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannMetricTensorField.h"
+#include "vtkRiemannVolumeForm.h"
+
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkContourFilter.h"
+#include "vtkCutter.h"
+#include "vtkDataArray.h"
+#include "vtkExtractVOI.h"
+#include "vtkImageData.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
+#include "vtkTensorGlyph.h"
+
+#include <algorithm>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+/// The first point array with one component (what contours and default colouring use).
+std::string FirstScalarArray(vtkImageData* image)
+{
+  for (int i = 0; image && i < image->GetPointData()->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = image->GetPointData()->GetArray(i);
+    if (array && array->GetNumberOfComponents() == 1 && array->GetName())
+    {
+      return array->GetName();
+    }
+  }
+  return std::string();
+}
+}
+
+FieldItem::FieldItem(const QString& name)
+  : PipelineItem(name,
+      { { "Field", "curvature" }, { "Bounds", { -2.0, 2.0, -2.0, 2.0, -2.0, 2.0 } },
+        { "Dimensions", { 41, 41, 41 } }, { "Representation", "slice" },
+        { "SliceNormal", "z" }, { "SliceOffset", 0.0 }, { "ContourValue", 0.5 },
+        { "ColorArray", "ScalarCurvature" } })
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  this->Surface->SetMapper(mapper);
+  this->Assembly->AddPart(this->Surface);
+  this->UpdateDisplay();
+}
+
+std::string FieldItem::FilterClass() const
+{
+  const std::string field = this->Text("Field");
+  return field == "volume-form" ? "vtkRiemannVolumeForm"
+    : field == "metric-tensor"  ? "vtkRiemannMetricTensorField"
+                                : "vtkRiemannCurvatureField";
+}
+
+std::vector<PropertySpec> FieldItem::Properties() const
+{
+  PropertySpec field;
+  field.Key = "Field";
+  field.Label = "Field";
+  field.Type = PropertySpec::Choice;
+  field.Choices = QStringList{ "curvature", "volume-form", "metric-tensor" };
+  field.Help = "curvature: scalar, Ricci and sectional curvatures; volume-form: sqrt(det g); "
+               "metric-tensor: g and its inverse";
+
+  PropertySpec bounds;
+  bounds.Key = "Bounds";
+  bounds.Label = "Bounds";
+  bounds.Type = PropertySpec::Numbers6;
+  bounds.Help = "x0 x1 y0 y1 z0 z1 of the sampling grid";
+
+  PropertySpec dimensions;
+  dimensions.Key = "Dimensions";
+  dimensions.Label = "Samples";
+  dimensions.Type = PropertySpec::Integers3;
+  dimensions.Minimum = 2;
+  dimensions.Maximum = 1024;
+
+  PropertySpec representation;
+  representation.Key = "Representation";
+  representation.Label = "Show as";
+  representation.Type = PropertySpec::Choice;
+  representation.Choices = QStringList{ "slice", "isosurface", "glyphs" };
+  representation.Help = "glyphs: ellipsoids of the metric tensor (Field metric-tensor)";
+  representation.Display = true;
+
+  PropertySpec normal;
+  normal.Key = "SliceNormal";
+  normal.Label = "Slice normal";
+  normal.Type = PropertySpec::Choice;
+  normal.Choices = QStringList{ "x", "y", "z" };
+  normal.Display = true;
+
+  PropertySpec offset;
+  offset.Key = "SliceOffset";
+  offset.Label = "Slice offset";
+  offset.Help = "Distance of the slice from the grid's centre along its normal";
+  offset.Display = true;
+
+  PropertySpec contour;
+  contour.Key = "ContourValue";
+  contour.Label = "Isovalue";
+  contour.Help = "Value of the colouring array (or the first scalar) on the isosurface";
+  contour.Display = true;
+
+  std::vector<PropertySpec> specs{ field, bounds, dimensions, representation, normal, offset,
+    contour };
+  for (const PropertySpec& spec : this->DisplayProperties())
+  {
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+vtkSmartPointer<vtkAlgorithm> FieldItem::MakeJob(const JobInputs& inputs) const
+{
+  const std::string field = this->Text("Field");
+  vtkSmartPointer<vtkRiemannFieldAlgorithm> filter;
+  if (field == "volume-form")
+  {
+    filter = vtkSmartPointer<vtkRiemannVolumeForm>::New();
+  }
+  else if (field == "metric-tensor")
+  {
+    filter = vtkSmartPointer<vtkRiemannMetricTensorField>::New();
+  }
+  else
+  {
+    filter = vtkSmartPointer<vtkRiemannCurvatureField>::New();
+  }
+  vtkNew<vtkRiemannMetric> metric;
+  metric->ShallowCopy(inputs.Metric);
+  filter->SetMetric(metric);
+  double bounds[6];
+  this->Vector("Bounds", bounds, 6);
+  filter->SetBounds(bounds);
+  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
+  filter->SetDimensions(
+    dimensions[0].get<int>(), dimensions[1].get<int>(), dimensions[2].get<int>());
+  return filter;
+}
+
+void FieldItem::UpdateDisplay()
+{
+  auto* image = vtkImageData::SafeDownCast(this->Result(0));
+  this->Surface->SetVisibility(image != nullptr);
+  if (!image)
+  {
+    return;
+  }
+  std::string array = this->Text("ColorArray");
+  if (!image->GetPointData()->GetArray(array.c_str()) && array != "Solid")
+  {
+    array = FirstScalarArray(image);
+  }
+  const std::string representation = this->Text("Representation");
+  vtkSmartPointer<vtkPolyData> shown;
+  if (representation == "glyphs" && image->GetPointData()->GetArray("MetricTensor"))
+  {
+    // About 8 glyphs per axis, each an ellipsoid with the axes of g.
+    int extent[6];
+    image->GetExtent(extent);
+    vtkNew<vtkExtractVOI> sample;
+    sample->SetInputData(image);
+    sample->SetVOI(extent);
+    const int rate = std::max(1, (extent[1] - extent[0]) / 8);
+    sample->SetSampleRate(rate, rate, rate);
+    sample->Update();
+    vtkImageData* sampled = sample->GetOutput();
+    sampled->GetPointData()->SetActiveTensors("MetricTensor");
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(12);
+    sphere->SetPhiResolution(8);
+    vtkNew<vtkTensorGlyph> glyphs;
+    glyphs->SetInputData(sampled);
+    glyphs->SetSourceConnection(sphere->GetOutputPort());
+    glyphs->ExtractEigenvaluesOn();
+    glyphs->ColorGlyphsOff();
+    const double* spacing = image->GetSpacing();
+    // Unit sphere of g: semi-axes 1/sqrt(lambda); scaled to a third of the gap.
+    glyphs->SetScaleFactor(0.35 * rate * std::min({ spacing[0], spacing[1], spacing[2] }));
+    glyphs->Update();
+    shown = glyphs->GetOutput();
+  }
+  else if (representation == "isosurface" && !FirstScalarArray(image).empty())
+  {
+    const std::string contoured =
+      image->GetPointData()->GetArray(array.c_str()) &&
+        image->GetPointData()->GetArray(array.c_str())->GetNumberOfComponents() == 1
+      ? array
+      : FirstScalarArray(image);
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputData(image);
+    contour->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, contoured.c_str());
+    contour->SetValue(0, this->Number("ContourValue"));
+    contour->ComputeScalarsOff();
+    contour->Update();
+    shown = contour->GetOutput();
+  }
+  else
+  {
+    const std::string normal = this->Text("SliceNormal");
+    const int axis = normal == "x" ? 0 : normal == "y" ? 1 : 2;
+    double bounds[6];
+    image->GetBounds(bounds);
+    double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+      0.5 * (bounds[4] + bounds[5]) };
+    origin[axis] += this->Number("SliceOffset");
+    double direction[3] = { 0, 0, 0 };
+    direction[axis] = 1.0;
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(origin);
+    plane->SetNormal(direction);
+    vtkNew<vtkCutter> cutter;
+    cutter->SetInputData(image);
+    cutter->SetCutFunction(plane);
+    cutter->Update();
+    shown = cutter->GetOutput();
+  }
+  vtkPolyDataMapper::SafeDownCast(this->Surface->GetMapper())->SetInputData(shown);
+  const double white[3] = { 0.9, 0.9, 0.9 };
+  ApplyColoring(this->Surface, shown, array, this->Text("ColorMap"), this->Number("Opacity"), white);
+}
+
+std::vector<std::string> FieldItem::PythonLines(const std::string& var) const
+{
+  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
+  return {
+    var + " = riemann." + this->FilterClass() + "()",
+    var + ".SetMetric(metric)",
+    var + ".SetBounds" + PythonTuple(this->Settings().at("Bounds")),
+    var + ".SetDimensions" + PythonTuple(dimensions),
+  };
+}
+}
+}

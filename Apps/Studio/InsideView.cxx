@@ -1,0 +1,266 @@
+#include "InsideView.h"
+
+#include "StudioDocument.h"
+
+#include "vtkRiemannCPURayTracer.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayTracePass.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkGenericOpenGLRenderWindow.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+
+#include <QElapsedTimer>
+#include <QResizeEvent>
+
+#include <functional>
+
+namespace riemann
+{
+namespace studio
+{
+/// Trackball navigation, plus picking on Ctrl+click or in pick mode.
+class InsideView::Style : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static Style* New();
+  vtkTypeMacro(Style, vtkInteractorStyleTrackballCamera);
+  std::function<bool()> PickModeOn;
+  std::function<void(int, int)> Pick;
+
+  void OnLeftButtonDown() override
+  {
+    vtkRenderWindowInteractor* interactor = this->GetInteractor();
+    if (interactor->GetControlKey() || (this->PickModeOn && this->PickModeOn()))
+    {
+      const int* position = interactor->GetEventPosition();
+      this->Pick(position[0], position[1]);
+      return;
+    }
+    this->Superclass::OnLeftButtonDown();
+  }
+};
+vtkStandardNewMacro(InsideView::Style);
+
+InsideView::InsideView(StudioDocument* document, QWidget* parent)
+  : QVTKOpenGLNativeWidget(parent)
+  , Document(document)
+{
+  this->setMinimumSize(200, 150);
+  this->SetUpRenderers();
+
+  // Navigation moves the observer: everything that follows it follows.
+  vtkNew<Style> style;
+  style->PickModeOn = [this]() { return this->PickMode; };
+  style->Pick = [this](int column, int row) { Q_EMIT this->PixelPicked(column, row); };
+  style->SetDefaultRenderer(this->ObserverRenderer);
+  this->interactor()->SetInteractorStyle(style);
+  vtkNew<vtkCallbackCommand> moved;
+  moved->SetClientData(this);
+  moved->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+    static_cast<InsideView*>(clientData)->Document->ObserverChanged();
+  });
+  style->AddObserver(vtkCommand::InteractionEvent, moved);
+
+  vtkNew<vtkCallbackCommand> rendered;
+  rendered->SetClientData(this);
+  rendered->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+    static_cast<InsideView*>(clientData)->ReportPassErrors();
+  });
+  this->ObserverRenderer->AddObserver(vtkCommand::EndEvent, rendered);
+
+  QObject::connect(document, &StudioDocument::MetricChanged, this, [this]() { this->RenderNow(); });
+  QObject::connect(document, &StudioDocument::SceneChanged, this, [this]() { this->RenderNow(); });
+  QObject::connect(document, &StudioDocument::ObserverMoved, this, [this]() {
+    if (this->CurrentBackend == CPU)
+    {
+      this->StartCpuTrace();
+    }
+    else
+    {
+      this->renderWindow()->Render();
+    }
+  });
+}
+
+InsideView::~InsideView()
+{
+  this->Document->Jobs()->Cancel(this);
+}
+
+void InsideView::SetUpRenderers()
+{
+  vtkRenderWindow* window = this->renderWindow();
+  window->SetNumberOfLayers(2);
+
+  // Layer 0: the observer's renderer; its pass draws the whole view.
+  this->RayTracePass->SetMetric(this->Document->Metric());
+  this->RayTracePass->SetScene(this->Document->Scene());
+  this->RayTracePass->SetIntegrationSettings(this->Document->RaySettings());
+  this->RayTracePass->SetUseSceneSettings(this->Document->UseSceneSettings());
+  this->ObserverRenderer->SetPass(this->RayTracePass);
+  this->ObserverRenderer->SetActiveCamera(this->Document->Observer());
+  this->ObserverRenderer->SetLayer(0);
+  window->AddRenderer(this->ObserverRenderer);
+
+  // Layer 1: the CPU tracer's picture (CPU backend only), not interactive.
+  this->ImageRenderer->SetLayer(1);
+  this->ImageRenderer->InteractiveOff();
+  this->ImageRenderer->AddActor(this->CpuImage);
+  this->ImageRenderer->DrawOff();
+  window->AddRenderer(this->ImageRenderer);
+}
+
+void InsideView::ReportPassErrors()
+{
+  if (this->CurrentBackend != GPU)
+  {
+    return;
+  }
+  const QString error = QString::fromUtf8(this->RayTracePass->GetLastError());
+  if (error != this->Error)
+  {
+    this->Error = error;
+    if (!error.isEmpty())
+    {
+      Q_EMIT this->RenderFailed(error);
+    }
+  }
+}
+
+void InsideView::SetBackend(Backend backend)
+{
+  if (backend == this->CurrentBackend)
+  {
+    return;
+  }
+  this->CurrentBackend = backend;
+  // CPU: the observer's renderer only clears; the traced image is on top.
+  this->ObserverRenderer->SetPass(backend == GPU ? this->RayTracePass.Get() : nullptr);
+  this->ImageRenderer->SetDraw(backend == CPU);
+  this->RenderNow();
+}
+
+void InsideView::SetSamplesPerPixel(int samples)
+{
+  this->Samples = std::max(1, samples);
+  if (this->CurrentBackend == CPU)
+  {
+    this->RenderNow();
+  }
+}
+
+void InsideView::RenderNow()
+{
+  this->RayTracePass->SetUseSceneSettings(this->Document->UseSceneSettings());
+  if (this->CurrentBackend == CPU)
+  {
+    this->StartCpuTrace();
+    this->renderWindow()->Render();
+    return;
+  }
+  QElapsedTimer timer;
+  timer.start();
+  this->renderWindow()->Render();
+  // Wait for the GPU so the time is the frame's, not the call's.
+  if (auto* window = vtkGenericOpenGLRenderWindow::SafeDownCast(this->renderWindow()))
+  {
+    window->WaitForCompletion();
+  }
+  Q_EMIT this->FrameRendered(timer.nsecsElapsed() * 1e-6);
+}
+
+void InsideView::StartCpuTrace()
+{
+  int width, height;
+  this->PixelSize(width, height);
+  auto tracer = vtkSmartPointer<vtkRiemannCPURayTracer>::New();
+  const JobInputs inputs = this->Document->MakeJobInputs();
+  vtkNew<vtkRiemannMetric> metric;
+  metric->ShallowCopy(inputs.Metric);
+  vtkNew<vtkRiemannScene> scene;
+  scene->ShallowCopy(inputs.Scene);
+  vtkNew<vtkCamera> camera;
+  camera->DeepCopy(inputs.Observer);
+  tracer->SetMetric(metric);
+  tracer->SetScene(scene);
+  tracer->SetCamera(camera);
+  tracer->SetWidth(width);
+  tracer->SetHeight(height);
+  tracer->SetSamplesPerPixel(this->Samples);
+  tracer->SetUseSceneSettings(inputs.UseSceneSettings);
+  tracer->GetIntegrationSettings()->DeepCopy(inputs.RaySettings);
+  auto timer = std::make_shared<QElapsedTimer>();
+  timer->start();
+  this->Document->Jobs()->Start(this, tracer, QStringLiteral("CPU render"),
+    [this, timer](vtkAlgorithm* job, bool ok, const QString& error) {
+      if (ok)
+      {
+        this->ShowCpuImage(vtkRiemannCPURayTracer::SafeDownCast(job)->GetOutput());
+        Q_EMIT this->FrameRendered(timer->nsecsElapsed() * 1e-6);
+      }
+      else if (!error.isEmpty())
+      {
+        Q_EMIT this->RenderFailed(error);
+      }
+    });
+}
+
+void InsideView::ShowCpuImage(vtkImageData* image)
+{
+  if (this->CurrentBackend != CPU)
+  {
+    return;
+  }
+  vtkNew<vtkImageData> shown;
+  shown->ShallowCopy(image);
+  this->CpuImage->GetMapper()->SetInputData(shown);
+  // Fit the picture to the viewport: a parallel camera looking at it.
+  int dimensions[3];
+  shown->GetDimensions(dimensions);
+  vtkCamera* camera = this->ImageRenderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  const double cx = 0.5 * (dimensions[0] - 1), cy = 0.5 * (dimensions[1] - 1);
+  camera->SetFocalPoint(cx, cy, 0.0);
+  camera->SetPosition(cx, cy, 1000.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * dimensions[1]);
+  this->ImageRenderer->ResetCameraClippingRange();
+  this->renderWindow()->Render();
+}
+
+QImage InsideView::Capture()
+{
+  return this->grabFramebuffer();
+}
+
+void InsideView::PixelSize(int& width, int& height)
+{
+  const int* size = this->renderWindow()->GetSize();
+  width = size[0];
+  height = size[1];
+}
+
+void InsideView::PickPixel(int column, int row)
+{
+  Q_EMIT this->PixelPicked(column, row);
+}
+
+void InsideView::resizeEvent(QResizeEvent* event)
+{
+  QVTKOpenGLNativeWidget::resizeEvent(event);
+  const qreal ratio = this->devicePixelRatioF();
+  this->Document->SetViewSize(
+    static_cast<int>(event->size().width() * ratio), static_cast<int>(event->size().height() * ratio));
+}
+}
+}

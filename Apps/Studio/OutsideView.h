@@ -1,0 +1,78 @@
+/**
+ * @file OutsideView.h
+ * @brief The outside view: ordinary (Euclidean) VTK rendering of the scene
+ * objects (vtkRiemannSceneSource, translucent), the observer as an eye with
+ * its view frustum, every pipeline item, and the picked ray.
+ *
+ * The eye is a handle: dragging it moves the observer (position and look-at
+ * point together), so the inside view follows; navigating the inside view
+ * moves the eye here.
+ */
+#ifndef RiemannStudio_OutsideView_h
+#define RiemannStudio_OutsideView_h
+
+#include "QVTKOpenGLNativeWidget.h"
+
+#include "vtkNew.h"
+
+#include <QImage>
+
+class vtkActor;
+class vtkHandleWidget;
+class vtkPolyData;
+class vtkRenderer;
+class vtkRiemannSceneSource;
+class vtkSphereSource;
+
+namespace riemann
+{
+namespace studio
+{
+class PipelineItem;
+class StudioDocument;
+
+class OutsideView : public QVTKOpenGLNativeWidget
+{
+  Q_OBJECT
+public:
+  explicit OutsideView(StudioDocument* document, QWidget* parent = nullptr);
+  ~OutsideView() override;
+
+  vtkRenderer* Renderer() const { return this->SceneRenderer; }
+  /// Frame the scene and the observer from above and to the side.
+  void ResetCamera();
+  void RenderNow();
+  QImage Capture();
+
+  /// Show `ray` (a polyline; null hides it) and a marker at its end.
+  void ShowPickedRay(vtkPolyData* ray);
+  /// What is shown for the picked ray (empty before a pick).
+  vtkPolyData* PickedRay() const;
+  /// The observer's frustum as drawn (for tests and inspection).
+  vtkPolyData* Frustum() const;
+
+private:
+  void AddItem(PipelineItem* item);
+  void RemoveItem(PipelineItem* item);
+  void UpdateObserver();
+  void MoveObserverToHandle();
+
+  StudioDocument* Document;
+  vtkNew<vtkRenderer> SceneRenderer;
+  vtkNew<vtkRiemannSceneSource> SceneGeometry;
+  vtkNew<vtkActor> SceneActor;
+  vtkNew<vtkPolyData> FrustumLines;
+  vtkNew<vtkActor> FrustumActor;
+  vtkNew<vtkSphereSource> Eye;
+  vtkNew<vtkActor> EyeActor;
+  vtkNew<vtkHandleWidget> EyeHandle;
+  vtkNew<vtkPolyData> Ray;
+  vtkNew<vtkActor> RayActor;
+  vtkNew<vtkSphereSource> RayEnd;
+  vtkNew<vtkActor> RayEndActor;
+  bool MovingEye = false;
+};
+}
+}
+
+#endif

@@ -1,0 +1,404 @@
+#include "PipelineItem.h"
+
+#include "ColorMaps.h"
+
+#include "vtkRiemannIntegrationSettings.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkAssembly.h"
+#include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+#include "vtkCellData.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+bool IsFiniteNumber(const nlohmann::json& value)
+{
+  return value.is_number() && std::isfinite(value.get<double>());
+}
+
+/// "is below 0" / "must be > 0" style text of the allowed range.
+QString RangeText(const PropertySpec& spec)
+{
+  const QString low = spec.MinimumExclusive ? QStringLiteral("> %1") : QStringLiteral(">= %1");
+  if (spec.Maximum >= 1e299)
+  {
+    return low.arg(spec.Minimum);
+  }
+  if (spec.Minimum <= -1e299)
+  {
+    return QStringLiteral("<= %1").arg(spec.Maximum);
+  }
+  return QStringLiteral("in %1%2, %3]")
+    .arg(spec.MinimumExclusive ? "(" : "[")
+    .arg(spec.Minimum)
+    .arg(spec.Maximum);
+}
+
+QString CheckNumber(const PropertySpec& spec, const nlohmann::json& value, bool whole)
+{
+  if (!IsFiniteNumber(value))
+  {
+    return QStringLiteral("expected a finite number");
+  }
+  const double v = value.get<double>();
+  if (whole && v != std::floor(v))
+  {
+    return QStringLiteral("expected a whole number");
+  }
+  const bool low = spec.MinimumExclusive ? v <= spec.Minimum : v < spec.Minimum;
+  if (low || v > spec.Maximum)
+  {
+    return QStringLiteral("must be %1").arg(RangeText(spec));
+  }
+  return QString();
+}
+
+QString CheckList(const PropertySpec& spec, const nlohmann::json& value, int count, bool whole)
+{
+  if (!value.is_array() || static_cast<int>(value.size()) != count)
+  {
+    return QStringLiteral("expected %1 numbers").arg(count);
+  }
+  bool allZero = true;
+  for (int i = 0; i < count; ++i)
+  {
+    const QString why = CheckNumber(spec, value[i], whole);
+    if (!why.isEmpty())
+    {
+      return QStringLiteral("number %1: %2").arg(i + 1).arg(why);
+    }
+    allZero = allZero && value[i].get<double>() == 0.0;
+  }
+  if (spec.NonZero && allZero)
+  {
+    return QStringLiteral("a direction cannot be (0, 0, 0)");
+  }
+  if (spec.Type == PropertySpec::Numbers6)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (!(value[2 * axis].get<double>() < value[2 * axis + 1].get<double>()))
+      {
+        return QStringLiteral("bounds must be x0 < x1, y0 < y1, z0 < z1");
+      }
+    }
+  }
+  return QString();
+}
+}
+
+QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value)
+{
+  switch (spec.Type)
+  {
+    case PropertySpec::Number:
+      return CheckNumber(spec, value, false);
+    case PropertySpec::Integer:
+      return CheckNumber(spec, value, true);
+    case PropertySpec::Vector3:
+      return CheckList(spec, value, 3, false);
+    case PropertySpec::Numbers6:
+      return CheckList(spec, value, 6, false);
+    case PropertySpec::Integers3:
+      return CheckList(spec, value, 3, true);
+    case PropertySpec::Choice:
+      if (!value.is_string() ||
+        !spec.Choices.contains(QString::fromStdString(value.get<std::string>())))
+      {
+        return QStringLiteral("expected one of: %1").arg(spec.Choices.join(", "));
+      }
+      return QString();
+    case PropertySpec::Boolean:
+      return value.is_boolean() ? QString() : QStringLiteral("expected true or false");
+  }
+  return QStringLiteral("unknown kind of setting");
+}
+
+PipelineItem::PipelineItem(const QString& name, nlohmann::json defaults)
+  : Assembly(vtkSmartPointer<vtkAssembly>::New())
+  , ItemName(name)
+  , Values(std::move(defaults))
+{
+  // Display settings every item has.
+  this->Values.emplace("ColorArray", "Solid");
+  this->Values.emplace("ColorMap", "cool-to-warm");
+  this->Values.emplace("Opacity", 1.0);
+}
+
+PipelineItem::~PipelineItem() = default;
+
+void PipelineItem::SetName(const QString& name)
+{
+  if (name != this->ItemName && !name.trimmed().isEmpty())
+  {
+    this->ItemName = name.trimmed();
+    Q_EMIT this->NameChanged();
+  }
+}
+
+void PipelineItem::SetVisible(bool visible)
+{
+  if (visible != this->Visible)
+  {
+    this->Visible = visible;
+    this->Assembly->SetVisibility(visible);
+    Q_EMIT this->VisibilityChanged();
+  }
+}
+
+std::vector<PropertySpec> PipelineItem::Properties() const
+{
+  return this->DisplayProperties();
+}
+
+QString PipelineItem::ApplySettings(const nlohmann::json& settings)
+{
+  if (!settings.is_object())
+  {
+    return QStringLiteral("settings must be a JSON object");
+  }
+  const std::vector<PropertySpec> specs = this->Properties();
+  bool needsRun = false;
+  bool changed = false;
+  // Check everything first: a bad value leaves every setting as it was.
+  for (const auto& entry : settings.items())
+  {
+    const PropertySpec* spec = nullptr;
+    for (const PropertySpec& candidate : specs)
+    {
+      spec = candidate.Key == entry.key() ? &candidate : spec;
+    }
+    if (!spec)
+    {
+      return QStringLiteral("%1: no such setting for a %2 item")
+        .arg(QString::fromStdString(entry.key()), QString::fromStdString(this->Kind()));
+    }
+    const QString why = CheckPropertyValue(*spec, entry.value());
+    if (!why.isEmpty())
+    {
+      return QStringLiteral("%1: %2").arg(spec->Label, why);
+    }
+    if (this->Values.value(entry.key(), nlohmann::json()) != entry.value())
+    {
+      changed = true;
+      needsRun = needsRun || !spec->Display;
+    }
+  }
+  if (!changed)
+  {
+    return QString();
+  }
+  for (const auto& entry : settings.items())
+  {
+    this->Values[entry.key()] = entry.value();
+  }
+  this->UpdateDisplay();
+  Q_EMIT this->SettingsChanged(needsRun);
+  return QString();
+}
+
+void PipelineItem::TakeResult(vtkAlgorithm* job)
+{
+  this->Results.clear();
+  for (int port = 0; port < job->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkDataObject* output = job->GetOutputDataObject(port);
+    vtkSmartPointer<vtkDataObject> copy;
+    if (output)
+    {
+      copy.TakeReference(output->NewInstance());
+      copy->ShallowCopy(output);
+    }
+    this->Results.push_back(copy);
+  }
+  this->UpdateDisplay();
+  Q_EMIT this->ResultChanged();
+}
+
+vtkDataObject* PipelineItem::Result(int port) const
+{
+  return port >= 0 && port < static_cast<int>(this->Results.size()) ? this->Results[port].Get()
+                                                                     : nullptr;
+}
+
+QStringList PipelineItem::ColorArrays() const
+{
+  QStringList names;
+  for (const auto& result : this->Results)
+  {
+    auto* data = vtkDataSet::SafeDownCast(result);
+    if (!data)
+    {
+      continue;
+    }
+    for (vtkFieldData* arrays : { static_cast<vtkFieldData*>(data->GetPointData()),
+           static_cast<vtkFieldData*>(data->GetCellData()) })
+    {
+      for (int i = 0; i < arrays->GetNumberOfArrays(); ++i)
+      {
+        const char* name = arrays->GetArrayName(i);
+        if (name && !names.contains(name) && arrays->GetArray(i))
+        {
+          names << name;
+        }
+      }
+    }
+  }
+  return names;
+}
+
+std::vector<PropertySpec> PipelineItem::DisplayProperties() const
+{
+  PropertySpec array;
+  array.Key = "ColorArray";
+  array.Label = "Colour by";
+  array.Type = PropertySpec::Choice;
+  array.Choices = QStringList{ "Solid" } + this->ColorArrays();
+  // Keep the current choice selectable before the first result arrives.
+  const QString current = QString::fromStdString(this->Text("ColorArray"));
+  if (!array.Choices.contains(current))
+  {
+    array.Choices << current;
+  }
+  array.Help = "The point or cell array that colours the item (Solid: one colour)";
+  array.Display = true;
+
+  PropertySpec map;
+  map.Key = "ColorMap";
+  map.Label = "Colour map";
+  map.Type = PropertySpec::Choice;
+  map.Choices = ColorMapNames();
+  map.Display = true;
+
+  PropertySpec opacity;
+  opacity.Key = "Opacity";
+  opacity.Label = "Opacity";
+  opacity.Minimum = 0.0;
+  opacity.Maximum = 1.0;
+  opacity.Display = true;
+  return { array, map, opacity };
+}
+
+double PipelineItem::Number(const char* key) const
+{
+  return this->Values.at(key).get<double>();
+}
+
+int PipelineItem::Integer(const char* key) const
+{
+  return static_cast<int>(this->Values.at(key).get<double>());
+}
+
+void PipelineItem::Vector(const char* key, double* out, int count) const
+{
+  const nlohmann::json& values = this->Values.at(key);
+  for (int i = 0; i < count; ++i)
+  {
+    out[i] = values.at(i).get<double>();
+  }
+}
+
+std::string PipelineItem::Text(const char* key) const
+{
+  return this->Values.at(key).get<std::string>();
+}
+
+void PipelineItem::ApplyIntegration(vtkRiemannIntegrationSettings* settings) const
+{
+  settings->SetIntegratorTypeFromName(this->Text("IntegratorType").c_str());
+  settings->SetInitialIntegrationStep(this->Number("InitialIntegrationStep"));
+  settings->SetMaximumError(this->Number("MaximumError"));
+  settings->SetMaximumPropagation(this->Number("MaximumPropagation"));
+  settings->SetMaximumNumberOfSteps(this->Integer("MaximumNumberOfSteps"));
+}
+
+std::vector<PropertySpec> PipelineItem::IntegrationProperties() const
+{
+  PropertySpec integrator;
+  integrator.Key = "IntegratorType";
+  integrator.Label = "Integrator";
+  integrator.Type = PropertySpec::Choice;
+  integrator.Choices = QStringList{ "euler", "rk4", "dp45" };
+  integrator.Help = "euler (the paper's), rk4 (fixed step) or dp45 (adaptive Dormand-Prince)";
+
+  PropertySpec step;
+  step.Key = "InitialIntegrationStep";
+  step.Label = "Step";
+  step.Minimum = 0.0;
+  step.MinimumExclusive = true;
+  step.Help = "Arc length of a step (the first one for dp45)";
+
+  PropertySpec error;
+  error.Key = "MaximumError";
+  error.Label = "Tolerance";
+  error.Minimum = 0.0;
+  error.MinimumExclusive = true;
+  error.Help = "Per-step error allowed to dp45";
+
+  PropertySpec length;
+  length.Key = "MaximumPropagation";
+  length.Label = "Length";
+  length.Minimum = 0.0;
+  length.MinimumExclusive = true;
+  length.Help = "Riemannian arc length at which a geodesic stops";
+
+  PropertySpec steps;
+  steps.Key = "MaximumNumberOfSteps";
+  steps.Label = "Maximum steps";
+  steps.Type = PropertySpec::Integer;
+  steps.Minimum = 1;
+  steps.Maximum = 1e8;
+  return { integrator, step, error, length, steps };
+}
+
+std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string& var) const
+{
+  const std::string settings = var + ".GetIntegrationSettings()";
+  return {
+    settings + ".SetIntegratorTypeFromName(\"" + this->Text("IntegratorType") + "\")",
+    settings + ".SetInitialIntegrationStep(" + PythonNumber(this->Number("InitialIntegrationStep")) + ")",
+    settings + ".SetMaximumError(" + PythonNumber(this->Number("MaximumError")) + ")",
+    settings + ".SetMaximumPropagation(" + PythonNumber(this->Number("MaximumPropagation")) + ")",
+    settings + ".SetMaximumNumberOfSteps(" + std::to_string(this->Integer("MaximumNumberOfSteps")) + ")",
+  };
+}
+
+std::string PythonNumber(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", value);
+  // Prefer the shortest text that reads back the same.
+  for (int digits = 1; digits <= 17; ++digits)
+  {
+    char shorter[32];
+    std::snprintf(shorter, sizeof(shorter), "%.*g", digits, value);
+    if (std::strtod(shorter, nullptr) == value)
+    {
+      return shorter;
+    }
+  }
+  return text;
+}
+
+std::string PythonTuple(const nlohmann::json& values)
+{
+  std::string text = "(";
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    text += (i ? ", " : "") + PythonNumber(values[i].get<double>());
+  }
+  return text + ")";
+}
+}
+}

@@ -1,0 +1,190 @@
+/**
+ * @file PipelineItem.h
+ * @brief One entry of the pipeline browser: a toolkit filter run on the
+ * document's metric (geodesics, ray bundle, exponential map, conjugate
+ * locus, a field), its settings and how its result is shown in the outside
+ * view.
+ *
+ * An item never computes geometry itself. MakeJob() returns the toolkit's
+ * own filter, configured from the item's settings with private copies of
+ * the metric, scene and camera (vtkRiemannMetric::ShallowCopy), so the job
+ * may run on a worker thread while the user goes on editing. TakeResult()
+ * keeps the job's output and feeds the item's display pipeline (mappers of
+ * the outside view).
+ *
+ * Settings are one JSON object keyed by the toolkit's property names
+ * (StartPosition, ConeAngle, IntegratorType, ...): the properties panel
+ * edits them, the project file stores them and the Python trace writes
+ * them back as the same Set calls.
+ */
+#ifndef RiemannStudio_PipelineItem_h
+#define RiemannStudio_PipelineItem_h
+
+#include <nlohmann/json.hpp>
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include "vtkAssembly.h" // For the Prop() held by vtkSmartPointer
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkCamera;
+class vtkDataObject;
+class vtkRiemannIntegrationSettings;
+class vtkRiemannMetric;
+class vtkRiemannScene;
+
+namespace riemann
+{
+namespace studio
+{
+/// One setting of an item, as the properties panel shows and checks it.
+struct PropertySpec
+{
+  enum Kind
+  {
+    Number,   ///< a real number in [Minimum, Maximum]
+    Integer,  ///< a whole number in [Minimum, Maximum]
+    Vector3,  ///< three real numbers
+    Numbers6, ///< six real numbers (bounds x0 x1 y0 y1 z0 z1)
+    Integers3,///< three whole numbers (grid dimensions)
+    Choice,   ///< one of Choices (stored as the string)
+    Boolean
+  };
+  std::string Key;
+  QString Label;
+  Kind Type = Number;
+  double Minimum = -1e300;
+  double Maximum = 1e300;
+  /// A Number must be strictly greater than Minimum (a step, a tolerance).
+  bool MinimumExclusive = false;
+  /// A Vector3 may not be (0, 0, 0) (a direction).
+  bool NonZero = false;
+  QStringList Choices;
+  QString Help;
+  /// Display-only (colouring, opacity): changing it does not re-run the job.
+  bool Display = false;
+};
+
+/**
+ * Why `value` is not acceptable for `spec` (empty when it is): the panel
+ * shows this next to the field and never applies such a value.
+ */
+QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value);
+
+/// What a job needs from the document, copied on the GUI thread.
+struct JobInputs
+{
+  vtkRiemannMetric* Metric = nullptr;
+  vtkRiemannScene* Scene = nullptr;
+  /// The inside view's camera (the observer).
+  vtkCamera* Observer = nullptr;
+  /// The inside view's size in pixels (the ray bundle's image).
+  int Width = 640;
+  int Height = 480;
+  /// The inside view's ray settings (shared with the pass) and whether the
+  /// scene's "integrator" block overrides them.
+  vtkRiemannIntegrationSettings* RaySettings = nullptr;
+  bool UseSceneSettings = true;
+};
+
+class PipelineItem : public QObject
+{
+  Q_OBJECT
+public:
+  ~PipelineItem() override;
+
+  /// The kind as the project file and the Add menu spell it ("geodesics", ...).
+  virtual std::string Kind() const = 0;
+  /// The toolkit class this item runs (for tooltips and the Python trace).
+  virtual std::string FilterClass() const = 0;
+
+  QString Name() const { return this->ItemName; }
+  void SetName(const QString& name);
+  bool IsVisible() const { return this->Visible; }
+  void SetVisible(bool visible);
+
+  /// The settings the panel shows (with the current colouring choices).
+  virtual std::vector<PropertySpec> Properties() const;
+  const nlohmann::json& Settings() const { return this->Values; }
+  /**
+   * Check and take new settings (keys not given keep their value). Returns
+   * the first problem ("Seed: ..."), keeping every setting, or "" when all
+   * were taken. Emits SettingsChanged(needsRun) on success.
+   */
+  QString ApplySettings(const nlohmann::json& settings);
+
+  /// The toolkit filter for these settings, ready to Update() on any thread.
+  virtual vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const = 0;
+  /// Keep a finished job's output and show it.
+  void TakeResult(vtkAlgorithm* job);
+  /// The last result (output port `port`), null before the first run.
+  vtkDataObject* Result(int port = 0) const;
+  int NumberOfResults() const { return static_cast<int>(this->Results.size()); }
+
+  /// Re-run when the observer (inside camera) moves (the ray bundle).
+  virtual bool FollowsObserver() const { return false; }
+  /// Re-run when the scene changes.
+  virtual bool UsesScene() const { return false; }
+  /// Noticeable work: run with the progress bar (all jobs run off the GUI thread).
+  virtual bool IsLongJob() const { return false; }
+
+  /// What the outside view shows for this item.
+  vtkAssembly* Prop() const { return this->Assembly; }
+
+  /// Python lines that build this item with `import riemann` (trace export):
+  /// `var` is the filter's variable; `metric`, `scene`, `camera` exist.
+  virtual std::vector<std::string> PythonLines(const std::string& var) const = 0;
+
+  /// Names of the result's arrays that colouring may use.
+  QStringList ColorArrays() const;
+
+Q_SIGNALS:
+  /// needsRun: the job's settings changed (not only the display).
+  void SettingsChanged(bool needsRun);
+  void ResultChanged();
+  void NameChanged();
+  void VisibilityChanged();
+
+protected:
+  PipelineItem(const QString& name, nlohmann::json defaults);
+
+  /// Rebuild the display (actors in Prop()) from the results and settings.
+  virtual void UpdateDisplay() = 0;
+  /// The display settings every item has: ColorArray, ColorMap, Opacity.
+  std::vector<PropertySpec> DisplayProperties() const;
+  /// Shared helpers for the concrete items.
+  double Number(const char* key) const;
+  int Integer(const char* key) const;
+  void Vector(const char* key, double* out, int count) const;
+  std::string Text(const char* key) const;
+  /// Copy integration settings keys (IntegratorType, InitialIntegrationStep,
+  /// MaximumError, MaximumPropagation, MaximumNumberOfSteps) into `settings`.
+  void ApplyIntegration(vtkRiemannIntegrationSettings* settings) const;
+  /// Their specs, with this item's defaults.
+  std::vector<PropertySpec> IntegrationProperties() const;
+  /// The Python lines of ApplyIntegration.
+  std::vector<std::string> IntegrationPythonLines(const std::string& var) const;
+
+  std::vector<vtkSmartPointer<vtkDataObject>> Results;
+  vtkSmartPointer<vtkAssembly> Assembly;
+
+private:
+  QString ItemName;
+  bool Visible = true;
+  nlohmann::json Values;
+};
+
+/// Python source for a number list: "(1, 2, 3)" (round-trip precision).
+std::string PythonTuple(const nlohmann::json& values);
+/// Round-trip text of a double.
+std::string PythonNumber(double value);
+}
+}
+
+#endif

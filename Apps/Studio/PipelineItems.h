@@ -1,0 +1,133 @@
+/**
+ * @file PipelineItems.h
+ * @brief The kinds of pipeline items, each one toolkit filter:
+ *
+ * | kind              | filter                                  | shows |
+ * |-------------------|-----------------------------------------|-------|
+ * | geodesics         | vtkRiemannGeodesicTracer                | polylines from a seed, a cone of directions |
+ * | ray-bundle        | vtkRiemannRayBundle                     | the inside view's rays, coloured by where they end |
+ * | exponential-map   | vtkRiemannExponentialMap                | rays + geodesic spheres (wavefronts) |
+ * | conjugate-locus   | vtkRiemannConjugateLocus                | conjugate points + caustic surfaces |
+ * | field             | vtkRiemannCurvatureField / VolumeForm / MetricTensorField | slice, isosurface or tensor glyphs |
+ */
+#ifndef RiemannStudio_PipelineItems_h
+#define RiemannStudio_PipelineItems_h
+
+#include "PipelineItem.h"
+
+#include "vtkActor.h" // For vtkNew<vtkActor>
+#include "vtkNew.h"
+
+#include <memory>
+
+
+namespace riemann
+{
+namespace studio
+{
+/// The kinds, in the Add menu's order, and their menu labels.
+std::vector<std::string> PipelineItemKinds();
+QString PipelineItemLabel(const std::string& kind);
+/// A new item of `kind` with default settings (null for an unknown kind).
+std::unique_ptr<PipelineItem> MakePipelineItem(const std::string& kind, const QString& name);
+
+class GeodesicsItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit GeodesicsItem(const QString& name);
+  std::string Kind() const override { return "geodesics"; }
+  std::string FilterClass() const override { return "vtkRiemannGeodesicTracer"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Lines;
+};
+
+class RayBundleItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit RayBundleItem(const QString& name);
+  std::string Kind() const override { return "ray-bundle"; }
+  std::string FilterClass() const override { return "vtkRiemannRayBundle"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool FollowsObserver() const override { return true; }
+  bool UsesScene() const override { return true; }
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Rays;
+};
+
+class ExponentialMapItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit ExponentialMapItem(const QString& name);
+  std::string Kind() const override { return "exponential-map"; }
+  std::string FilterClass() const override { return "vtkRiemannExponentialMap"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool IsLongJob() const override { return true; }
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Rays;
+  vtkNew<vtkActor> Wavefronts;
+};
+
+class ConjugateLocusItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit ConjugateLocusItem(const QString& name);
+  std::string Kind() const override { return "conjugate-locus"; }
+  std::string FilterClass() const override { return "vtkRiemannConjugateLocus"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool IsLongJob() const override { return true; }
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Points;
+  vtkNew<vtkActor> Caustics;
+};
+
+class FieldItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit FieldItem(const QString& name);
+  std::string Kind() const override { return "field"; }
+  std::string FilterClass() const override;
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool IsLongJob() const override { return true; }
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Surface;
+};
+}
+}
+
+#endif

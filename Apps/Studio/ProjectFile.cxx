@@ -1,0 +1,489 @@
+#include "ProjectFile.h"
+
+#include "PipelineItems.h"
+#include "StudioDocument.h"
+
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkCamera.h"
+#include "vtkNew.h"
+
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <cmath>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+using Json = nlohmann::json;
+
+/// Keys of the inside view's integration settings (vtkRiemannIntegrationSettings's names).
+const char* const IntegrationKeys[] = { "IntegratorType", "InitialIntegrationStep", "MaximumError",
+  "MaximumPropagation", "MaximumNumberOfSteps" };
+
+[[noreturn]] void Fail(const std::string& where, const std::string& why)
+{
+  throw ProjectError(where + ": " + why);
+}
+
+const Json& Member(const Json& object, const char* key, const std::string& where)
+{
+  if (!object.is_object() || !object.contains(key))
+  {
+    Fail(where, std::string("missing \"") + key + "\"");
+  }
+  return object.at(key);
+}
+
+std::string String(const Json& value, const std::string& where)
+{
+  if (!value.is_string())
+  {
+    Fail(where, "expected a string");
+  }
+  return value.get<std::string>();
+}
+
+double Number(const Json& value, const std::string& where)
+{
+  if (!value.is_number() || !std::isfinite(value.get<double>()))
+  {
+    Fail(where, "expected a finite number");
+  }
+  return value.get<double>();
+}
+
+void Vector3(const Json& value, double out[3], const std::string& where)
+{
+  if (!value.is_array() || value.size() != 3)
+  {
+    Fail(where, "expected an array of 3 numbers");
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = Number(value[i], where + "[" + std::to_string(i) + "]");
+  }
+}
+
+Json CameraToJson(const CameraState& camera)
+{
+  return { { "position", camera.Position }, { "focal-point", camera.FocalPoint },
+    { "view-up", camera.ViewUp }, { "view-angle", camera.ViewAngle } };
+}
+
+CameraState ParseCamera(const Json& value, const std::string& where)
+{
+  CameraState camera;
+  Vector3(Member(value, "position", where), camera.Position, where + ".position");
+  Vector3(Member(value, "focal-point", where), camera.FocalPoint, where + ".focal-point");
+  Vector3(Member(value, "view-up", where), camera.ViewUp, where + ".view-up");
+  camera.ViewAngle = Number(Member(value, "view-angle", where), where + ".view-angle");
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    d2 += std::pow(camera.FocalPoint[i] - camera.Position[i], 2);
+  }
+  if (!(d2 > 0.0))
+  {
+    Fail(where, "the camera is at the point it looks at");
+  }
+  if (!(camera.ViewAngle > 0.0 && camera.ViewAngle < 180.0))
+  {
+    Fail(where + ".view-angle", "must be in (0, 180) degrees");
+  }
+  return camera;
+}
+
+void ParseMetric(const Json& metric, ProjectData& project)
+{
+  project.MetricText = String(Member(metric, "text", "metric"), "metric.text");
+  if (metric.contains("parameter-values"))
+  {
+    const Json& values = metric.at("parameter-values");
+    if (!values.is_object())
+    {
+      Fail("metric.parameter-values", "expected an object of JSON pointers to numbers");
+    }
+    for (const auto& entry : values.items())
+    {
+      project.ParameterValues[entry.key()] =
+        Number(entry.value(), "metric.parameter-values." + entry.key());
+    }
+  }
+  project.Time = metric.contains("time") ? Number(metric.at("time"), "metric.time") : 0.0;
+  if (project.Time < 0.0 || project.Time > 1.0)
+  {
+    Fail("metric.time", "must be in [0, 1]");
+  }
+  // The metric itself, as the app would take it.
+  vtkNew<vtkRiemannMetric> check;
+  check->SetTime(project.Time);
+  std::string effective;
+  try
+  {
+    effective = project.ParameterValues.empty()
+      ? project.MetricText
+      : ApplyParameterValues(project.MetricText, project.ParameterValues);
+  }
+  catch (const std::exception& e)
+  {
+    Fail("metric.parameter-values", e.what());
+  }
+  if (!check->SetDefinition(effective.c_str()))
+  {
+    Fail("metric.text", check->GetLastError());
+  }
+}
+
+void ParseScene(const Json& scene, ProjectData& project)
+{
+  project.SceneFile = scene.contains("file") ? String(scene.at("file"), "scene.file") : "";
+  project.SceneText = scene.contains("text") ? String(scene.at("text"), "scene.text") : "";
+  vtkNew<vtkRiemannScene> check;
+  if (!project.SceneFile.empty() && QFileInfo::exists(QString::fromStdString(project.SceneFile)))
+  {
+    if (!check->SetDefinitionFile(project.SceneFile.c_str()))
+    {
+      Fail("scene.file", check->GetLastError());
+    }
+  }
+  else if (!project.SceneText.empty())
+  {
+    project.SceneFile.clear();
+    if (!check->SetDefinition(project.SceneText.c_str()))
+    {
+      Fail("scene.text", check->GetLastError());
+    }
+  }
+  else if (!project.SceneFile.empty())
+  {
+    Fail("scene.file", "\"" + project.SceneFile + "\" does not exist and there is no text");
+  }
+}
+
+void ParseInside(const Json& inside, ProjectData& project)
+{
+  project.Backend = inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
+  if (project.Backend != "gpu" && project.Backend != "cpu")
+  {
+    Fail("inside.backend", "expected \"gpu\" or \"cpu\"");
+  }
+  const double samples = inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
+  if (samples < 1 || samples > 4096 || samples != std::floor(samples))
+  {
+    Fail("inside.samples", "expected a whole number in [1, 4096]");
+  }
+  project.Samples = static_cast<int>(samples);
+  if (inside.contains("use-scene-settings"))
+  {
+    if (!inside.at("use-scene-settings").is_boolean())
+    {
+      Fail("inside.use-scene-settings", "expected true or false");
+    }
+    project.UseSceneSettings = inside.at("use-scene-settings").get<bool>();
+  }
+  if (inside.contains("integration"))
+  {
+    const Json& integration = inside.at("integration");
+    vtkNew<vtkRiemannIntegrationSettings> check;
+    for (const auto& entry : integration.items())
+    {
+      const std::string where = "inside.integration." + entry.key();
+      if (entry.key() == "IntegratorType")
+      {
+        if (!check->SetIntegratorTypeFromName(String(entry.value(), where).c_str()))
+        {
+          Fail(where, "expected \"euler\", \"rk4\" or \"dp45\"");
+        }
+      }
+      else if (std::find(std::begin(IntegrationKeys), std::end(IntegrationKeys), entry.key()) !=
+        std::end(IntegrationKeys))
+      {
+        if (!(Number(entry.value(), where) > 0.0))
+        {
+          Fail(where, "must be > 0");
+        }
+      }
+      else
+      {
+        Fail(where, "unknown setting");
+      }
+    }
+    project.Integration = integration;
+  }
+}
+
+void ParseItems(const Json& items, ProjectData& project)
+{
+  if (!items.is_array())
+  {
+    Fail("items", "expected an array");
+  }
+  for (std::size_t i = 0; i < items.size(); ++i)
+  {
+    const std::string where = "items[" + std::to_string(i) + "]";
+    ItemState state;
+    state.Kind = String(Member(items[i], "kind", where), where + ".kind");
+    state.Name = items[i].contains("name") ? String(items[i].at("name"), where + ".name") : state.Kind;
+    if (items[i].contains("visible"))
+    {
+      if (!items[i].at("visible").is_boolean())
+      {
+        Fail(where + ".visible", "expected true or false");
+      }
+      state.Visible = items[i].at("visible").get<bool>();
+    }
+    state.Settings = items[i].contains("settings") ? items[i].at("settings") : Json::object();
+    // The item's own checks, on a scratch item.
+    std::unique_ptr<PipelineItem> scratch = MakePipelineItem(state.Kind, "check");
+    if (!scratch)
+    {
+      Fail(where + ".kind", "unknown kind \"" + state.Kind + "\"");
+    }
+    const QString why = scratch->ApplySettings(state.Settings);
+    if (!why.isEmpty())
+    {
+      Fail(where + ".settings", why.toStdString());
+    }
+    project.Items.push_back(state);
+  }
+}
+}
+
+void CameraState::From(vtkCamera* camera)
+{
+  camera->GetPosition(this->Position);
+  camera->GetFocalPoint(this->FocalPoint);
+  camera->GetViewUp(this->ViewUp);
+  this->ViewAngle = camera->GetViewAngle();
+}
+
+void CameraState::To(vtkCamera* camera) const
+{
+  camera->SetPosition(this->Position);
+  camera->SetFocalPoint(this->FocalPoint);
+  camera->SetViewUp(this->ViewUp);
+  camera->SetViewAngle(this->ViewAngle);
+}
+
+ProjectData CaptureProject(const StudioDocument& document)
+{
+  ProjectData project;
+  project.MetricText = document.MetricText();
+  project.ParameterValues = document.ParameterValues();
+  project.Time = document.Time();
+  project.SceneFile = document.Scene()->GetDefinitionFile();
+  project.SceneText = document.Scene()->GetDefinition();
+  project.Observer.From(document.Observer());
+  project.UseSceneSettings = document.UseSceneSettings();
+  vtkRiemannIntegrationSettings* rays = document.RaySettings();
+  const char* integrators[] = { "euler", "rk4", "dp45" };
+  project.Integration = { { "IntegratorType", integrators[rays->GetIntegratorType()] },
+    { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
+    { "MaximumError", rays->GetMaximumError() },
+    { "MaximumPropagation", rays->GetMaximumPropagation() },
+    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() } };
+  for (const auto& item : document.Items())
+  {
+    project.Items.push_back(
+      { item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
+  }
+  return project;
+}
+
+nlohmann::json ProjectToJson(const ProjectData& project)
+{
+  Json items = Json::array();
+  for (const ItemState& item : project.Items)
+  {
+    items.push_back({ { "kind", item.Kind }, { "name", item.Name }, { "visible", item.Visible },
+      { "settings", item.Settings } });
+  }
+  Json layout = { { "views", project.Views } };
+  if (project.HasOutsideCamera)
+  {
+    layout["outside-camera"] = CameraToJson(project.OutsideCamera);
+  }
+  return { { "riemann-studio", 1 },
+    { "metric", { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
+                  { "time", project.Time } } },
+    { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
+    { "observer", CameraToJson(project.Observer) },
+    { "inside", { { "backend", project.Backend }, { "samples", project.Samples },
+                  { "use-scene-settings", project.UseSceneSettings },
+                  { "integration", project.Integration } } },
+    { "items", items }, { "layout", layout } };
+}
+
+bool LooksLikeProject(const std::string& text)
+{
+  const Json root = Json::parse(text, nullptr, false);
+  return root.is_object() && root.contains("riemann-studio");
+}
+
+ProjectData ParseProject(const std::string& text)
+{
+  Json root;
+  try
+  {
+    root = Json::parse(text);
+  }
+  catch (const Json::exception& e)
+  {
+    std::string message = e.what();
+    const std::size_t bracket = message.find("] ");
+    throw ProjectError(
+      "invalid JSON: " + (bracket == std::string::npos ? message : message.substr(bracket + 2)));
+  }
+  if (!root.is_object() || !root.contains("riemann-studio"))
+  {
+    throw ProjectError("not a Riemann Studio project (no \"riemann-studio\" key)");
+  }
+  if (root.at("riemann-studio") != 1)
+  {
+    Fail("riemann-studio", "unknown project version (this app reads version 1)");
+  }
+  for (const auto& entry : root.items())
+  {
+    static const char* const known[] = { "riemann-studio", "metric", "scene", "observer", "inside",
+      "items", "layout" };
+    if (std::find_if(std::begin(known), std::end(known),
+          [&](const char* key) { return entry.key() == key; }) == std::end(known))
+    {
+      Fail(entry.key(), "unknown key");
+    }
+  }
+  ProjectData project;
+  ParseMetric(Member(root, "metric", "project"), project);
+  if (root.contains("scene"))
+  {
+    ParseScene(root.at("scene"), project);
+  }
+  project.Observer = ParseCamera(Member(root, "observer", "project"), "observer");
+  if (root.contains("inside"))
+  {
+    ParseInside(root.at("inside"), project);
+  }
+  if (root.contains("items"))
+  {
+    ParseItems(root.at("items"), project);
+  }
+  if (root.contains("layout"))
+  {
+    const Json& layout = root.at("layout");
+    project.Views = layout.contains("views") ? String(layout.at("views"), "layout.views") : "both";
+    if (project.Views != "both" && project.Views != "inside" && project.Views != "outside")
+    {
+      Fail("layout.views", "expected \"both\", \"inside\" or \"outside\"");
+    }
+    if (layout.contains("outside-camera"))
+    {
+      project.OutsideCamera = ParseCamera(layout.at("outside-camera"), "layout.outside-camera");
+      project.HasOutsideCamera = true;
+    }
+  }
+  return project;
+}
+
+QString ApplyProject(const ProjectData& project, StudioDocument& document)
+{
+  // The scene first: a scene naming a metric would replace the metric text.
+  document.RemoveAllItems();
+  QString error;
+  if (!project.SceneFile.empty())
+  {
+    error = document.LoadSceneFile(QString::fromStdString(project.SceneFile));
+  }
+  else if (!project.SceneText.empty())
+  {
+    error = document.SetSceneText(project.SceneText);
+  }
+  else
+  {
+    document.ResetScene();
+  }
+  if (!error.isEmpty())
+  {
+    return QStringLiteral("scene: ") + error;
+  }
+  MetricStatus status = document.SetMetricText(project.MetricText);
+  for (const auto& value : project.ParameterValues)
+  {
+    if (status.Ok())
+    {
+      status = document.SetParameterValue(value.first, value.second);
+    }
+  }
+  if (status.Ok())
+  {
+    status = document.SetTime(project.Time);
+  }
+  if (!status.Ok())
+  {
+    return QStringLiteral("metric: ") + status.Message;
+  }
+  vtkRiemannIntegrationSettings* rays = document.RaySettings();
+  for (const auto& entry : project.Integration.items())
+  {
+    if (entry.key() == "IntegratorType")
+    {
+      rays->SetIntegratorTypeFromName(entry.value().get<std::string>().c_str());
+    }
+    else if (entry.key() == "InitialIntegrationStep")
+    {
+      rays->SetInitialIntegrationStep(entry.value().get<double>());
+    }
+    else if (entry.key() == "MaximumError")
+    {
+      rays->SetMaximumError(entry.value().get<double>());
+    }
+    else if (entry.key() == "MaximumPropagation")
+    {
+      rays->SetMaximumPropagation(entry.value().get<double>());
+    }
+    else if (entry.key() == "MaximumNumberOfSteps")
+    {
+      rays->SetMaximumNumberOfSteps(static_cast<vtkIdType>(entry.value().get<double>()));
+    }
+  }
+  document.SetUseSceneSettings(project.UseSceneSettings);
+  project.Observer.To(document.Observer());
+  document.ObserverChanged();
+  for (const ItemState& state : project.Items)
+  {
+    std::unique_ptr<PipelineItem> item =
+      MakePipelineItem(state.Kind, QString::fromStdString(state.Name));
+    item->ApplySettings(state.Settings);
+    item->SetVisible(state.Visible);
+    document.AddItem(std::move(item));
+  }
+  return QString();
+}
+
+QString WriteFileAtomically(const QString& path, const QByteArray& bytes)
+{
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly))
+  {
+    return QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+  }
+  if (file.write(bytes) != bytes.size())
+  {
+    const QString why = file.errorString();
+    file.cancelWriting();
+    return QStringLiteral("%1: writing failed: %2").arg(path, why);
+  }
+  if (!file.commit())
+  {
+    return QStringLiteral("%1: writing failed: %2").arg(path, file.errorString());
+  }
+  return QString();
+}
+}
+}

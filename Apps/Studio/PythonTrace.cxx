@@ -1,0 +1,196 @@
+#include "PythonTrace.h"
+
+#include "PipelineItem.h"
+#include "StudioDocument.h"
+
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkCamera.h"
+
+#include <cctype>
+#include <set>
+#include <sstream>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+/// A Python string literal for any text (JSON included): json.dumps-style.
+std::string PythonString(const std::string& text)
+{
+  return nlohmann::json(text).dump();
+}
+
+/// A Python identifier from an item's name ("Geodesics 1" -> "geodesics_1").
+std::string Identifier(const std::string& name, std::set<std::string>& used)
+{
+  std::string id;
+  for (char c : name)
+  {
+    id += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  }
+  if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0])))
+  {
+    id = "item_" + id;
+  }
+  std::string unique = id;
+  for (int n = 2; used.count(unique) || unique == "metric" || unique == "scene" ||
+       unique == "camera" || unique == "riemann"; ++n)
+  {
+    unique = id + "_" + std::to_string(n);
+  }
+  used.insert(unique);
+  return unique;
+}
+
+void WriteHeader(std::ostream& out)
+{
+  out << R"(#!/usr/bin/env python3
+"""A Riemann Studio session, rebuilt with the RiemannVTK Python package.
+
+Written by riemann-studio (File > Export > Python Script). Run it with the
+Python that has Debian's VTK bindings (/usr/bin/python3) and the `riemann`
+package on PYTHONPATH; it updates every filter of the session and, with
+--output-dir, writes their outputs (.vtp / .vti, for ParaView).
+"""
+import argparse
+import os
+import sys
+
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
+from vtkmodules.vtkRenderingCore import vtkCamera
+
+import riemann
+
+
+def seeds_from_cone(position, axis, angle, count):
+    """Seeds at `position` with the cone of directions of vtkRiemannDirectionGrid."""
+    grid = riemann.vtkRiemannDirectionGrid()
+    grid.SetNumberOfDirections(count)
+    grid.SetConeAxis(axis)
+    grid.SetConeAngle(angle)
+    grid.Update()
+    directions = grid.GetOutput().GetPoints().GetData().NewInstance()
+    directions.DeepCopy(grid.GetOutput().GetPoints().GetData())
+    directions.SetName("Direction")
+    points = vtkPoints()
+    for _ in range(directions.GetNumberOfTuples()):
+        points.InsertNextPoint(position)
+    seeds = vtkPolyData()
+    seeds.SetPoints(points)
+    seeds.GetPointData().AddArray(directions)
+    return seeds
+
+
+def write(data, path):
+    writer = vtkXMLImageDataWriter() if isinstance(data, vtkImageData) else vtkXMLPolyDataWriter()
+    writer.SetFileName(path + (".vti" if isinstance(data, vtkImageData) else ".vtp"))
+    writer.SetInputData(data)
+    if not writer.Write():
+        sys.exit("cannot write " + writer.GetFileName())
+
+
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("--output-dir", help="write every item's output there")
+args = parser.parse_args()
+
+)";
+}
+
+void WriteMetric(std::ostream& out, const StudioDocument& document)
+{
+  out << "# The metric (the editor's text with the slider values applied) at time t.\n"
+      << "metric = riemann.vtkRiemannMetric()\n"
+      << "metric.SetTime(" << PythonNumber(document.Time()) << ")\n"
+      << "if not metric.SetDefinition(" << PythonString(document.EffectiveMetricText()) << "):\n"
+      << "    sys.exit(metric.GetLastError())\n\n";
+}
+
+void WriteScene(std::ostream& out, const StudioDocument& document)
+{
+  vtkRiemannScene* scene = document.Scene();
+  out << "# The scene (no definition: the default grid).\n"
+      << "scene = riemann.vtkRiemannScene()\n";
+  const std::string file = scene->GetDefinitionFile();
+  if (!file.empty())
+  {
+    out << "if not scene.SetDefinitionFile(" << PythonString(file) << "):\n"
+        << "    sys.exit(scene.GetLastError())\n";
+  }
+  else if (scene->HasDefinition())
+  {
+    out << "if not scene.SetDefinition(" << PythonString(scene->GetDefinition()) << "):\n"
+        << "    sys.exit(scene.GetLastError())\n";
+  }
+  out << "\n";
+}
+
+void WriteObserver(std::ostream& out, const StudioDocument& document)
+{
+  vtkCamera* camera = document.Observer();
+  vtkRiemannIntegrationSettings* rays = document.RaySettings();
+  const char* integrators[] = { "euler", "rk4", "dp45" };
+  out << "# The observer (the inside view's camera) and its rays.\n"
+      << "camera = vtkCamera()\n"
+      << "camera.SetPosition" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetPosition(), camera->GetPosition() + 3))) << "\n"
+      << "camera.SetFocalPoint" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetFocalPoint(), camera->GetFocalPoint() + 3))) << "\n"
+      << "camera.SetViewUp" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetViewUp(), camera->GetViewUp() + 3))) << "\n"
+      << "camera.SetViewAngle(" << PythonNumber(camera->GetViewAngle()) << ")\n"
+      << "width, height = " << document.ViewWidth() << ", " << document.ViewHeight() << "\n"
+      << "use_scene_settings = " << (document.UseSceneSettings() ? "True" : "False") << "\n"
+      << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n"
+      << "ray_settings.SetIntegratorTypeFromName(\"" << integrators[rays->GetIntegratorType()]
+      << "\")\n"
+      << "ray_settings.SetInitialIntegrationStep(" << PythonNumber(rays->GetInitialIntegrationStep())
+      << ")\n"
+      << "ray_settings.SetMaximumError(" << PythonNumber(rays->GetMaximumError()) << ")\n"
+      << "ray_settings.SetMaximumPropagation(" << PythonNumber(rays->GetMaximumPropagation())
+      << ")\n"
+      << "ray_settings.SetMaximumNumberOfSteps(" << rays->GetMaximumNumberOfSteps() << ")\n\n";
+}
+}
+
+std::string PythonScript(const StudioDocument& document)
+{
+  std::ostringstream out;
+  WriteHeader(out);
+  WriteMetric(out, document);
+  WriteScene(out, document);
+  WriteObserver(out, document);
+  std::set<std::string> used;
+  out << "# The pipeline items.\nitems = {}\n";
+  for (const auto& item : document.Items())
+  {
+    const std::string name = item->Name().toStdString();
+    const std::string var = Identifier(name, used);
+    out << "\n# " << name << " (" << item->Kind() << ")\n";
+    for (const std::string& line : item->PythonLines(var))
+    {
+      out << line << "\n";
+    }
+    out << var << ".Update()\n"
+        << "items[" << PythonString(name) << "] = " << var << "\n";
+  }
+  out << R"(
+if args.output_dir:
+    os.makedirs(args.output_dir, exist_ok=True)
+    for name, algorithm in items.items():
+        for port in range(algorithm.GetNumberOfOutputPorts()):
+            suffix = "" if port == 0 else "-%d" % port
+            write(algorithm.GetOutputDataObject(port), os.path.join(args.output_dir, name + suffix))
+for name, algorithm in items.items():
+    data = algorithm.GetOutputDataObject(0)
+    print("%s: %s with %d points" % (name, data.GetClassName(), data.GetNumberOfPoints()))
+)";
+  return out.str();
+}
+}
+}

@@ -1,0 +1,861 @@
+#include "StudioMainWindow.h"
+
+#include "InsideView.h"
+#include "MetricEditor.h"
+#include "OutsideView.h"
+#include "ParameterPanel.h"
+#include "PipelineBrowser.h"
+#include "PipelineItems.h"
+#include "ProjectFile.h"
+#include "PropertiesPanel.h"
+#include "PythonTrace.h"
+#include "StudioDocument.h"
+#include "TimeBar.h"
+
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayBundle.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QBuffer>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPainter>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include <cstdio>
+#include <fstream>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+/// The folder of the shipped metrics and scenes.
+QString DataDirectory()
+{
+  const QByteArray fromEnvironment = qgetenv("RIEMANN_DATA_DIR");
+  if (!fromEnvironment.isEmpty())
+  {
+    return QString::fromLocal8Bit(fromEnvironment);
+  }
+  // An installed app: <prefix>/share/RiemannVTK/Data; a build tree: the source's Data.
+  const QString installed = QCoreApplication::applicationDirPath() + "/../share/RiemannVTK/Data";
+  return QFileInfo::exists(installed) ? installed : QStringLiteral(RIEMANN_STUDIO_DATA_DIR);
+}
+
+QString ReadText(const QString& path, QString& error)
+{
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly))
+  {
+    error = QStringLiteral("%1: cannot open: %2").arg(path, file.errorString());
+    return QString();
+  }
+  return QString::fromUtf8(file.readAll());
+}
+
+/// Names of vtkRiemannGeodesicTracer's termination codes (the bundle's too).
+QString ReasonName(int reason)
+{
+  switch (reason)
+  {
+    case 1:
+      return "left the domain";
+    case 3:
+      return "unexpected value";
+    case 4:
+      return "reached its maximum length";
+    case 5:
+      return "ran out of steps";
+    case 6:
+      return "stagnated";
+    case 8:
+      return "the metric degenerates";
+    case 9:
+      return "hit a surface";
+    default:
+      return QStringLiteral("reason %1").arg(reason);
+  }
+}
+}
+
+StudioMainWindow::StudioMainWindow(QWidget* parent)
+  : QMainWindow(parent)
+  , Doc(new StudioDocument(this))
+{
+  this->setObjectName("RiemannStudio");
+  this->resize(1500, 900);
+  this->InsideWidget = new InsideView(this->Doc, this);
+  this->InsideWidget->setObjectName("InsideView");
+  this->OutsideWidget = new OutsideView(this->Doc, this);
+  this->OutsideWidget->setObjectName("OutsideView");
+  this->Views = new QSplitter(Qt::Horizontal, this);
+  this->Views->addWidget(this->InsideWidget);
+  this->Views->addWidget(this->OutsideWidget);
+  this->Views->setStretchFactor(0, 1);
+  this->Views->setStretchFactor(1, 1);
+  this->setCentralWidget(this->Views);
+
+  this->BuildDocks();
+  this->BuildStatusBar();
+  this->BuildMenus();
+
+  // The link between the views: a picked pixel's ray appears outside.
+  QObject::connect(this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
+  QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
+    [this](const QString& message) { this->ShowMessage("Inside view: " + message, true); });
+  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
+    this->FrameTime->setText(QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1));
+  });
+  QObject::connect(this->Doc, &StudioDocument::ItemFinished, this, [this](PipelineItem* item, bool) {
+    const QString error = this->Doc->ItemError(item);
+    if (!error.isEmpty())
+    {
+      this->ShowMessage(item->Name() + ": " + error, true);
+    }
+    if (item == this->BrowserWidget->SelectedItem() && !this->PropertiesWidget->HasPendingEdits())
+    {
+      this->ShowSelection(); // new colouring arrays
+    }
+  });
+  QObject::connect(this->Doc, &StudioDocument::MetricChanged, this, &StudioMainWindow::UpdateTitle);
+  this->UpdateTitle();
+  this->BrowserWidget->SelectScene();
+}
+
+StudioMainWindow::~StudioMainWindow()
+{
+  this->Doc->Jobs()->CancelAll();
+  this->Doc->Jobs()->WaitForAll();
+}
+
+void StudioMainWindow::BuildDocks()
+{
+  this->BrowserWidget = new PipelineBrowser(this->Doc, this);
+  this->PropertiesWidget = new PropertiesPanel(this);
+  auto* left = new QSplitter(Qt::Vertical, this);
+  left->addWidget(this->BrowserWidget);
+  left->addWidget(this->PropertiesWidget);
+  left->setStretchFactor(1, 2);
+  auto* pipelineDock = new QDockWidget(QStringLiteral("Pipeline"), this);
+  pipelineDock->setObjectName("PipelineDock");
+  pipelineDock->setWidget(left);
+  this->addDockWidget(Qt::LeftDockWidgetArea, pipelineDock);
+
+  this->EditorWidget = new MetricEditor(this->Doc, this);
+  this->ParameterWidget = new ParameterPanel(this->Doc, this);
+  auto* right = new QSplitter(Qt::Vertical, this);
+  right->addWidget(this->EditorWidget);
+  right->addWidget(this->ParameterWidget);
+  right->setStretchFactor(0, 3);
+  auto* metricDock = new QDockWidget(QStringLiteral("Metric"), this);
+  metricDock->setObjectName("MetricDock");
+  metricDock->setWidget(right);
+  this->addDockWidget(Qt::RightDockWidgetArea, metricDock);
+  this->resizeDocks({ pipelineDock, metricDock }, { 330, 360 }, Qt::Horizontal);
+
+  this->TimeWidget = new TimeBar(this->Doc, this);
+  this->addToolBar(Qt::BottomToolBarArea, this->TimeWidget);
+
+  QObject::connect(this->BrowserWidget, &PipelineBrowser::SelectionChanged, this,
+    &StudioMainWindow::ShowSelection);
+  QObject::connect(this->BrowserWidget, &PipelineBrowser::DeleteRequested, this,
+    [this](PipelineItem* item) { this->Doc->RemoveItem(item); });
+  QObject::connect(this->EditorWidget, &MetricEditor::Checked, this,
+    [this](bool ok, const QString& message) {
+      this->ShowMessage(ok ? QStringLiteral("Metric applied") : "Metric: " + message, !ok);
+    });
+  QObject::connect(this->ParameterWidget, &ParameterPanel::ValueApplied, this,
+    [this](bool ok, const QString& message) {
+      if (!ok)
+      {
+        this->ShowMessage("Parameter: " + message, true);
+      }
+    });
+  QObject::connect(this->TimeWidget, &TimeBar::TimeApplied, this,
+    [this](bool ok, const QString& message) {
+      if (!ok)
+      {
+        this->ShowMessage("Time: " + message, true);
+      }
+    });
+  QObject::connect(this->TimeWidget, &TimeBar::ExportFramesRequested, this, [this]() {
+    const QString folder = QFileDialog::getExistingDirectory(this, "Export Frames To");
+    if (folder.isEmpty())
+    {
+      return;
+    }
+    bool ok = false;
+    const int count = QInputDialog::getInt(this, "Export Frames", "Number of frames (t from 0 to 1):",
+      25, 2, 10000, 1, &ok);
+    if (ok)
+    {
+      const QString error = this->ExportFrames(folder, count);
+      this->ShowMessage(error.isEmpty() ? QStringLiteral("%1 frames written to %2").arg(count).arg(folder)
+                                        : error, !error.isEmpty());
+    }
+  });
+}
+
+void StudioMainWindow::BuildStatusBar()
+{
+  this->Message = new QLabel(this);
+  this->Message->setObjectName("StatusMessage");
+  this->FrameTime = new QLabel(this);
+  this->Progress = new QProgressBar(this);
+  this->Progress->setRange(0, 1000);
+  this->Progress->setMaximumWidth(220);
+  this->Progress->setVisible(false);
+  this->Cancel = new QPushButton(QStringLiteral("Cancel"), this);
+  this->Cancel->setObjectName("CancelButton");
+  this->Cancel->setVisible(false);
+  this->statusBar()->addWidget(this->Message, 1);
+  this->statusBar()->addPermanentWidget(this->FrameTime);
+  this->statusBar()->addPermanentWidget(this->Progress);
+  this->statusBar()->addPermanentWidget(this->Cancel);
+  JobRunner* jobs = this->Doc->Jobs();
+  QObject::connect(jobs, &JobRunner::Progress, this, [this](const QString& label, double fraction) {
+    this->Progress->setFormat(label + " %p%");
+    this->Progress->setValue(static_cast<int>(fraction * 1000));
+  });
+  QObject::connect(jobs, &JobRunner::RunningChanged, this, [this](int running) {
+    this->Progress->setVisible(running > 0);
+    this->Cancel->setVisible(running > 0);
+    if (running == 0)
+    {
+      this->Progress->setValue(0);
+    }
+  });
+  QObject::connect(this->Cancel, &QPushButton::clicked, this, [this]() {
+    this->Doc->Jobs()->CancelAll();
+    this->ShowMessage("Cancelled: the items keep their last results");
+  });
+}
+
+void StudioMainWindow::BuildMenus()
+{
+  // File
+  QMenu* file = this->menuBar()->addMenu("&File");
+  file->addAction(this->style()->standardIcon(QStyle::SP_DialogOpenButton), "&Open...", this,
+    [this]() {
+      const QString path = this->AskOpenPath("Open Project, Metric or Scene", "JSON (*.json);;All files (*)");
+      if (!path.isEmpty())
+      {
+        this->OpenFile(path);
+      }
+    }, QKeySequence::Open);
+  file->addAction("&Save Project", this, [this]() {
+    const QString path = this->ProjectPath.isEmpty()
+      ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
+      : this->ProjectPath;
+    if (!path.isEmpty())
+    {
+      const QString error = this->SaveProject(path);
+      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+    }
+  }, QKeySequence::Save);
+  file->addAction("Save Project &As...", this, [this]() {
+    const QString path = this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json");
+    if (!path.isEmpty())
+    {
+      const QString error = this->SaveProject(path);
+      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+    }
+  }, QKeySequence::SaveAs);
+  file->addAction("Save &Metric As...", this, [this]() {
+    const QString path = this->AskSavePath("Save Metric (with the slider values)", "Metric (*.json)", "json");
+    if (!path.isEmpty())
+    {
+      const QString error = this->SaveMetric(path);
+      this->ShowMessage(error.isEmpty() ? "Metric saved to " + path : error, !error.isEmpty());
+    }
+  });
+  QMenu* examples = file->addMenu("&Examples");
+  for (const QString& folder : { QStringLiteral("metrics"), QStringLiteral("scenes") })
+  {
+    QMenu* menu = examples->addMenu(folder == "metrics" ? "Metrics" : "Scenes");
+    const QDir directory(DataDirectory() + "/" + folder);
+    for (const QFileInfo& entry : directory.entryInfoList({ "*.json" }, QDir::Files, QDir::Name))
+    {
+      const QString path = entry.absoluteFilePath();
+      menu->addAction(entry.completeBaseName(), this, [this, path]() { this->OpenFile(path); });
+    }
+  }
+  QMenu* exports = file->addMenu("E&xport");
+  exports->addAction("Selected Item's &Data...", this, [this]() {
+    PipelineItem* item = this->BrowserWidget->SelectedItem();
+    if (!item)
+    {
+      this->ShowMessage("Select an item in the pipeline browser first", true);
+      return;
+    }
+    const bool image = item->Kind() == "field";
+    const QString path = this->AskSavePath("Export " + item->Name(),
+      image ? "VTK image data (*.vti)" : "VTK poly data (*.vtp)", image ? "vti" : "vtp");
+    if (!path.isEmpty())
+    {
+      const QString error = this->ExportItemData(item, path);
+      this->ShowMessage(error.isEmpty() ? item->Name() + " written to " + path : error, !error.isEmpty());
+    }
+  });
+  const std::pair<const char*, Shot> shots[] = { { "Screenshot of the &Inside View...", InsideShot },
+    { "Screenshot of the &Outside View...", OutsideShot }, { "Screenshot of &Both Views...", BothShot },
+    { "Screenshot of the &Window...", WindowShot } };
+  for (const auto& shot : shots)
+  {
+    const Shot what = shot.second;
+    exports->addAction(shot.first, this, [this, what]() {
+      const QString path = this->AskSavePath("Save Screenshot", "PNG image (*.png)", "png");
+      if (!path.isEmpty())
+      {
+        const QString error = this->SaveScreenshot(path, what);
+        this->ShowMessage(error.isEmpty() ? "Screenshot saved to " + path : error, !error.isEmpty());
+      }
+    });
+  }
+  exports->addAction("&Python Script...", this, [this]() {
+    const QString path = this->AskSavePath("Export Python Script", "Python (*.py)", "py");
+    if (!path.isEmpty())
+    {
+      const QString error = this->ExportPythonScript(path);
+      this->ShowMessage(error.isEmpty() ? "Python script written to " + path : error, !error.isEmpty());
+    }
+  });
+  exports->addAction(this->TimeWidget->ExportAction());
+  file->addSeparator();
+  file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+
+  // Pipeline: add items (menu and toolbar), delete.
+  QMenu* pipeline = this->menuBar()->addMenu("&Pipeline");
+  QToolBar* tools = this->addToolBar("Pipeline");
+  tools->setObjectName("PipelineToolBar");
+  for (const std::string& kind : PipelineItemKinds())
+  {
+    QAction* add = pipeline->addAction("Add " + PipelineItemLabel(kind), this,
+      [this, kind]() { this->Doc->AddItem(kind); });
+    add->setObjectName(QString::fromStdString("Add:" + kind));
+    tools->addAction(add);
+  }
+  pipeline->addSeparator();
+  pipeline->addAction("&Delete Selected Item", this, [this]() {
+    if (PipelineItem* item = this->BrowserWidget->SelectedItem())
+    {
+      this->Doc->RemoveItem(item);
+    }
+  });
+  tools->addSeparator();
+
+  // View: layout, cameras, picking, backend.
+  QMenu* view = this->menuBar()->addMenu("&View");
+  view->addAction("Both Views &Side by Side", this, [this]() { this->SetViewLayout(BothViews); });
+  view->addAction("&Inside View Only", this, [this]() { this->SetViewLayout(InsideOnly); });
+  view->addAction("&Outside View Only", this, [this]() { this->SetViewLayout(OutsideOnly); });
+  view->addSeparator();
+  QAction* resetInside = view->addAction("Reset &Observer (the scene's camera)", this,
+    [this]() { this->Doc->ResetObserver(); });
+  QAction* resetOutside = view->addAction("Reset Outside &Camera", this, [this]() {
+    this->OutsideWidget->ResetCamera();
+    this->OutsideWidget->RenderNow();
+  });
+  this->PickAction = view->addAction("&Pick Rays (click a pixel of the inside view)");
+  this->PickAction->setCheckable(true);
+  this->PickAction->setToolTip("Click a pixel of the inside view to see its ray in the outside "
+                               "view (Ctrl+click always picks)");
+  QObject::connect(this->PickAction, &QAction::toggled, this,
+    [this](bool on) { this->InsideWidget->SetPickMode(on); });
+  tools->addAction(resetInside);
+  tools->addAction(resetOutside);
+  tools->addAction(this->PickAction);
+
+  QMenu* help = this->menuBar()->addMenu("&Help");
+  help->addAction("&About Riemann Studio", this, [this]() {
+    QMessageBox::about(this, "About Riemann Studio",
+      "<b>Riemann Studio</b> (RiemannVTK)<br>Design a Riemannian metric on R<sup>3</sup> and see "
+      "it from inside (curved rays) and outside.<br>Ctrl+click the inside view to see a pixel's "
+      "ray. The metric format: Documentation/MetricFormat.md.");
+  });
+}
+
+void StudioMainWindow::ShowSelection()
+{
+  if (PipelineItem* item = this->BrowserWidget->SelectedItem())
+  {
+    this->PropertiesWidget->Show(
+      QStringLiteral("<b>%1</b> (%2)").arg(item->Name(), QString::fromStdString(item->FilterClass())),
+      item->Properties(), item->Settings(),
+      [item](const nlohmann::json& settings) { return item->ApplySettings(settings); });
+  }
+  else if (this->BrowserWidget->IsSceneSelected())
+  {
+    this->ShowInsideViewSettings();
+  }
+  else
+  {
+    this->PropertiesWidget->Clear(QStringLiteral(
+      "<b>Metric</b>: %1<br>Edit it in the Metric panel; its parameters get sliders there.")
+                                    .arg(QString::fromStdString(this->Doc->Metric()->GetDescription())
+                                           .toHtmlEscaped()));
+  }
+}
+
+void StudioMainWindow::ShowInsideViewSettings()
+{
+  PropertySpec backend;
+  backend.Key = "Backend";
+  backend.Label = "Renderer";
+  backend.Type = PropertySpec::Choice;
+  backend.Choices = QStringList{ "gpu", "cpu" };
+  backend.Help = "gpu: vtkRiemannRayTracePass (GLSL); cpu: vtkRiemannCPURayTracer (Embree, samples)";
+  PropertySpec samples;
+  samples.Key = "SamplesPerPixel";
+  samples.Label = "Samples (CPU)";
+  samples.Type = PropertySpec::Integer;
+  samples.Minimum = 1;
+  samples.Maximum = 4096;
+  PropertySpec sceneSettings;
+  sceneSettings.Key = "UseSceneSettings";
+  sceneSettings.Label = "Scene's integrator";
+  sceneSettings.Type = PropertySpec::Boolean;
+  sceneSettings.Help = "Use the scene's \"integrator\" block (else the settings below)";
+  // The integration settings of the rays, with an item's checks.
+  GeodesicsItem reference("rays");
+  std::vector<PropertySpec> specs{ backend, samples, sceneSettings };
+  for (const PropertySpec& spec : reference.Properties())
+  {
+    if (spec.Key == "IntegratorType" || spec.Key == "InitialIntegrationStep" ||
+      spec.Key == "MaximumError" || spec.Key == "MaximumPropagation" ||
+      spec.Key == "MaximumNumberOfSteps")
+    {
+      specs.push_back(spec);
+    }
+  }
+  vtkRiemannIntegrationSettings* rays = this->Doc->RaySettings();
+  const char* integrators[] = { "euler", "rk4", "dp45" };
+  const nlohmann::json values = { { "Backend", this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu" },
+    { "SamplesPerPixel", this->InsideWidget->GetSamplesPerPixel() },
+    { "UseSceneSettings", this->Doc->UseSceneSettings() },
+    { "IntegratorType", integrators[rays->GetIntegratorType()] },
+    { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
+    { "MaximumError", rays->GetMaximumError() },
+    { "MaximumPropagation", rays->GetMaximumPropagation() },
+    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() } };
+  this->PropertiesWidget->Show("<b>Inside view</b> (the scene's rays)", specs, values,
+    [this](const nlohmann::json& changes) {
+      vtkRiemannIntegrationSettings* settings = this->Doc->RaySettings();
+      for (const auto& entry : changes.items())
+      {
+        const std::string& key = entry.key();
+        const nlohmann::json& value = entry.value();
+        if (key == "Backend")
+        {
+          this->InsideWidget->SetBackend(value == "cpu" ? InsideView::CPU : InsideView::GPU);
+        }
+        else if (key == "SamplesPerPixel")
+        {
+          this->InsideWidget->SetSamplesPerPixel(value.get<int>());
+        }
+        else if (key == "UseSceneSettings")
+        {
+          this->Doc->SetUseSceneSettings(value.get<bool>());
+        }
+        else if (key == "IntegratorType")
+        {
+          settings->SetIntegratorTypeFromName(value.get<std::string>().c_str());
+        }
+        else if (key == "InitialIntegrationStep")
+        {
+          settings->SetInitialIntegrationStep(value.get<double>());
+        }
+        else if (key == "MaximumError")
+        {
+          settings->SetMaximumError(value.get<double>());
+        }
+        else if (key == "MaximumPropagation")
+        {
+          settings->SetMaximumPropagation(value.get<double>());
+        }
+        else if (key == "MaximumNumberOfSteps")
+        {
+          settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(value.get<double>()));
+        }
+      }
+      this->InsideWidget->RenderNow();
+      this->Doc->ObserverChanged(); // ray bundles follow the new settings
+      return QString();
+    });
+}
+
+void StudioMainWindow::PickPixel(int column, int row)
+{
+  int width, height;
+  this->InsideWidget->PixelSize(width, height);
+  if (column < 0 || row < 0 || column >= width || row >= height)
+  {
+    return;
+  }
+  // The same rays the inside view draws: vtkRiemannRayBundle for one pixel.
+  vtkNew<vtkRiemannRayBundle> bundle;
+  const JobInputs inputs = this->Doc->MakeJobInputs();
+  bundle->SetMetric(inputs.Metric);
+  bundle->SetScene(inputs.Scene);
+  bundle->SetCamera(inputs.Observer);
+  bundle->SetWidth(width);
+  bundle->SetHeight(height);
+  bundle->SetUseSceneSettings(inputs.UseSceneSettings);
+  bundle->GetIntegrationSettings()->DeepCopy(inputs.RaySettings);
+  bundle->SetPixelRegion(column, column, row, row);
+  bundle->UsePixelRegionOn();
+  bundle->Update();
+  vtkPolyData* ray = bundle->GetOutput();
+  if (ray->GetNumberOfCells() != 1)
+  {
+    this->ShowMessage(QStringLiteral("Pixel (%1, %2): no ray (%3)")
+                        .arg(column)
+                        .arg(row)
+                        .arg(QString::fromUtf8(bundle->GetLastError())),
+      true);
+    return;
+  }
+  this->Picked->DeepCopy(ray);
+  this->OutsideWidget->ShowPickedRay(this->Picked);
+  vtkCellData* cells = ray->GetCellData();
+  const double length = cells->GetArray("Length")->GetTuple1(0);
+  const int reason = static_cast<int>(cells->GetArray("ReasonForTermination")->GetTuple1(0));
+  double end[3];
+  ray->GetPoint(ray->GetNumberOfPoints() - 1, end);
+  this->ShowMessage(QStringLiteral("Pixel (%1, %2): ray ends at (%3, %4, %5) after length %6: %7")
+                      .arg(column)
+                      .arg(row)
+                      .arg(end[0], 0, 'f', 3)
+                      .arg(end[1], 0, 'f', 3)
+                      .arg(end[2], 0, 'f', 3)
+                      .arg(length, 0, 'f', 3)
+                      .arg(ReasonName(reason)));
+}
+
+void StudioMainWindow::ShowMessage(const QString& message, bool error)
+{
+  this->Message->setText(message);
+  this->Message->setStyleSheet(error ? QStringLiteral("color: #b00020") : QString());
+}
+
+QString StudioMainWindow::StatusText() const
+{
+  return this->Message->text();
+}
+
+QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
+{
+  QString error;
+  const QString text = ReadText(path, error);
+  const std::string utf8 = text.toStdString();
+  if (error.isEmpty())
+  {
+    if (LooksLikeProject(utf8))
+    {
+      try
+      {
+        const ProjectData project = ParseProject(utf8);
+        error = ApplyProject(project, *this->Doc);
+        if (error.isEmpty())
+        {
+          this->EditorWidget->SetText(QString::fromStdString(this->Doc->MetricText()));
+          this->InsideWidget->SetBackend(project.Backend == "cpu" ? InsideView::CPU : InsideView::GPU);
+          this->InsideWidget->SetSamplesPerPixel(project.Samples);
+          this->SetViewLayout(project.Views == "inside" ? InsideOnly
+              : project.Views == "outside"             ? OutsideOnly
+                                                       : BothViews);
+          if (project.HasOutsideCamera)
+          {
+            project.OutsideCamera.To(this->OutsideWidget->Renderer()->GetActiveCamera());
+            this->OutsideWidget->Renderer()->ResetCameraClippingRange();
+          }
+          this->ProjectPath = path;
+        }
+      }
+      catch (const ProjectError& e)
+      {
+        error = e.what();
+      }
+    }
+    else
+    {
+      const nlohmann::json root = nlohmann::json::parse(utf8, nullptr, false);
+      const bool scene = root.is_object() &&
+        (root.contains("objects") || root.contains("camera") || root.contains("metric"));
+      if (scene)
+      {
+        error = this->Doc->LoadSceneFile(path);
+        if (error.isEmpty())
+        {
+          this->EditorWidget->SetText(QString::fromStdString(this->Doc->MetricText()));
+        }
+      }
+      else
+      {
+        // A metric: checked before the editor shows it, so a bad file is
+        // refused and the editor keeps its text.
+        vtkNew<vtkRiemannMetric> check;
+        if (!check->SetDefinition(utf8.c_str()))
+        {
+          const TextLocation where = LocateMetricError(utf8, check->GetLastError());
+          error = (where.Known ? QString::fromStdString(FormatLocation(where)) + ": " : QString()) +
+            QString::fromUtf8(check->GetLastError());
+        }
+        else
+        {
+          this->EditorWidget->SetText(text);
+        }
+      }
+    }
+  }
+  if (!error.isEmpty())
+  {
+    if (!error.startsWith(path))
+    {
+      error = path + ": " + error;
+    }
+    this->ShowMessage(error, true);
+    if (showDialog)
+    {
+      QMessageBox::warning(this, "Cannot open " + QFileInfo(path).fileName(),
+        error + "\n\nNothing was changed.");
+    }
+    return error;
+  }
+  this->ShowMessage("Opened " + path);
+  this->UpdateTitle();
+  this->OutsideWidget->ResetCamera();
+  this->OutsideWidget->RenderNow();
+  return QString();
+}
+
+QString StudioMainWindow::SaveProject(const QString& path)
+{
+  ProjectData project = CaptureProject(*this->Doc);
+  project.Backend = this->InsideWidget->GetBackend() == InsideView::CPU ? "cpu" : "gpu";
+  project.Samples = this->InsideWidget->GetSamplesPerPixel();
+  project.Views = this->CurrentLayout == InsideOnly ? "inside"
+    : this->CurrentLayout == OutsideOnly            ? "outside"
+                                                    : "both";
+  project.HasOutsideCamera = true;
+  project.OutsideCamera.From(this->OutsideWidget->Renderer()->GetActiveCamera());
+  const std::string text = ProjectToJson(project).dump(2) + "\n";
+  const QString error = WriteFileAtomically(path, QByteArray::fromStdString(text));
+  if (error.isEmpty())
+  {
+    this->ProjectPath = path;
+    this->UpdateTitle();
+  }
+  return error;
+}
+
+QString StudioMainWindow::SaveMetric(const QString& path)
+{
+  return WriteFileAtomically(path, QByteArray::fromStdString(this->Doc->EffectiveMetricText()));
+}
+
+QString StudioMainWindow::ExportPythonScript(const QString& path)
+{
+  return WriteFileAtomically(path, QByteArray::fromStdString(PythonScript(*this->Doc)));
+}
+
+QString StudioMainWindow::ExportItemData(PipelineItem* item, const QString& path)
+{
+  if (!item->Result(0))
+  {
+    return item->Name() + ": nothing to export yet (its job has not finished)";
+  }
+  const QFileInfo info(path);
+  for (int port = 0; port < item->NumberOfResults(); ++port)
+  {
+    vtkDataObject* data = item->Result(port);
+    const bool image = vtkImageData::SafeDownCast(data) != nullptr;
+    // Port 0 at the path given; other ports next to it (name-1.vtp, ...).
+    const QString target = port == 0
+      ? path
+      : info.dir().filePath(info.completeBaseName() + QStringLiteral("-%1.").arg(port) + (image ? "vti" : "vtp"));
+    // Whole or not at all: write a temporary file next to it, then rename.
+    const QString temporary = target + ".part";
+    vtkSmartPointer<vtkXMLWriter> writer;
+    if (image)
+    {
+      writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    }
+    else
+    {
+      writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    }
+    writer->SetInputDataObject(data);
+    writer->SetFileName(temporary.toLocal8Bit().constData());
+    if (!writer->Write())
+    {
+      QFile::remove(temporary);
+      return target + ": cannot write the file";
+    }
+    QFile::remove(target);
+    if (!QFile::rename(temporary, target))
+    {
+      QFile::remove(temporary);
+      return target + ": cannot replace the file";
+    }
+  }
+  return QString();
+}
+
+QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
+{
+  QImage image;
+  if (what == InsideShot)
+  {
+    image = this->InsideWidget->Capture();
+  }
+  else if (what == OutsideShot)
+  {
+    image = this->OutsideWidget->Capture();
+  }
+  else if (what == BothShot)
+  {
+    const QImage inside = this->InsideWidget->Capture();
+    const QImage outside = this->OutsideWidget->Capture();
+    image = QImage(inside.width() + outside.width(), std::max(inside.height(), outside.height()),
+      QImage::Format_RGB32);
+    image.fill(Qt::black);
+    QPainter painter(&image);
+    painter.drawImage(0, 0, inside);
+    painter.drawImage(inside.width(), 0, outside);
+  }
+  else
+  {
+    image = this->grab().toImage();
+  }
+  if (image.isNull())
+  {
+    return "nothing to capture (is the window shown?)";
+  }
+  QByteArray bytes;
+  QBuffer buffer(&bytes);
+  buffer.open(QIODevice::WriteOnly);
+  if (!image.save(&buffer, "PNG"))
+  {
+    return path + ": cannot encode PNG";
+  }
+  return WriteFileAtomically(path, bytes);
+}
+
+QString StudioMainWindow::ExportFrames(const QString& folder, int count)
+{
+  if (count < 2)
+  {
+    return "export frames: at least 2 frames are needed (t = 0 and t = 1)";
+  }
+  if (!QDir().mkpath(folder))
+  {
+    return folder + ": cannot create the folder";
+  }
+  const double before = this->Doc->Time();
+  QString error;
+  for (int k = 0; k < count && error.isEmpty(); ++k)
+  {
+    const MetricStatus status = this->Doc->SetTime(static_cast<double>(k) / (count - 1));
+    if (!status.Ok())
+    {
+      error = QStringLiteral("frame %1: %2").arg(k).arg(status.Message);
+      break;
+    }
+    this->InsideWidget->RenderNow();
+    if (this->InsideWidget->GetBackend() == InsideView::CPU)
+    {
+      this->Settle();
+    }
+    error = this->SaveScreenshot(QDir(folder).filePath(QString::asprintf("frame-%04d.png", k)), InsideShot);
+    this->Progress->setVisible(true);
+    this->Progress->setValue(1000 * (k + 1) / count);
+    QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+  }
+  this->Progress->setVisible(this->Doc->Jobs()->NumberOfRunningJobs() > 0);
+  this->Doc->SetTime(before);
+  return error;
+}
+
+void StudioMainWindow::SetViewLayout(Layout layout)
+{
+  this->CurrentLayout = layout;
+  this->InsideWidget->setVisible(layout != OutsideOnly);
+  this->OutsideWidget->setVisible(layout != InsideOnly);
+}
+
+void StudioMainWindow::Settle(int timeoutMilliseconds)
+{
+  QElapsedTimer timer;
+  timer.start();
+  do
+  {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+  } while (this->Doc->Jobs()->NumberOfRunningJobs() > 0 && timer.elapsed() < timeoutMilliseconds);
+  QCoreApplication::processEvents();
+  this->InsideWidget->RenderNow();
+  this->OutsideWidget->RenderNow();
+  QCoreApplication::processEvents();
+}
+
+QString StudioMainWindow::AskOpenPath(const QString& title, const QString& filter)
+{
+  return QFileDialog::getOpenFileName(this, title, QString(), filter);
+}
+
+QString StudioMainWindow::AskSavePath(const QString& title, const QString& filter, const QString& suffix)
+{
+  QString path = QFileDialog::getSaveFileName(this, title, QString(), filter);
+  if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
+  {
+    path += "." + suffix;
+  }
+  return path;
+}
+
+void StudioMainWindow::UpdateTitle()
+{
+  const QString project = this->ProjectPath.isEmpty() ? QStringLiteral("untitled")
+                                                      : QFileInfo(this->ProjectPath).fileName();
+  this->setWindowTitle(QStringLiteral("%1 - %2 - Riemann Studio")
+                         .arg(project, QString::fromStdString(this->Doc->Metric()->GetDescription())));
+}
+
+void StudioMainWindow::closeEvent(QCloseEvent* event)
+{
+  this->Doc->Jobs()->CancelAll();
+  this->Doc->Jobs()->WaitForAll();
+  event->accept();
+}
+}
+}

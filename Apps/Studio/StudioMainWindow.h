@@ -1,0 +1,135 @@
+/**
+ * @file StudioMainWindow.h
+ * @brief Riemann Studio's window, in ParaView's layout: pipeline browser and
+ * properties panel on the left, the inside and outside views in the middle,
+ * the metric editor with its parameter sliders on the right, the time bar
+ * at the bottom and a status bar with progress and Cancel.
+ */
+#ifndef RiemannStudio_StudioMainWindow_h
+#define RiemannStudio_StudioMainWindow_h
+
+#include <QMainWindow>
+
+#include "vtkNew.h"
+
+class QAction;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSplitter;
+class vtkPolyData;
+
+namespace riemann
+{
+namespace studio
+{
+class InsideView;
+class MetricEditor;
+class OutsideView;
+class ParameterPanel;
+class PipelineBrowser;
+class PipelineItem;
+class PropertiesPanel;
+class StudioDocument;
+class TimeBar;
+
+class StudioMainWindow : public QMainWindow
+{
+  Q_OBJECT
+public:
+  enum Layout
+  {
+    BothViews,
+    InsideOnly,
+    OutsideOnly
+  };
+  enum Shot
+  {
+    InsideShot,
+    OutsideShot,
+    BothShot,
+    WindowShot
+  };
+
+  explicit StudioMainWindow(QWidget* parent = nullptr);
+  ~StudioMainWindow() override;
+
+  ///@{
+  /// Open a project, metric or scene file (told apart by their keys). On
+  /// failure nothing changes and the message says what and where; with
+  /// `showDialog` it is also shown in a dialog.
+  QString OpenFile(const QString& path, bool showDialog = true);
+  QString SaveProject(const QString& path);
+  QString SaveMetric(const QString& path);
+  QString ExportPythonScript(const QString& path);
+  QString ExportItemData(PipelineItem* item, const QString& path);
+  QString SaveScreenshot(const QString& path, Shot what);
+  /// Write `count` frames of the inside view at t = k / (count - 1) as
+  /// folder/frame-0000.png ...
+  QString ExportFrames(const QString& folder, int count);
+  ///@}
+
+  void SetViewLayout(Layout layout);
+  Layout ViewLayout() const { return this->CurrentLayout; }
+  /// Render both views now and let every pending job finish (for --screenshot).
+  void Settle(int timeoutMilliseconds = 120000);
+
+  ///@{
+  /// Parts of the window (tests, scripting).
+  StudioDocument* Document() const { return this->Doc; }
+  InsideView* Inside() const { return this->InsideWidget; }
+  OutsideView* Outside() const { return this->OutsideWidget; }
+  PipelineBrowser* Browser() const { return this->BrowserWidget; }
+  PropertiesPanel* Properties() const { return this->PropertiesWidget; }
+  MetricEditor* Editor() const { return this->EditorWidget; }
+  ParameterPanel* Parameters() const { return this->ParameterWidget; }
+  TimeBar* Time() const { return this->TimeWidget; }
+  QPushButton* CancelButton() const { return this->Cancel; }
+  ///@}
+
+  /// Pick pixel (column, row) of the inside view: trace its ray, show it.
+  void PickPixel(int column, int row);
+  /// The last picked ray (vtkRiemannRayBundle's output for that pixel).
+  vtkPolyData* PickedRay() const { return this->Picked; }
+  /// The status bar's text.
+  QString StatusText() const;
+  /// Milliseconds of the last metric change -> inside view drawn.
+  double LastUpdateMilliseconds() const { return this->LastUpdate; }
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+
+private:
+  void BuildDocks();
+  void BuildMenus();
+  void BuildStatusBar();
+  void ShowSelection();
+  void ShowInsideViewSettings();
+  void ShowMessage(const QString& message, bool error = false);
+  QString AskOpenPath(const QString& title, const QString& filter);
+  QString AskSavePath(const QString& title, const QString& filter, const QString& suffix);
+  void UpdateTitle();
+
+  StudioDocument* Doc;
+  InsideView* InsideWidget;
+  OutsideView* OutsideWidget;
+  QSplitter* Views;
+  PipelineBrowser* BrowserWidget;
+  PropertiesPanel* PropertiesWidget;
+  MetricEditor* EditorWidget;
+  ParameterPanel* ParameterWidget;
+  TimeBar* TimeWidget;
+  QLabel* Message;
+  QLabel* FrameTime;
+  QProgressBar* Progress;
+  QPushButton* Cancel;
+  QAction* PickAction = nullptr;
+  Layout CurrentLayout = BothViews;
+  QString ProjectPath;
+  vtkNew<vtkPolyData> Picked;
+  double LastUpdate = 0.0;
+};
+}
+}
+
+#endif

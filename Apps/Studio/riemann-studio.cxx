@@ -1,0 +1,96 @@
+// riemann-studio: the desktop app where a metric is designed and seen live.
+//
+//   riemann-studio [project.json | metric.json | scene.json]
+//   riemann-studio FILE --screenshot out.png [--view window|inside|outside|both] [--size WxH]
+//
+// --screenshot renders the opened session (after every item has been
+// computed), writes the PNG and exits: 0 on success, 1 when the file could
+// not be opened or the picture not written, 2 for bad options.
+#include "StudioMainWindow.h"
+
+#include "QVTKOpenGLNativeWidget.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char* argv[])
+{
+  // The format QVTKOpenGLNativeWidget needs (OpenGL 3.2 core or later),
+  // before the application exists.
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("Riemann Studio");
+  QApplication::setOrganizationName("RiemannVTK");
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+    "Design a Riemannian metric on R^3 and see it from inside and outside.");
+  parser.addHelpOption();
+  parser.addPositionalArgument("file", "A project, metric or scene file (JSON) to open.", "[file]");
+  QCommandLineOption screenshot("screenshot", "Render the opened session, save it as PNG and exit.", "out.png");
+  QCommandLineOption view("view", "What --screenshot captures: window (default), inside, outside or both.", "what", "window");
+  QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1500x900).", "WxH", "1500x900");
+  parser.addOption(screenshot);
+  parser.addOption(view);
+  parser.addOption(size);
+  parser.process(app);
+
+  using riemann::studio::StudioMainWindow;
+  const QString what = parser.value(view);
+  const StudioMainWindow::Shot shot = what == "inside" ? StudioMainWindow::InsideShot
+    : what == "outside"                                ? StudioMainWindow::OutsideShot
+    : what == "both"                                   ? StudioMainWindow::BothShot
+                                                       : StudioMainWindow::WindowShot;
+  if (what != "window" && what != "inside" && what != "outside" && what != "both")
+  {
+    std::fprintf(stderr, "riemann-studio: --view: expected window, inside, outside or both, got \"%s\"\n",
+      qPrintable(what));
+    return 2;
+  }
+  const QStringList dimensions = parser.value(size).split('x');
+  bool okWidth = false, okHeight = false;
+  const int width = dimensions.value(0).toInt(&okWidth);
+  const int height = dimensions.size() == 2 ? dimensions.value(1).toInt(&okHeight) : 0;
+  if (!okWidth || !okHeight || width < 320 || height < 240 || width > 8192 || height > 8192)
+  {
+    std::fprintf(stderr, "riemann-studio: --size: expected WxH between 320x240 and 8192x8192, got \"%s\"\n",
+      qPrintable(parser.value(size)));
+    return 2;
+  }
+  const bool batch = parser.isSet(screenshot);
+
+  StudioMainWindow window;
+  window.resize(width, height);
+  window.show();
+  const QStringList files = parser.positionalArguments();
+  if (files.size() > 1)
+  {
+    std::fprintf(stderr, "riemann-studio: give at most one file (got %d)\n", int(files.size()));
+    return 2;
+  }
+  if (!files.isEmpty())
+  {
+    const QString error = window.OpenFile(files.first(), !batch);
+    if (!error.isEmpty() && batch)
+    {
+      std::fprintf(stderr, "riemann-studio: %s\n", qPrintable(error));
+      return 1;
+    }
+  }
+  if (!batch)
+  {
+    return app.exec();
+  }
+  window.Settle();
+  const QString error = window.SaveScreenshot(parser.value(screenshot), shot);
+  if (!error.isEmpty())
+  {
+    std::fprintf(stderr, "riemann-studio: %s\n", qPrintable(error));
+    return 1;
+  }
+  return 0;
+}
