@@ -576,6 +576,7 @@ QString StudioMainWindow::StatusText() const
 QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
 {
   QString error;
+  bool restoredOutsideCamera = false;
   const QString text = ReadText(path, error);
   const std::string utf8 = text.toStdString();
   if (error.isEmpty())
@@ -598,6 +599,7 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
           {
             project.OutsideCamera.To(this->OutsideWidget->Renderer()->GetActiveCamera());
             this->OutsideWidget->Renderer()->ResetCameraClippingRange();
+            restoredOutsideCamera = true;
           }
           this->ProjectPath = path;
         }
@@ -654,7 +656,10 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
   }
   this->ShowMessage("Opened " + path);
   this->UpdateTitle();
-  this->OutsideWidget->ResetCamera();
+  if (!restoredOutsideCamera)
+  {
+    this->OutsideWidget->ResetCamera();
+  }
   this->OutsideWidget->RenderNow();
   return QString();
 }

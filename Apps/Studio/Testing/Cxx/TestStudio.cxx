@@ -1,31 +1,567 @@
-// riemann-studio driven with QtTest: the real window, under xvfb-run.
+// riemann-studio driven with QtTest: the real window under xvfb-run (Mesa
+// llvmpipe), each slot one feature of the app, checked against the
+// toolkit's own answers (the same classes the app is built on).
 #include "InsideView.h"
+#include "MetricEditor.h"
+#include "OutsideView.h"
+#include "ParameterPanel.h"
+#include "PipelineBrowser.h"
+#include "PipelineItems.h"
+#include "PropertiesPanel.h"
+#include "StudioDocument.h"
 #include "StudioMainWindow.h"
 
-#include "QVTKOpenGLNativeWidget.h"
+#include "vtkRiemannIntegrationSettings.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayBundle.h"
+#include "vtkRiemannRayTracePass.h"
+#include "vtkRiemannScene.h"
 
+#include "QVTKOpenGLNativeWidget.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+
+#include <QAction>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QProcess>
+#include <QPushButton>
+#include <QSlider>
+#include <QTemporaryDir>
 #include <QtTest/QtTest>
 
+#include <cmath>
+#include <memory>
+
 using namespace riemann::studio;
+
+namespace
+{
+/// A window as a user gets it, shown and settled (jobs done, views drawn).
+std::unique_ptr<StudioMainWindow> OpenWindow()
+{
+  auto window = std::make_unique<StudioMainWindow>();
+  window->resize(1100, 700);
+  window->show();
+  if (!QTest::qWaitForWindowExposed(window.get()))
+  {
+    return nullptr;
+  }
+  window->Settle();
+  return window;
+}
+
+/// Fraction of pixels that differ between two pictures of the same size.
+double DifferentPixels(const QImage& a, const QImage& b)
+{
+  if (a.size() != b.size())
+  {
+    return 1.0;
+  }
+  const QImage x = a.convertToFormat(QImage::Format_RGB32);
+  const QImage y = b.convertToFormat(QImage::Format_RGB32);
+  long differing = 0;
+  for (int row = 0; row < x.height(); ++row)
+  {
+    const QRgb* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
+    const QRgb* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
+    for (int column = 0; column < x.width(); ++column)
+    {
+      differing += p[column] != q[column];
+    }
+  }
+  return static_cast<double>(differing) / (x.width() * x.height());
+}
+
+/// Number of distinct colours (a drawn view has many; a cleared one, one).
+int DistinctColors(const QImage& image)
+{
+  QSet<QRgb> colors;
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+  for (int row = 0; row < rgb.height(); row += 3)
+  {
+    for (int column = 0; column < rgb.width(); column += 3)
+    {
+      colors.insert(rgb.pixel(column, row));
+    }
+  }
+  return colors.size();
+}
+
+QString DataFile(const QString& relative)
+{
+  const QByteArray dir = qgetenv("RIEMANN_DATA_DIR");
+  return (dir.isEmpty() ? QStringLiteral(RIEMANN_TEST_DATA_DIR) : QString::fromLocal8Bit(dir)) + "/" +
+    relative;
+}
+
+bool WaitForJobs(StudioMainWindow& window, int milliseconds = 60000)
+{
+  QElapsedTimer timer;
+  timer.start();
+  while (window.Document()->Jobs()->NumberOfRunningJobs() > 0 && timer.elapsed() < milliseconds)
+  {
+    QTest::qWait(20);
+  }
+  return window.Document()->Jobs()->NumberOfRunningJobs() == 0;
+}
+
+bool ViewHasProp(OutsideView* view, vtkProp* prop)
+{
+  vtkPropCollection* props = view->Renderer()->GetViewProps();
+  return props->IsItemPresent(prop) != 0;
+}
+}
 
 class TestStudio : public QObject
 {
   Q_OBJECT
 private Q_SLOTS:
   void WindowOpensWithDefaultScene();
+  void SyntaxErrorShowsColumnAndKeepsPicture();
+  void SliderChangesViewWithoutRecompiling();
+  void GeodesicItemAddsPolylines();
+  void PickedPixelShowsBundleRay();
+  void ProjectRoundTrip();
+  void CancelledJobLeavesAppResponsive();
+  void BadProjectIsRefusedWithDialog();
+  void PropertiesRefuseBadValues();
+  void PythonTraceRebuildsPipeline();
+  void CommandLineScreenshot();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
 {
-  StudioMainWindow window;
-  window.resize(1200, 800);
-  window.show();
-  QVERIFY(QTest::qWaitForWindowExposed(&window));
-  window.Settle();
-  const QImage inside = window.Inside()->Capture();
-  QVERIFY(!inside.isNull());
-  inside.save("studio-window-inside.png");
-  window.grab().save("studio-window.png");
+  auto window = OpenWindow();
+  QVERIFY(window);
+  // The default session: the paper's grid, the Gaussian bump with sliders
+  // for a and s, the observer at the default scene's camera.
+  QCOMPARE(window->Document()->Scene()->HasDefinition(), false);
+  QVERIFY(window->Browser()->SceneRow()->text(0).contains("default grid"));
+  QVERIFY(window->Browser()->MetricRow()->text(0).contains("graph"));
+  QVERIFY(window->Parameters()->Slider("/parameters/a"));
+  QVERIFY(window->Parameters()->Slider("/parameters/s"));
+  double position[3];
+  window->Document()->Observer()->GetPosition(position);
+  QCOMPARE(position[2], 7.5);
+  // The inside view drew the grid (many colours, no error) with one shader.
+  QCOMPARE(window->Inside()->LastError(), QString());
+  QCOMPARE(window->Inside()->Pass()->GetNumberOfShaderCompilations(), 1);
+  const QImage inside = window->Inside()->Capture();
+  QVERIFY(DistinctColors(inside) > 50);
+  QVERIFY(DistinctColors(window->Outside()->Capture()) > 50);
+  // The outside view shows the observer's frustum: 4 edges + 4 rim lines.
+  QCOMPARE(window->Outside()->Frustum()->GetNumberOfLines(), vtkIdType(8));
+}
+
+void TestStudio::SyntaxErrorShowsColumnAndKeepsPicture()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  const QImage before = window->Inside()->Capture();
+  const std::string definition = window->Document()->MetricText();
+  // Type a metric whose expression has an unknown symbol at column 5 of "f"
+  // (line 3 of the text): as a user would, key by key.
+  QPlainTextEdit* editor = window->Editor()->Editor();
+  editor->selectAll();
+  QTest::keyClick(editor, Qt::Key_Delete);
+  const QStringList lines = { "{", " \"type\": \"graph\",", " \"f\": \"x + q*y\"", "}" };
+  for (int i = 0; i < lines.size(); ++i)
+  {
+    QTest::keyClicks(editor, lines[i]);
+    if (i + 1 < lines.size())
+    {
+      QTest::keyClick(editor, Qt::Key_Return);
+    }
+  }
+  QTRY_VERIFY_WITH_TIMEOUT(!window->Editor()->ErrorText().isEmpty(), 5000);
+  // "f" is on line 3; its string starts at column 8, so character 5 ("q") is column 12.
+  QVERIFY2(window->Editor()->ErrorText().startsWith("Line 3, column 12: metric.f: column 5"),
+    qPrintable(window->Editor()->ErrorText()));
+  QVERIFY(editor->extraSelections().size() == 1);
+  QCOMPARE(editor->extraSelections().first().cursor.selectedText(), QString("q"));
+  // The last good metric is still the one in use, and the picture with it.
+  QCOMPARE(window->Document()->MetricText(), definition);
+  window->Inside()->RenderNow();
+  QCOMPARE(DifferentPixels(before, window->Inside()->Capture()), 0.0);
+
+  // A JSON syntax error (missing comma) is shown where the parser noticed
+  // it: at the end of the unexpected "name".
+  editor->setPlainText("{\n \"type\": \"euclidean\"\n \"name\": \"x\"\n}");
+  window->Editor()->ApplyNow();
+  QVERIFY2(window->Editor()->ErrorText().startsWith("Line 3, column 7: invalid JSON"),
+    qPrintable(window->Editor()->ErrorText()));
+  QCOMPARE(window->Document()->MetricText(), definition);
+
+  // Fixing it applies it.
+  editor->setPlainText("{\"type\": \"euclidean\"}");
+  window->Editor()->ApplyNow();
+  QCOMPARE(window->Editor()->ErrorText(), QString());
+  QCOMPARE(window->Document()->Metric()->GetFamilyName(), std::string("euclidean"));
+}
+
+void TestStudio::SliderChangesViewWithoutRecompiling()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  vtkRiemannRayTracePass* pass = window->Inside()->Pass();
+  const int compilations = pass->GetNumberOfShaderCompilations();
+  const QImage before = window->Inside()->Capture();
+  QSlider* slider = window->Parameters()->Slider("/parameters/a");
+  QVERIFY(slider);
+  // a from 1 to 0.3 (the slider spans [0, 2]): a flatter bump bends the rays less.
+  slider->setValue(ParameterPanel::SliderSteps * 15 / 100);
+  QCOMPARE(window->Document()->ParameterValue("/parameters/a"), 0.3);
+  QVERIFY(window->Document()->EffectiveMetricText().find("\"a\": 0.3") != std::string::npos);
+  const QImage after = window->Inside()->Capture();
+  QVERIFY2(DifferentPixels(before, after) > 0.01, "the inside view did not change");
+  QCOMPARE(pass->GetNumberOfShaderCompilations(), compilations);
+  QVERIFY(window->LastUpdateMilliseconds() >= 0.0);
+  // The slider and the spin box agree; the text in the editor is untouched.
+  QCOMPARE(window->Parameters()->SpinBox("/parameters/a")->value(), 0.3);
+  QVERIFY(window->Editor()->Text().contains("\"a\": 1.0"));
+
+  // The time bar too: t is a uniform.
+  window->Editor()->SetText(
+    R"json({"type": "graph", "parameters": {"a": {"from": 0.2, "to": 1.5}, "s": 0.5},)json"
+    R"json( "f": "a * exp(-(x^2 + y^2 + z^2) / (2 * s^2))"})json");
+  window->Inside()->RenderNow();
+  const int recompiled = pass->GetNumberOfShaderCompilations();
+  const QImage atZero = window->Inside()->Capture();
+  QVERIFY(!window->Parameters()->Slider("/parameters/a")); // animated: no slider
+  QVERIFY(window->Parameters()->Slider("/parameters/s"));
+  window->Document()->SetTime(1.0);
+  QCOMPARE(pass->GetNumberOfShaderCompilations(), recompiled);
+  QVERIFY(DifferentPixels(atZero, window->Inside()->Capture()) > 0.01);
+}
+
+void TestStudio::GeodesicItemAddsPolylines()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  // In Euclidean space geodesics are straight segments of the set length:
+  // exact answers to check what the outside view is given.
+  window->Editor()->SetText(R"({"type": "euclidean"})");
+  const QImage before = window->Outside()->Capture();
+  QAction* add = window->findChild<QAction*>("Add:geodesics");
+  QVERIFY(add);
+  add->trigger();
+  QCOMPARE(int(window->Document()->Items().size()), 1);
+  PipelineItem* item = window->Document()->Items().front().get();
+  QVERIFY(window->Browser()->Row(item));
+  QCOMPARE(window->Browser()->SelectedItem(), item);
+  QVERIFY(WaitForJobs(*window));
+  auto* lines = vtkPolyData::SafeDownCast(item->Result(0));
+  QVERIFY(lines);
+  const int directions = item->Settings().at("NumberOfDirections").get<int>();
+  QCOMPARE(lines->GetNumberOfLines(), vtkIdType(directions));
+  double seed[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    seed[i] = item->Settings().at("StartPosition")[i].get<double>();
+  }
+  const double length = item->Settings().at("MaximumPropagation").get<double>();
+  vtkNew<vtkIdList> ids;
+  lines->GetLines()->InitTraversal();
+  while (lines->GetLines()->GetNextCell(ids))
+  {
+    double first[3], last[3], middle[3];
+    lines->GetPoint(ids->GetId(0), first);
+    lines->GetPoint(ids->GetId(ids->GetNumberOfIds() - 1), last);
+    lines->GetPoint(ids->GetId(ids->GetNumberOfIds() / 2), middle);
+    QVERIFY(std::sqrt(vtkMath::Distance2BetweenPoints(first, seed)) < 1e-12);
+    QVERIFY(std::abs(std::sqrt(vtkMath::Distance2BetweenPoints(first, last)) - length) < 1e-9);
+    // The midpoint lies on the chord (straight line).
+    double a[3], b[3], cross[3];
+    vtkMath::Subtract(middle, first, a);
+    vtkMath::Subtract(last, first, b);
+    vtkMath::Cross(a, b, cross);
+    QVERIFY(vtkMath::Norm(cross) < 1e-9);
+  }
+  // The polylines are in the outside view, and they show.
+  QVERIFY(ViewHasProp(window->Outside(), item->Prop()));
+  window->Outside()->RenderNow();
+  QVERIFY(DifferentPixels(before, window->Outside()->Capture()) > 0.001);
+  // Hide (the eye), then delete.
+  window->Browser()->Row(item)->setCheckState(0, Qt::Unchecked);
+  QVERIFY(!item->IsVisible());
+  QVERIFY(!item->Prop()->GetVisibility());
+  window->Document()->RemoveItem(item);
+  QVERIFY(window->Document()->Items().empty());
+  QVERIFY(!ViewHasProp(window->Outside(), item->Prop()));
+}
+
+void TestStudio::PickedPixelShowsBundleRay()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  int width, height;
+  inside->PixelSize(width, height);
+  // Ctrl+click a point of the inside view, as a user does.
+  const QPoint click(width / 3, height / 4);
+  QTest::mouseClick(inside, Qt::LeftButton, Qt::ControlModifier, click);
+  vtkPolyData* picked = window->PickedRay();
+  QCOMPARE(picked->GetNumberOfCells(), vtkIdType(1));
+  // VTK's pixel rows count from the bottom.
+  const int column = click.x(), row = height - 1 - click.y();
+  const int* index = nullptr;
+  vtkDataArray* pixel = picked->GetCellData()->GetArray("PixelIndex");
+  QVERIFY(pixel);
+  (void)index;
+  QCOMPARE(int(pixel->GetComponent(0, 0)), column);
+  QCOMPARE(int(pixel->GetComponent(0, 1)), row);
+
+  // The same ray, traced by the toolkit's bundle for that pixel with the
+  // view's camera and settings.
+  vtkNew<vtkRiemannRayBundle> bundle;
+  bundle->SetMetric(window->Document()->Metric());
+  bundle->SetScene(window->Document()->Scene());
+  bundle->SetCamera(inside->Renderer()->GetActiveCamera());
+  bundle->SetWidth(width);
+  bundle->SetHeight(height);
+  bundle->SetPixelRegion(column, column, row, row);
+  bundle->UsePixelRegionOn();
+  bundle->Update();
+  vtkPolyData* expected = bundle->GetOutput();
+  QCOMPARE(picked->GetNumberOfPoints(), expected->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < expected->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    picked->GetPoint(i, p);
+    expected->GetPoint(i, q);
+    QCOMPARE(vtkMath::Distance2BetweenPoints(p, q), 0.0);
+  }
+  // The outside view shows it; the status bar says where it ended and why.
+  QCOMPARE(window->Outside()->PickedRay()->GetNumberOfPoints(), expected->GetNumberOfPoints());
+  QVERIFY2(window->StatusText().contains(QString("Pixel (%1, %2)").arg(column).arg(row)),
+    qPrintable(window->StatusText()));
+  QVERIFY(window->StatusText().contains("after length"));
+}
+
+void TestStudio::ProjectRoundTrip()
+{
+  QTemporaryDir folder;
+  QVERIFY(folder.isValid());
+  const QString project = folder.filePath("session.json");
+  QImage inside, outside;
+  nlohmann::json items = nlohmann::json::array();
+  {
+    auto window = OpenWindow();
+    QVERIFY(window);
+    QVERIFY(window->OpenFile(DataFile("scenes/paper-two-bumps.json"), false).isEmpty());
+    window->Parameters(); // the scene's metric may have no parameters
+    PipelineItem* geodesics = window->Document()->AddItem("geodesics");
+    QVERIFY(geodesics->ApplySettings({ { "NumberOfDirections", 7 }, { "ConeAngle", 25.0 } }).isEmpty());
+    geodesics->SetName("Fan");
+    PipelineItem* bundle = window->Document()->AddItem("ray-bundle");
+    bundle->SetVisible(false);
+    window->Document()->Observer()->Azimuth(10.0);
+    window->Document()->ObserverChanged();
+    window->Settle();
+    QVERIFY(window->SaveProject(project).isEmpty());
+    inside = window->Inside()->Capture();
+    outside = window->Outside()->Capture();
+    for (const auto& item : window->Document()->Items())
+    {
+      items.push_back({ item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
+    }
+  }
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QCOMPARE(window->OpenFile(project, false), QString());
+  window->Settle();
+  nlohmann::json reopened = nlohmann::json::array();
+  for (const auto& item : window->Document()->Items())
+  {
+    reopened.push_back({ item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
+  }
+  QCOMPARE(QString::fromStdString(reopened.dump()), QString::fromStdString(items.dump()));
+  QCOMPARE(window->Browser()->Row(window->Document()->Items().front().get())->text(0), QString("Fan"));
+  QCOMPARE(DifferentPixels(inside, window->Inside()->Capture()), 0.0);
+  QVERIFY(DifferentPixels(outside, window->Outside()->Capture()) < 0.001);
+}
+
+void TestStudio::CancelledJobLeavesAppResponsive()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  // A curvature field far too big to finish during the test (about 4
+  // million points with third derivatives), after a small one that finished.
+  PipelineItem* field = window->Document()->AddItem(MakePipelineItem("field", "Curvature"));
+  QVERIFY(field->ApplySettings({ { "Dimensions", { 9, 9, 9 } } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  vtkDataObject* small = field->Result(0);
+  QVERIFY(small);
+  QCOMPARE(small->GetNumberOfElements(vtkDataObject::POINT), vtkIdType(9 * 9 * 9));
+  QVERIFY(field->ApplySettings({ { "Dimensions", { 160, 160, 160 } } }).isEmpty());
+  QTRY_VERIFY_WITH_TIMEOUT(window->CancelButton()->isVisible(), 5000);
+  // The window answers while the job runs: timers fire on time.
+  QElapsedTimer answered;
+  answered.start();
+  QTest::qWait(300);
+  QVERIFY(answered.elapsed() < 1500);
+  QTest::mouseClick(window->CancelButton(), Qt::LeftButton);
+  QTRY_VERIFY_WITH_TIMEOUT(window->Document()->Jobs()->NumberOfRunningJobs() == 0, 20000);
+  QVERIFY(!window->CancelButton()->isVisible());
+  // Cancelled: the item keeps its last result, and no error is reported.
+  QCOMPARE(field->Result(0)->GetNumberOfElements(vtkDataObject::POINT), vtkIdType(9 * 9 * 9));
+  QCOMPARE(window->Document()->ItemError(field), QString());
+  // Responsive: a slider move updates the inside view at once, while the
+  // field (which depends on the metric) starts again in the background.
+  const QImage before = window->Inside()->Capture();
+  window->Document()->SetParameterValue("/parameters/a", 0.2);
+  QVERIFY(DifferentPixels(before, window->Inside()->Capture()) > 0.01);
+  QVERIFY(window->Document()->Jobs()->IsRunning(field));
+  window->Document()->RemoveItem(field); // cancels its job
+  QVERIFY(WaitForJobs(*window, 20000));
+}
+
+void TestStudio::BadProjectIsRefusedWithDialog()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QTemporaryDir folder;
+  const QString path = folder.filePath("bad.json");
+  QFile file(path);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.write(R"({"riemann-studio": 1,
+ "metric": {"text": "{\"type\": \"euclidean\"}"},
+ "observer": {"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 30},
+ "items": [{"kind": "geodesics", "settings": {"ConeAngle": 500}}]})");
+  file.close();
+  const std::string metric = window->Document()->MetricText();
+  QString dialogText;
+  QTimer::singleShot(200, [&dialogText]() {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (box)
+    {
+      dialogText = box->text();
+      box->accept();
+    }
+  });
+  const QString error = window->OpenFile(path, true);
+  QVERIFY2(dialogText.contains("items[0].settings: Cone angle: must be in [0, 180]"),
+    qPrintable(dialogText));
+  QVERIFY(dialogText.contains("Nothing was changed"));
+  QVERIFY(error.contains("bad.json"));
+  // Nothing changed, and the app goes on.
+  QCOMPARE(window->Document()->MetricText(), metric);
+  QVERIFY(window->Document()->Items().empty());
+  // Malformed JSON: the place is named.
+  QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+  file.write("{\"riemann-studio\": 1,\n \"metric\": }");
+  file.close();
+  const QString syntax = window->OpenFile(path, false);
+  QVERIFY2(syntax.contains("line 2, column"), qPrintable(syntax));
+  QCOMPARE(window->Document()->MetricText(), metric);
+}
+
+void TestStudio::PropertiesRefuseBadValues()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  PipelineItem* item = window->Document()->AddItem("exponential-map");
+  window->Browser()->Select(item);
+  PropertiesPanel* panel = window->Properties();
+  auto* angle = qobject_cast<QLineEdit*>(panel->Field("ConeAngle"));
+  QVERIFY(angle);
+  angle->selectAll();
+  QTest::keyClicks(angle, "200");
+  QVERIFY2(panel->FieldError("ConeAngle").contains("must be in [0, 180]"),
+    qPrintable(panel->FieldError("ConeAngle")));
+  QVERIFY(!panel->findChild<QPushButton*>("ApplyButton")->isEnabled());
+  QVERIFY(!panel->Apply());
+  QCOMPARE(item->Settings().at("ConeAngle").get<double>(), 35.0);
+  auto* step = qobject_cast<QLineEdit*>(panel->Field("InitialIntegrationStep"));
+  step->selectAll();
+  QTest::keyClicks(step, "abc");
+  QVERIFY(panel->FieldError("InitialIntegrationStep").contains("not a number"));
+  // Good values apply.
+  angle->selectAll();
+  QTest::keyClicks(angle, "20");
+  step->selectAll();
+  QTest::keyClicks(step, "0.02");
+  QVERIFY(panel->FieldError("ConeAngle").isEmpty());
+  QVERIFY(panel->Apply());
+  QCOMPARE(item->Settings().at("ConeAngle").get<double>(), 20.0);
+  QCOMPARE(item->Settings().at("InitialIntegrationStep").get<double>(), 0.02);
+  window->Document()->Jobs()->CancelAll();
+  QVERIFY(WaitForJobs(*window));
+}
+
+void TestStudio::PythonTraceRebuildsPipeline()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  PipelineItem* geodesics = window->Document()->AddItem("geodesics");
+  QVERIFY(geodesics->ApplySettings({ { "NumberOfDirections", 5 } }).isEmpty());
+  PipelineItem* bundle = window->Document()->AddItem("ray-bundle");
+  QVERIFY(bundle->ApplySettings({ { "SubgridResolution", 3 } }).isEmpty());
+  window->Document()->SetParameterValue("/parameters/a", 0.7);
+  QVERIFY(WaitForJobs(*window));
+  QTemporaryDir folder;
+  const QString script = folder.filePath("session.py");
+  QVERIFY(window->ExportPythonScript(script).isEmpty());
+  QProcess python;
+  python.start("/usr/bin/python3", { script, "--output-dir", folder.filePath("out") });
+  QVERIFY(python.waitForFinished(120000));
+  const QString output = QString::fromUtf8(python.readAllStandardOutput() + python.readAllStandardError());
+  QVERIFY2(python.exitCode() == 0, qPrintable(output));
+  // The script's filters give the app's results, point for point.
+  for (const auto& item : window->Document()->Items())
+  {
+    const vtkIdType points = vtkPolyData::SafeDownCast(item->Result(0))->GetNumberOfPoints();
+    QVERIFY2(output.contains(QString("%1: vtkPolyData with %2 points").arg(item->Name()).arg(points)),
+      qPrintable(output));
+    QVERIFY(QFileInfo::exists(folder.filePath("out/" + item->Name() + ".vtp")));
+  }
+}
+
+void TestStudio::CommandLineScreenshot()
+{
+  const QString binary = QString::fromLocal8Bit(qgetenv("RIEMANN_BIN_DIR")) + "/riemann-studio";
+  if (!QFileInfo::exists(binary))
+  {
+    QSKIP("RIEMANN_BIN_DIR/riemann-studio not found (run through ctest)");
+  }
+  QTemporaryDir folder;
+  const QString shot = folder.filePath("shot.png");
+  QProcess app;
+  app.start(binary, { DataFile("scenes/paper-one-bump.json"), "--screenshot", shot, "--view", "both",
+                      "--size", "1000x600" });
+  QVERIFY(app.waitForFinished(180000));
+  QVERIFY2(app.exitCode() == 0, app.readAllStandardError().constData());
+  const QImage image(shot);
+  QVERIFY(!image.isNull());
+  QVERIFY(DistinctColors(image) > 50);
+  // A bad file: exit status 1 and a message naming the file; no picture.
+  QFile bad(folder.filePath("bad-metric.json"));
+  QVERIFY(bad.open(QIODevice::WriteOnly));
+  bad.write("{\"type\": \"graph\", \"f\": \"x +\"}");
+  bad.close();
+  const QString none = folder.filePath("none.png");
+  app.start(binary, { bad.fileName(), "--screenshot", none });
+  QVERIFY(app.waitForFinished(120000));
+  QCOMPARE(app.exitCode(), 1);
+  const QString message = QString::fromUtf8(app.readAllStandardError());
+  QVERIFY2(message.contains("bad-metric.json") && message.contains("metric.f: column"),
+    qPrintable(message));
+  QVERIFY(!QFileInfo::exists(none));
+  // Bad options: exit status 2.
+  app.start(binary, { "--screenshot", none, "--view", "sideways" });
+  QVERIFY(app.waitForFinished(60000));
+  QCOMPARE(app.exitCode(), 2);
 }
 
 int main(int argc, char* argv[])
