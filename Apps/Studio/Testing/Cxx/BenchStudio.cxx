@@ -1,0 +1,86 @@
+// Time from a parameter slider move to the updated inside view, in the real
+// window (not a test: timings are reported, never asserted).
+//
+//   xvfb-run -a -s "-screen 0 1920x1080x24" build/bin/BenchStudio [WIDTHxHEIGHT] [moves]
+//
+// The inside view is given exactly WIDTHxHEIGHT pixels (default 640x480).
+// Each move sets the slider of parameter a of the default metric (the
+// paper's Gaussian bump): vtkRiemannMetric::SetDefinition with the new value,
+// then the view drawn by vtkRiemannRayTracePass, finished on the GPU
+// (glFinish) before the clock stops. Reports the median and range, the
+// first frame (with the shader compilation), and that no move compiled a
+// shader.
+#include "InsideView.h"
+#include "ParameterPanel.h"
+#include "StudioDocument.h"
+#include "StudioMainWindow.h"
+
+#include "vtkRiemannRayTracePass.h"
+
+#include "QVTKOpenGLNativeWidget.h"
+#include "vtkRenderWindow.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSlider>
+#include <QtTest/QtTest>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+using namespace riemann::studio;
+
+int main(int argc, char* argv[])
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  int width = 640, height = 480, moves = 20;
+  if (argc > 1 && std::sscanf(argv[1], "%dx%d", &width, &height) != 2)
+  {
+    std::fprintf(stderr, "usage: BenchStudio [WIDTHxHEIGHT] [moves]\n");
+    return 2;
+  }
+  if (argc > 2)
+  {
+    moves = std::max(1, std::atoi(argv[2]));
+  }
+  StudioMainWindow window;
+  window.SetViewLayout(StudioMainWindow::InsideOnly);
+  window.Inside()->setFixedSize(width, height);
+  window.show();
+  if (!QTest::qWaitForWindowExposed(&window))
+  {
+    std::fprintf(stderr, "BenchStudio: the window was not shown (no display?)\n");
+    return 1;
+  }
+  QElapsedTimer clock;
+  clock.start();
+  window.Settle();
+  window.Inside()->RenderNow();
+  const double first = clock.nsecsElapsed() * 1e-6;
+  int pixelsWide, pixelsHigh;
+  window.Inside()->PixelSize(pixelsWide, pixelsHigh);
+
+  QSlider* slider = window.Parameters()->Slider("/parameters/a");
+  const int compilations = window.Inside()->Pass()->GetNumberOfShaderCompilations();
+  std::vector<double> times;
+  for (int k = 0; k < moves; ++k)
+  {
+    const int position = (k % 2 == 0) ? 400 + k : 600 - k;
+    clock.restart();
+    slider->setValue(position); // parse, uniforms, draw, glFinish: all synchronous
+    times.push_back(clock.nsecsElapsed() * 1e-6);
+    QCoreApplication::processEvents();
+  }
+  std::sort(times.begin(), times.end());
+  std::printf("inside view %dx%d\n", pixelsWide, pixelsHigh);
+  std::printf("first frame (shader compilation included): %.1f ms\n", first);
+  std::printf("slider move -> updated inside view: median %.1f ms, min %.1f ms, max %.1f ms (%d moves)\n",
+    times[times.size() / 2], times.front(), times.back(), moves);
+  std::printf("shader compilations during the moves: %d\n",
+    window.Inside()->Pass()->GetNumberOfShaderCompilations() - compilations);
+  const char* capabilities = window.Inside()->renderWindow()->ReportCapabilities();
+  std::printf("%.300s\n", capabilities ? capabilities : "");
+  return 0;
+}
