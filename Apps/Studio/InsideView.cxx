@@ -14,6 +14,7 @@
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
+#include "vtkImageProperty.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindowInteractor.h"
@@ -116,6 +117,11 @@ void InsideView::SetUpRenderers()
   this->ImageRenderer->SetLayer(1);
   this->ImageRenderer->InteractiveOff();
   this->ImageRenderer->AddActor(this->CpuImage);
+  // The tracer's "Color" is float RGB in [0, 1], what the pass writes to the
+  // framebuffer: shown as is (window 1, level 0.5), pixel for pixel.
+  this->CpuImage->GetProperty()->SetColorWindow(1.0);
+  this->CpuImage->GetProperty()->SetColorLevel(0.5);
+  this->CpuImage->InterpolateOff();
   this->ImageRenderer->DrawOff();
   window->AddRenderer(this->ImageRenderer);
 }

@@ -113,6 +113,12 @@ QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value
     case PropertySpec::Integers3:
       return CheckList(spec, value, 3, true);
     case PropertySpec::Choice:
+      if (spec.OpenChoice)
+      {
+        return value.is_string() && !value.get<std::string>().empty()
+          ? QString()
+          : QStringLiteral("expected a name");
+      }
       if (!value.is_string() ||
         !spec.Choices.contains(QString::fromStdString(value.get<std::string>())))
       {
@@ -271,7 +277,9 @@ std::vector<PropertySpec> PipelineItem::DisplayProperties() const
   {
     array.Choices << current;
   }
-  array.Help = "The point or cell array that colours the item (Solid: one colour)";
+  array.Help = "The point or cell array that colours the item (Solid, or an array the item "
+               "does not have: one colour)";
+  array.OpenChoice = true;
   array.Display = true;
 
   PropertySpec map;

@@ -66,6 +66,9 @@ struct PropertySpec
   /// A Vector3 may not be (0, 0, 0) (a direction).
   bool NonZero = false;
   QStringList Choices;
+  /// A Choice that also takes any other non-empty name (a colouring array
+  /// the next result will have): an editable combo box.
+  bool OpenChoice = false;
   QString Help;
   /// Display-only (colouring, opacity): changing it does not re-run the job.
   bool Display = false;

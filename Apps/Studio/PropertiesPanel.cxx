@@ -114,6 +114,7 @@ QWidget* PropertiesPanel::MakeEditor(const PropertySpec& spec, const nlohmann::j
   {
     auto* combo = new QComboBox(host);
     combo->addItems(spec.Choices);
+    combo->setEditable(spec.OpenChoice);
     combo->setCurrentText(value.is_string() ? QString::fromStdString(value.get<std::string>()) : QString());
     QObject::connect(combo, QOverload<int>::of(&QComboBox::activated), this,
       [this, spec]() { this->Edited(spec, true); });

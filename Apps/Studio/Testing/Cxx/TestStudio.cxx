@@ -27,7 +27,14 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
+#include "vtkAssembly.h"
+#include "vtkCoordinate.h"
+#include "vtkHandleWidget.h"
+#include "vtkImageData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProp3DCollection.h"
 #include "vtkRenderer.h"
+#include "vtkXMLPolyDataReader.h"
 
 #include <QAction>
 #include <QDoubleSpinBox>
@@ -165,6 +172,10 @@ private Q_SLOTS:
   void PropertiesRefuseBadValues();
   void PythonTraceRebuildsPipeline();
   void CommandLineScreenshot();
+  void CpuBackendSeesWhatTheGpuSees();
+  void ExportsWriteWholeFiles();
+  void FieldItemShowsCurvature();
+  void DraggingTheEyeMovesTheObserver();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -174,8 +185,8 @@ void TestStudio::WindowOpensWithDefaultScene()
   // The default session: the paper's grid, the Gaussian bump with sliders
   // for a and s, the observer at the default scene's camera.
   QCOMPARE(window->Document()->Scene()->HasDefinition(), false);
-  QVERIFY(window->Browser()->SceneRow()->text(0).contains("default grid"));
-  QVERIFY(window->Browser()->MetricRow()->text(0).contains("graph"));
+  QVERIFY(window->Browser()->SceneRow()->text(1).contains("default grid"));
+  QVERIFY(window->Browser()->MetricRow()->text(1).contains("graph"));
   QVERIFY(window->Parameters()->Slider("/parameters/a"));
   QVERIFY(window->Parameters()->Slider("/parameters/s"));
   double position[3];
@@ -319,13 +330,19 @@ void TestStudio::GeodesicItemAddsPolylines()
   QVERIFY(ViewHasProp(window->Outside(), item->Prop()));
   window->Outside()->RenderNow();
   QVERIFY(DifferentPixels(before, window->Outside()->Capture()) > 0.001);
-  // Hide (the eye), then delete.
-  window->Browser()->Row(item)->setCheckState(0, Qt::Unchecked);
+  // Hide with a click on the eye, show again, rename in place, then delete.
+  PipelineBrowser* browser = window->Browser();
+  const QRect eye = browser->visualItemRect(browser->Row(item));
+  QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, QPoint(10, eye.center().y()));
   QVERIFY(!item->IsVisible());
   QVERIFY(!item->Prop()->GetVisibility());
-  window->Document()->RemoveItem(item);
+  QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, QPoint(10, eye.center().y()));
+  QVERIFY(item->IsVisible());
+  browser->Row(item)->setText(1, "Straight lines");
+  QCOMPARE(item->Name(), QString("Straight lines"));
+  QTest::keyClick(browser, Qt::Key_Delete);
   QVERIFY(window->Document()->Items().empty());
-  QVERIFY(!ViewHasProp(window->Outside(), item->Prop()));
+  QVERIFY(!browser->Row(item));
 }
 
 void TestStudio::PickedPixelShowsBundleRay()
@@ -414,7 +431,7 @@ void TestStudio::ProjectRoundTrip()
     reopened.push_back({ item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
   }
   QCOMPARE(QString::fromStdString(reopened.dump()), QString::fromStdString(items.dump()));
-  QCOMPARE(window->Browser()->Row(window->Document()->Items().front().get())->text(0), QString("Fan"));
+  QCOMPARE(window->Browser()->Row(window->Document()->Items().front().get())->text(1), QString("Fan"));
   QCOMPARE(DifferentPixels(inside, window->Inside()->Capture()), 0.0);
   QVERIFY(DifferentPixels(outside, window->Outside()->Capture()) < 0.001);
 }
@@ -589,6 +606,179 @@ void TestStudio::CommandLineScreenshot()
   app.start(binary, { "--screenshot", none, "--view", "sideways" });
   QVERIFY(app.waitForFinished(60000));
   QCOMPARE(app.exitCode(), 2);
+}
+
+void TestStudio::CpuBackendSeesWhatTheGpuSees()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QTemporaryDir folder;
+  QVERIFY(window->OpenFile(WriteQuickScene(folder), false).isEmpty());
+  window->Settle();
+  const QImage gpu = window->Inside()->Capture();
+  // Switch the renderer in the inside view's properties (select the scene).
+  window->Browser()->SelectScene();
+  PropertiesPanel* panel = window->Properties();
+  QVERIFY(panel->Field("Backend"));
+  QVERIFY(panel->Field("SamplesPerPixel"));
+  window->Inside()->SetBackend(InsideView::CPU);
+  window->Settle();
+  QCOMPARE(window->Inside()->GetBackend(), InsideView::CPU);
+  const QImage cpu = window->Inside()->Capture();
+  QCOMPARE(cpu.size(), gpu.size());
+  // Same rays (float on the GPU, double on the CPU): the pictures agree but
+  // for pixels at silhouettes and checker edges.
+  int far = 0;
+  for (int row = 0; row < gpu.height(); ++row)
+  {
+    for (int column = 0; column < gpu.width(); ++column)
+    {
+      const QColor a = gpu.pixelColor(column, row), b = cpu.pixelColor(column, row);
+      far += std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) +
+          std::abs(a.blue() - b.blue()) > 60;
+    }
+  }
+  QVERIFY2(far < gpu.width() * gpu.height() / 20, qPrintable(QString("%1 pixels differ").arg(far)));
+  QVERIFY(DistinctColors(cpu) > 5); // not a cleared view
+}
+
+void TestStudio::ExportsWriteWholeFiles()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QTemporaryDir folder;
+  // Frames of an animated metric: t = 0, 0.5, 1, each a PNG, all different.
+  window->Editor()->SetText(
+    R"json({"type": "graph", "parameters": {"a": {"from": 0, "to": 1.5}},)json"
+    R"json( "f": "a * exp(-(x^2 + y^2 + z^2) / 0.5)"})json");
+  QCOMPARE(window->ExportFrames(folder.filePath("frames"), 3), QString());
+  QImage frames[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    frames[k] = QImage(folder.filePath(QString::asprintf("frames/frame-%04d.png", k)));
+    QVERIFY(!frames[k].isNull());
+  }
+  QVERIFY(DifferentPixels(frames[0], frames[2]) > 0.01);
+  QCOMPARE(window->Document()->Time(), 0.0); // back where it was
+  // An item's data, readable by VTK (as ParaView reads it).
+  PipelineItem* geodesics = window->Document()->AddItem("geodesics");
+  QVERIFY(WaitForJobs(*window));
+  const QString vtp = folder.filePath("geodesics.vtp");
+  QCOMPARE(window->ExportItemData(geodesics, vtp), QString());
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(vtp.toLocal8Bit().constData());
+  reader->Update();
+  QCOMPARE(reader->GetOutput()->GetNumberOfPoints(),
+    vtkPolyData::SafeDownCast(geodesics->Result(0))->GetNumberOfPoints());
+  QVERIFY(reader->GetOutput()->GetPointData()->GetArray("ArcLength"));
+  // A place that cannot be written: an error, and no file.
+  const QString error = window->ExportItemData(geodesics, "/proc/no-such-folder/x.vtp");
+  QVERIFY2(error.contains("/proc/no-such-folder/x.vtp"), qPrintable(error));
+  QVERIFY(!QFileInfo::exists("/proc/no-such-folder/x.vtp"));
+  QVERIFY(!window->SaveProject("/proc/no-such-folder/p.json").isEmpty());
+  // Both views side by side.
+  const QString both = folder.filePath("both.png");
+  QCOMPARE(window->SaveScreenshot(both, StudioMainWindow::BothShot), QString());
+  const QImage shot(both);
+  QCOMPARE(shot.width(), window->Inside()->Capture().width() + window->Outside()->Capture().width());
+}
+
+void TestStudio::FieldItemShowsCurvature()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  // The round 3-sphere: sectional curvature 1, so scalar curvature 6 everywhere.
+  QString text;
+  QFile metric(DataFile("metrics/round-sphere.json"));
+  QVERIFY(metric.open(QIODevice::ReadOnly));
+  QCOMPARE(window->Editor()->SetText(QString::fromUtf8(metric.readAll())), QString());
+  PipelineItem* field = window->Document()->AddItem("field");
+  QVERIFY(field->ApplySettings({ { "Dimensions", { 9, 9, 9 } } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  auto* image = vtkImageData::SafeDownCast(field->Result(0));
+  QVERIFY(image);
+  vtkDataArray* scalar = image->GetPointData()->GetArray("ScalarCurvature");
+  QVERIFY(scalar);
+  for (vtkIdType i = 0; i < scalar->GetNumberOfTuples(); ++i)
+  {
+    QVERIFY2(std::abs(scalar->GetTuple1(i) - 6.0) < 1e-6, qPrintable(QString::number(scalar->GetTuple1(i))));
+  }
+  // What the outside view draws: the slice through the centre, coloured by it.
+  auto shown = [field]() {
+    vtkProp3DCollection* parts = field->Prop()->GetParts();
+    parts->InitTraversal();
+    auto* actor = vtkActor::SafeDownCast(parts->GetNextProp3D());
+    return vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+  };
+  QVERIFY(shown()->GetNumberOfPolys() > 0);
+  double bounds[6];
+  shown()->GetBounds(bounds);
+  QCOMPARE(bounds[4], 0.0); // the z = 0 slice
+  QCOMPARE(bounds[5], 0.0);
+  // Glyphs of the metric tensor: g = n^2 I, so every glyph is a sphere.
+  QVERIFY(field->ApplySettings({ { "Field", "metric-tensor" }, { "Representation", "glyphs" },
+                                 { "ColorArray", "Solid" } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  QVERIFY(shown()->GetNumberOfPoints() > 100);
+  // An isosurface of the volume form sqrt(det g) = n^3 = 1: the sphere r = 1.
+  QVERIFY(field->ApplySettings({ { "Field", "volume-form" }, { "Representation", "isosurface" },
+                                 { "ContourValue", 1.0 }, { "ColorArray", "VolumeForm" } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  vtkPolyData* surface = shown();
+  QVERIFY(surface->GetNumberOfPoints() > 50);
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); i += 7)
+  {
+    double p[3];
+    surface->GetPoint(i, p);
+    QVERIFY2(std::abs(vtkMath::Norm(p) - 1.0) < 0.05, qPrintable(QString::number(vtkMath::Norm(p))));
+  }
+}
+
+void TestStudio::DraggingTheEyeMovesTheObserver()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  OutsideView* outside = window->Outside();
+  vtkCamera* observer = window->Document()->Observer();
+  double eye[3], focal[3];
+  observer->GetPosition(eye);
+  observer->GetFocalPoint(focal);
+  // Where the eye is on screen (VTK display coordinates, origin bottom left).
+  vtkNew<vtkCoordinate> coordinate;
+  coordinate->SetCoordinateSystemToWorld();
+  coordinate->SetValue(eye);
+  const double* display = coordinate->GetComputedDoubleDisplayValue(outside->Renderer());
+  const int height = outside->height();
+  const QPoint start(int(display[0]), height - 1 - int(display[1]));
+  const QPoint end = start + QPoint(40, 25);
+  // A real drag: press, move with the button held, release.
+  auto send = [outside](QEvent::Type type, QPoint at, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, at, outside->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(outside, &event);
+  };
+  send(QEvent::MouseMove, start, Qt::NoButton);
+  send(QEvent::MouseButtonPress, start, Qt::LeftButton);
+  for (int k = 1; k <= 5; ++k)
+  {
+    send(QEvent::MouseMove, start + (end - start) * k / 5, Qt::LeftButton);
+  }
+  send(QEvent::MouseButtonRelease, end, Qt::NoButton);
+  double moved[3], movedFocal[3];
+  observer->GetPosition(moved);
+  observer->GetFocalPoint(movedFocal);
+  QVERIFY2(std::sqrt(vtkMath::Distance2BetweenPoints(eye, moved)) > 0.05, "the observer did not move");
+  // Eye and look-at point moved together: same view direction.
+  for (int i = 0; i < 3; ++i)
+  {
+    QVERIFY(std::abs((movedFocal[i] - moved[i]) - (focal[i] - eye[i])) < 1e-9);
+  }
+  // The frustum drawn outside starts at the new eye.
+  double apex[3];
+  outside->Frustum()->GetPoint(0, apex);
+  // (vtkPoints hold floats.)
+  QVERIFY2(vtkMath::Distance2BetweenPoints(apex, moved) < 1e-10,
+    qPrintable(QString("apex %1 %2 %3, eye %4 %5 %6").arg(apex[0]).arg(apex[1]).arg(apex[2])
+      .arg(moved[0]).arg(moved[1]).arg(moved[2])));
 }
 
 int main(int argc, char* argv[])
