@@ -10,6 +10,8 @@
 #include "vtkPointData.h"
 #include "vtkProperty.h"
 
+#include <algorithm>
+
 namespace riemann
 {
 namespace studio
@@ -77,6 +79,14 @@ void ApplyColoring(vtkActor* actor, vtkDataSet* data, const std::string& array,
   if (!(range[0] < range[1]))
   {
     range[1] = range[0] + 1.0;
+  }
+  // A diverging map is centred on zero when the values change sign
+  // (positive and negative curvature read as warm and cool).
+  if (map == "cool-to-warm" && range[0] < 0.0 && range[1] > 0.0)
+  {
+    const double m = std::max(-range[0], range[1]);
+    range[0] = -m;
+    range[1] = m;
   }
   vtkNew<vtkColorTransferFunction> colors;
   colors->SetColorSpace(map == "cool-to-warm" ? VTK_CTF_DIVERGING : VTK_CTF_RGB);

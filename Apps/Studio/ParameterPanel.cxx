@@ -46,6 +46,24 @@ ParameterPanel::ParameterPanel(StudioDocument* document, QWidget* parent)
 {
   this->Form->setContentsMargins(4, 4, 4, 4);
   QObject::connect(document, &StudioDocument::ParametersChanged, this, &ParameterPanel::Rebuild);
+  // Values set elsewhere (a project, a script) show on the controls.
+  QObject::connect(document, &StudioDocument::MetricChanged, this, [this]() {
+    for (const MetricParameter& parameter : this->Document->Parameters())
+    {
+      if (QDoubleSpinBox* spin = this->SpinBox(parameter.Pointer))
+      {
+        const double value = this->Document->ParameterValue(parameter.Pointer);
+        if (spin->value() != value)
+        {
+          {
+            const QSignalBlocker block(spin);
+            spin->setValue(value);
+          }
+          Q_EMIT spin->editingFinished(); // the slider follows (AddRow)
+        }
+      }
+    }
+  });
   this->Rebuild();
 }
 
@@ -119,6 +137,14 @@ void ParameterPanel::AddRow(const std::string& pointer, const QString& label, do
   QObject::connect(slider, &QSlider::valueChanged, this,
     [range, apply](int position) { apply(range->FromSlider(position)); });
   QObject::connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, apply);
+  QObject::connect(spin, &QDoubleSpinBox::editingFinished, this, [slider, spin, range]() {
+    const QSignalBlocker block(slider);
+    if (spin->value() < range->Low || spin->value() > range->High)
+    {
+      *range = SliderRange(spin->value());
+    }
+    slider->setValue(range->ToSlider(spin->value()));
+  });
 }
 
 QSlider* ParameterPanel::Slider(const std::string& pointer) const

@@ -63,7 +63,8 @@ PipelineBrowser::PipelineBrowser(StudioDocument* document, QWidget* parent)
   this->setColumnCount(2);
   this->header()->hide();
   this->header()->setStretchLastSection(true);
-  this->setColumnWidth(0, 48);
+  this->setIndentation(12);
+  this->setColumnWidth(0, 60);
   this->setIconSize(QSize(20, 20));
   this->setSelectionMode(QAbstractItemView::SingleSelection);
   this->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);

@@ -10,6 +10,7 @@
 #include "vtkCamera.h"
 #include "vtkNew.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QSaveFile>
 
@@ -141,9 +142,15 @@ void ParseMetric(const Json& metric, ProjectData& project)
   }
 }
 
-void ParseScene(const Json& scene, ProjectData& project)
+void ParseScene(const Json& scene, const std::string& folder, ProjectData& project)
 {
   project.SceneFile = scene.contains("file") ? String(scene.at("file"), "scene.file") : "";
+  if (!project.SceneFile.empty() && QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
+  {
+    project.SceneFile = QDir(QString::fromStdString(folder))
+                          .absoluteFilePath(QString::fromStdString(project.SceneFile))
+                          .toStdString();
+  }
   project.SceneText = scene.contains("text") ? String(scene.at("text"), "scene.text") : "";
   vtkNew<vtkRiemannScene> check;
   if (!project.SceneFile.empty() && QFileInfo::exists(QString::fromStdString(project.SceneFile)))
@@ -327,7 +334,7 @@ bool LooksLikeProject(const std::string& text)
   return root.is_object() && root.contains("riemann-studio");
 }
 
-ProjectData ParseProject(const std::string& text)
+ProjectData ParseProject(const std::string& text, const std::string& folder)
 {
   Json root;
   try
@@ -363,7 +370,7 @@ ProjectData ParseProject(const std::string& text)
   ParseMetric(Member(root, "metric", "project"), project);
   if (root.contains("scene"))
   {
-    ParseScene(root.at("scene"), project);
+    ParseScene(root.at("scene"), folder, project);
   }
   project.Observer = ParseCamera(Member(root, "observer", "project"), "observer");
   if (root.contains("inside"))

@@ -6,7 +6,8 @@
  * {
  *   "riemann-studio": 1,
  *   "metric": {"text": "...", "parameter-values": {"/parameters/a": 0.7}, "time": 0.25},
- *   "scene": {"file": "/abs/scene.json", "text": "..."},   // both "" for the default grid
+ *   "scene": {"file": "scene.json", "text": "..."},  // file relative to the project's folder;
+ *                                                    // both "" for the default grid
  *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 60},
  *   "inside": {"backend": "gpu", "samples": 1, "use-scene-settings": true,
  *              "integration": {"IntegratorType": "rk4", "InitialIntegrationStep": 0.02, ...}},
@@ -85,8 +86,11 @@ public:
 /// The document's part of a project (metric, scene, observer, rays, items).
 ProjectData CaptureProject(const StudioDocument& document);
 nlohmann::json ProjectToJson(const ProjectData& project);
-/// Parse and check a project; throws ProjectError saying where and why.
-ProjectData ParseProject(const std::string& text);
+/**
+ * Parse and check a project; throws ProjectError saying where and why. A
+ * relative scene file name is resolved against `folder` (the project file's).
+ */
+ProjectData ParseProject(const std::string& text, const std::string& folder = ".");
 /// Make `document` hold `project` (checked by ParseProject: this cannot fail
 /// halfway; returns "" or why it refused, changing nothing).
 QString ApplyProject(const ProjectData& project, StudioDocument& document);

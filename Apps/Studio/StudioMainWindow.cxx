@@ -585,7 +585,8 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
     {
       try
       {
-        const ProjectData project = ParseProject(utf8);
+        const ProjectData project =
+          ParseProject(utf8, QFileInfo(path).absolutePath().toStdString());
         error = ApplyProject(project, *this->Doc);
         if (error.isEmpty())
         {
