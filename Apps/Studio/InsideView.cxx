@@ -22,6 +22,7 @@
 
 #include <QElapsedTimer>
 #include <QResizeEvent>
+#include <QTimer>
 
 #include <functional>
 
@@ -68,7 +69,10 @@ InsideView::InsideView(StudioDocument* document, QWidget* parent)
   vtkNew<vtkCallbackCommand> moved;
   moved->SetClientData(this);
   moved->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-    static_cast<InsideView*>(clientData)->Document->ObserverChanged();
+    auto* view = static_cast<InsideView*>(clientData);
+    view->Interacting = true;
+    view->Document->ObserverChanged();
+    view->Interacting = false;
   });
   style->AddObserver(vtkCommand::InteractionEvent, moved);
 
@@ -79,16 +83,13 @@ InsideView::InsideView(StudioDocument* document, QWidget* parent)
   });
   this->ObserverRenderer->AddObserver(vtkCommand::EndEvent, rendered);
 
-  QObject::connect(document, &StudioDocument::MetricChanged, this, [this]() { this->RenderNow(); });
-  QObject::connect(document, &StudioDocument::SceneChanged, this, [this]() { this->RenderNow(); });
+  QObject::connect(document, &StudioDocument::MetricChanged, this, &InsideView::ScheduleRender);
+  QObject::connect(document, &StudioDocument::SceneChanged, this, &InsideView::ScheduleRender);
   QObject::connect(document, &StudioDocument::ObserverMoved, this, [this]() {
-    if (this->CurrentBackend == CPU)
+    // The trackball has drawn this view already; the CPU picture is redone.
+    if (!this->Interacting || this->CurrentBackend == CPU)
     {
-      this->StartCpuTrace();
-    }
-    else
-    {
-      this->renderWindow()->Render();
+      this->ScheduleRender();
     }
   });
 }
@@ -165,8 +166,23 @@ void InsideView::SetSamplesPerPixel(int samples)
   }
 }
 
+void InsideView::ScheduleRender()
+{
+  if (!this->RenderPending)
+  {
+    this->RenderPending = true;
+    QTimer::singleShot(0, this, [this]() {
+      if (this->RenderPending)
+      {
+        this->RenderNow();
+      }
+    });
+  }
+}
+
 void InsideView::RenderNow()
 {
+  this->RenderPending = false;
   this->RayTracePass->SetUseSceneSettings(this->Document->UseSceneSettings());
   if (this->CurrentBackend == CPU)
   {
@@ -246,6 +262,10 @@ void InsideView::ShowCpuImage(vtkImageData* image)
 
 QImage InsideView::Capture()
 {
+  if (this->RenderPending)
+  {
+    this->RenderNow();
+  }
   return this->grabFramebuffer();
 }
 

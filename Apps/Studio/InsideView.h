@@ -61,6 +61,10 @@ public:
   /// the trace, the picture arrives later).
   void RenderNow();
   /// The picture on screen, as the user sees it.
+  /// Draw once the current event has been handled: many changes in a row
+  /// (a project opening, a slider dragged) draw one frame.
+  void ScheduleRender();
+  /// The picture on screen (drawn first if a render is pending).
   QImage Capture();
   /// The render window's size in pixels (the size the rays are traced for).
   void PixelSize(int& width, int& height);
@@ -94,6 +98,10 @@ private:
   int Samples = 1;
   bool PickMode = false;
   QString Error;
+  bool RenderPending = false;
+  /// The observer is being moved by this view's own mouse interaction
+  /// (which draws the frame itself).
+  bool Interacting = false;
 };
 }
 }

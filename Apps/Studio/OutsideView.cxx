@@ -25,6 +25,8 @@
 #include "vtkSphereSource.h"
 #include "vtkTubeFilter.h"
 
+#include <QTimer>
+
 #include <algorithm>
 #include <cmath>
 
@@ -123,12 +125,12 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
   QObject::connect(document, &StudioDocument::ItemRemoved, this, &OutsideView::RemoveItem);
   QObject::connect(document, &StudioDocument::ObserverMoved, this, [this]() {
     this->UpdateObserver();
-    this->RenderNow();
+    this->ScheduleRender();
   });
   QObject::connect(document, &StudioDocument::SceneChanged, this, [this]() {
     this->SceneGeometry->Modified();
     this->ResetCamera();
-    this->RenderNow();
+    this->ScheduleRender();
   });
   this->UpdateObserver();
   this->ResetCamera();
@@ -143,18 +145,18 @@ OutsideView::~OutsideView()
 void OutsideView::AddItem(PipelineItem* item)
 {
   this->SceneRenderer->AddViewProp(item->Prop());
-  auto render = [this]() { this->RenderNow(); };
+  auto render = [this]() { this->ScheduleRender(); };
   QObject::connect(item, &PipelineItem::ResultChanged, this, render);
   QObject::connect(item, &PipelineItem::VisibilityChanged, this, render);
   QObject::connect(item, &PipelineItem::SettingsChanged, this, render);
-  this->RenderNow();
+  this->ScheduleRender();
 }
 
 void OutsideView::RemoveItem(PipelineItem* item)
 {
   this->SceneRenderer->RemoveViewProp(item->Prop());
   QObject::disconnect(item, nullptr, this, nullptr);
-  this->RenderNow();
+  this->ScheduleRender();
 }
 
 void OutsideView::UpdateObserver()
@@ -269,13 +271,32 @@ void OutsideView::ResetCamera()
   this->SceneRenderer->ResetCamera(bounds);
 }
 
+void OutsideView::ScheduleRender()
+{
+  if (!this->RenderPending)
+  {
+    this->RenderPending = true;
+    QTimer::singleShot(0, this, [this]() {
+      if (this->RenderPending)
+      {
+        this->RenderNow();
+      }
+    });
+  }
+}
+
 void OutsideView::RenderNow()
 {
+  this->RenderPending = false;
   this->renderWindow()->Render();
 }
 
 QImage OutsideView::Capture()
 {
+  if (this->RenderPending)
+  {
+    this->RenderNow();
+  }
   return this->grabFramebuffer();
 }
 
@@ -297,7 +318,7 @@ void OutsideView::ShowPickedRay(vtkPolyData* ray)
   }
   this->RayActor->SetVisibility(shown);
   this->RayEndActor->SetVisibility(shown);
-  this->RenderNow();
+  this->ScheduleRender();
 }
 
 vtkPolyData* OutsideView::PickedRay() const

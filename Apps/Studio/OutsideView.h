@@ -42,6 +42,10 @@ public:
   /// Frame the scene and the observer from above and to the side.
   void ResetCamera();
   void RenderNow();
+  /// Draw once the current event has been handled: many changes in a row
+  /// (a project opening, a slider dragged) draw one frame.
+  void ScheduleRender();
+  /// The picture on screen (drawn first if a render is pending).
   QImage Capture();
 
   /// Show `ray` (a polyline; null hides it) and a marker at its end.
@@ -71,6 +75,7 @@ private:
   vtkNew<vtkSphereSource> RayEnd;
   vtkNew<vtkActor> RayEndActor;
   bool MovingEye = false;
+  bool RenderPending = false;
 };
 }
 }

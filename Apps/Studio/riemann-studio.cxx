@@ -2,6 +2,7 @@
 //
 //   riemann-studio [project.json | metric.json | scene.json]
 //   riemann-studio FILE --screenshot out.png [--view window|inside|outside|both] [--size WxH]
+//                  [--pick COLUMN,ROW]
 //
 // --screenshot renders the opened session (after every item has been
 // computed), writes the PNG and exits: 0 on success, 1 when the file could
@@ -34,7 +35,10 @@ int main(int argc, char* argv[])
   QCommandLineOption screenshot("screenshot", "Render the opened session, save it as PNG and exit.", "out.png");
   QCommandLineOption view("view", "What --screenshot captures: window (default), inside, outside or both.", "what", "window");
   QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1500x900).", "WxH", "1500x900");
+  QCommandLineOption pick("pick", "Pick this pixel of the inside view (column,row from the "
+                                  "bottom left) before the screenshot: its ray shows outside.", "column,row");
   parser.addOption(screenshot);
+  parser.addOption(pick);
   parser.addOption(view);
   parser.addOption(size);
   parser.process(app);
@@ -86,6 +90,21 @@ int main(int argc, char* argv[])
     return app.exec();
   }
   window.Settle();
+  if (parser.isSet(pick))
+  {
+    const QStringList pixel = parser.value(pick).split(',');
+    bool okColumn = false, okRow = false;
+    const int column = pixel.value(0).toInt(&okColumn);
+    const int row = pixel.size() == 2 ? pixel.value(1).toInt(&okRow) : -1;
+    if (!okColumn || !okRow)
+    {
+      std::fprintf(stderr, "riemann-studio: --pick: expected COLUMN,ROW, got \"%s\"\n",
+        qPrintable(parser.value(pick)));
+      return 2;
+    }
+    window.PickPixel(column, row);
+    window.Settle();
+  }
   const QString error = window.SaveScreenshot(parser.value(screenshot), shot);
   if (!error.isEmpty())
   {
