@@ -104,13 +104,13 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
   this->EyeHandle->AddObserver(vtkCommand::InteractionEvent, dragged);
 
   // The picked ray: a tube, and a ball where it ended.
-  vtkNew<vtkTubeFilter> tube;
-  tube->SetInputData(this->Ray);
-  tube->SetRadius(0.02);
-  tube->SetNumberOfSides(8);
+  this->RayTube->SetInputData(this->Ray);
+  this->RayTube->SetNumberOfSides(8);
   const double rayColor[3] = { 1.0, 0.25, 0.9 };
-  SetUpActor(this->RayActor, tube->GetOutputPort(), rayColor);
+  SetUpActor(this->RayActor, this->RayTube->GetOutputPort(), rayColor);
   SetUpActor(this->RayEndActor, this->RayEnd->GetOutputPort(), rayColor);
+  // One colour: the bundle's arrays on the ray must not colour it.
+  this->RayActor->GetMapper()->ScalarVisibilityOff();
   this->RayEnd->SetRadius(0.06);
   this->RayActor->VisibilityOff();
   this->RayEndActor->VisibilityOff();
@@ -309,8 +309,10 @@ void OutsideView::ShowPickedRay(vtkPolyData* ray)
     double end[3];
     ray->GetPoint(ray->GetNumberOfPoints() - 1, end);
     this->RayEnd->SetCenter(end);
+    // Sized with the scene, like the frustum: visible at any scale.
     const double length = FrustumLength(this->SceneGeometry);
     this->RayEnd->SetRadius(0.04 * length);
+    this->RayTube->SetRadius(0.012 * length);
   }
   else
   {

@@ -14,6 +14,7 @@
 #include "QVTKOpenGLNativeWidget.h"
 
 #include "vtkNew.h"
+#include "vtkTubeFilter.h" // For vtkNew<vtkTubeFilter>
 
 #include <QImage>
 
@@ -71,6 +72,7 @@ private:
   vtkNew<vtkActor> EyeActor;
   vtkNew<vtkHandleWidget> EyeHandle;
   vtkNew<vtkPolyData> Ray;
+  vtkNew<vtkTubeFilter> RayTube;
   vtkNew<vtkActor> RayActor;
   vtkNew<vtkSphereSource> RayEnd;
   vtkNew<vtkActor> RayEndActor;
