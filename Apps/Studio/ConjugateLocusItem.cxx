@@ -40,36 +40,14 @@ ConjugateLocusItem::ConjugateLocusItem(const QString& name)
 
 std::vector<PropertySpec> ConjugateLocusItem::Properties() const
 {
-  PropertySpec observer;
-  observer.Key = "Observer";
-  observer.Label = "Point";
-  observer.Type = PropertySpec::Vector3;
-
-  PropertySpec axis;
-  axis.Key = "ConeAxis";
-  axis.Label = "Cone axis";
-  axis.Type = PropertySpec::Vector3;
-  axis.NonZero = true;
-
-  PropertySpec cone;
-  cone.Key = "ConeAngle";
-  cone.Label = "Cone angle";
-  cone.Minimum = 0.0;
-  cone.Maximum = 180.0;
-
-  PropertySpec count;
-  count.Key = "NumberOfDirections";
-  count.Label = "Directions";
-  count.Type = PropertySpec::Integer;
-  count.Minimum = 4;
-  count.Maximum = 1000000;
-
+  std::vector<PropertySpec> specs = this->ObserverConeProperties(4);
   PropertySpec maximum;
   maximum.Key = "MaximumNumberOfConjugatePoints";
   maximum.Label = "Points per geodesic";
   maximum.Type = PropertySpec::Integer;
   maximum.Minimum = 1;
   maximum.Maximum = 100;
+  specs.push_back(maximum);
 
   PropertySpec tolerance;
   tolerance.Key = "Tolerance";
@@ -77,17 +55,8 @@ std::vector<PropertySpec> ConjugateLocusItem::Properties() const
   tolerance.Minimum = 1e-15;
   tolerance.Maximum = 1.0;
   tolerance.Help = "Arc-length accuracy of each conjugate point";
-
-  std::vector<PropertySpec> specs{ observer, axis, cone, count, maximum, tolerance };
-  for (const PropertySpec& spec : this->IntegrationProperties())
-  {
-    specs.push_back(spec);
-  }
-  for (const PropertySpec& spec : this->DisplayProperties())
-  {
-    specs.push_back(spec);
-  }
-  return specs;
+  specs.push_back(tolerance);
+  return this->WithIntegrationAndDisplay(specs);
 }
 
 vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& inputs) const
@@ -97,13 +66,7 @@ vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& input
   metric->ShallowCopy(inputs.Metric);
   locus->SetMetric(metric);
   this->ApplyIntegration(locus->GetIntegrationSettings());
-  double observer[3], axis[3];
-  this->Vector("Observer", observer, 3);
-  this->Vector("ConeAxis", axis, 3);
-  locus->SetObserver(observer);
-  locus->SetConeAxis(axis);
-  locus->SetConeAngle(this->Number("ConeAngle"));
-  locus->SetNumberOfDirections(this->Integer("NumberOfDirections"));
+  this->ApplyObserverCone(locus.Get());
   locus->SetMaximumNumberOfConjugatePoints(this->Integer("MaximumNumberOfConjugatePoints"));
   locus->SetTolerance(this->Number("Tolerance"));
   return locus;
@@ -137,14 +100,14 @@ std::vector<std::string> ConjugateLocusItem::PythonLines(const std::string& var)
   std::vector<std::string> lines{
     var + " = riemann.vtkRiemannConjugateLocus()",
     var + ".SetMetric(metric)",
-    var + ".SetObserver" + PythonTuple(this->Settings().at("Observer")),
-    var + ".SetConeAxis" + PythonTuple(this->Settings().at("ConeAxis")),
-    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
-    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
-    var + ".SetMaximumNumberOfConjugatePoints(" +
-      std::to_string(this->Integer("MaximumNumberOfConjugatePoints")) + ")",
-    var + ".SetTolerance(" + PythonNumber(this->Number("Tolerance")) + ")",
   };
+  for (const std::string& line : this->ObserverConePythonLines(var))
+  {
+    lines.push_back(line);
+  }
+  lines.push_back(var + ".SetMaximumNumberOfConjugatePoints(" +
+    std::to_string(this->Integer("MaximumNumberOfConjugatePoints")) + ")");
+  lines.push_back(var + ".SetTolerance(" + PythonNumber(this->Number("Tolerance")) + ")");
   for (const std::string& line : this->IntegrationPythonLines(var))
   {
     lines.push_back(line);

@@ -36,32 +36,7 @@ ExponentialMapItem::ExponentialMapItem(const QString& name)
 
 std::vector<PropertySpec> ExponentialMapItem::Properties() const
 {
-  PropertySpec observer;
-  observer.Key = "Observer";
-  observer.Label = "Point";
-  observer.Type = PropertySpec::Vector3;
-  observer.Help = "Where the geodesics start (the exponential map's base point)";
-
-  PropertySpec axis;
-  axis.Key = "ConeAxis";
-  axis.Label = "Cone axis";
-  axis.Type = PropertySpec::Vector3;
-  axis.NonZero = true;
-
-  PropertySpec cone;
-  cone.Key = "ConeAngle";
-  cone.Label = "Cone angle";
-  cone.Minimum = 0.0;
-  cone.Maximum = 180.0;
-  cone.Help = "Half-angle in degrees (180: the whole sphere of directions)";
-
-  PropertySpec count;
-  count.Key = "NumberOfDirections";
-  count.Label = "Directions";
-  count.Type = PropertySpec::Integer;
-  count.Minimum = 4;
-  count.Maximum = 1000000;
-
+  std::vector<PropertySpec> specs = this->ObserverConeProperties(4);
   PropertySpec fronts;
   fronts.Key = "NumberOfWavefronts";
   fronts.Label = "Wavefronts";
@@ -69,17 +44,8 @@ std::vector<PropertySpec> ExponentialMapItem::Properties() const
   fronts.Minimum = 0;
   fronts.Maximum = 100;
   fronts.Help = "Geodesic spheres at radii L k / N, k = 1..N (L: the length)";
-
-  std::vector<PropertySpec> specs{ observer, axis, cone, count, fronts };
-  for (const PropertySpec& spec : this->IntegrationProperties())
-  {
-    specs.push_back(spec);
-  }
-  for (const PropertySpec& spec : this->DisplayProperties())
-  {
-    specs.push_back(spec);
-  }
-  return specs;
+  specs.push_back(fronts);
+  return this->WithIntegrationAndDisplay(specs);
 }
 
 vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& inputs) const
@@ -89,13 +55,7 @@ vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& input
   metric->ShallowCopy(inputs.Metric);
   expmap->SetMetric(metric);
   this->ApplyIntegration(expmap->GetIntegrationSettings());
-  double observer[3], axis[3];
-  this->Vector("Observer", observer, 3);
-  this->Vector("ConeAxis", axis, 3);
-  expmap->SetObserver(observer);
-  expmap->SetConeAxis(axis);
-  expmap->SetConeAngle(this->Number("ConeAngle"));
-  expmap->SetNumberOfDirections(this->Integer("NumberOfDirections"));
+  this->ApplyObserverCone(expmap.Get());
   const int fronts = this->Integer("NumberOfWavefronts");
   const double length = this->Number("MaximumPropagation");
   for (int k = 1; k <= fronts; ++k)
@@ -134,11 +94,11 @@ std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var)
   std::vector<std::string> lines{
     var + " = riemann.vtkRiemannExponentialMap()",
     var + ".SetMetric(metric)",
-    var + ".SetObserver" + PythonTuple(this->Settings().at("Observer")),
-    var + ".SetConeAxis" + PythonTuple(this->Settings().at("ConeAxis")),
-    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
-    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
   };
+  for (const std::string& line : this->ObserverConePythonLines(var))
+  {
+    lines.push_back(line);
+  }
   const int fronts = this->Integer("NumberOfWavefronts");
   const double length = this->Number("MaximumPropagation");
   for (int k = 1; k <= fronts; ++k)

@@ -100,16 +100,7 @@ std::vector<PropertySpec> GeodesicsItem::Properties() const
   direction.Type = PropertySpec::Choice;
   direction.Choices = QStringList{ "forward", "backward", "both" };
 
-  std::vector<PropertySpec> specs{ seed, axis, cone, count, direction };
-  for (const PropertySpec& spec : this->IntegrationProperties())
-  {
-    specs.push_back(spec);
-  }
-  for (const PropertySpec& spec : this->DisplayProperties())
-  {
-    specs.push_back(spec);
-  }
-  return specs;
+  return this->WithIntegrationAndDisplay({ seed, axis, cone, count, direction });
 }
 
 vtkSmartPointer<vtkAlgorithm> GeodesicsItem::MakeJob(const JobInputs& inputs) const

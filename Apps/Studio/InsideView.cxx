@@ -1,5 +1,6 @@
 #include "InsideView.h"
 
+#include "InsideViewRays.h"
 #include "StudioDocument.h"
 
 #include "vtkRiemannCPURayTracer.h"
@@ -206,21 +207,8 @@ void InsideView::StartCpuTrace()
   int width, height;
   this->PixelSize(width, height);
   auto tracer = vtkSmartPointer<vtkRiemannCPURayTracer>::New();
-  const JobInputs inputs = this->Document->MakeJobInputs();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  vtkNew<vtkRiemannScene> scene;
-  scene->ShallowCopy(inputs.Scene);
-  vtkNew<vtkCamera> camera;
-  camera->DeepCopy(inputs.Observer);
-  tracer->SetMetric(metric);
-  tracer->SetScene(scene);
-  tracer->SetCamera(camera);
-  tracer->SetWidth(width);
-  tracer->SetHeight(height);
+  SetUpInsideViewRays(tracer.Get(), this->Document->MakeJobInputs(), width, height, true);
   tracer->SetSamplesPerPixel(this->Samples);
-  tracer->SetUseSceneSettings(inputs.UseSceneSettings);
-  tracer->GetIntegrationSettings()->DeepCopy(inputs.RaySettings);
   auto timer = std::make_shared<QElapsedTimer>();
   timer->start();
   this->Document->Jobs()->Start(this, tracer, QStringLiteral("CPU render"),

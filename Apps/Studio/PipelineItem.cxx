@@ -331,7 +331,7 @@ void PipelineItem::ApplyIntegration(vtkRiemannIntegrationSettings* settings) con
   settings->SetMaximumNumberOfSteps(this->Integer("MaximumNumberOfSteps"));
 }
 
-std::vector<PropertySpec> PipelineItem::IntegrationProperties() const
+std::vector<PropertySpec> IntegrationPropertySpecs()
 {
   PropertySpec integrator;
   integrator.Key = "IntegratorType";
@@ -380,6 +380,59 @@ std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string&
     settings + ".SetMaximumPropagation(" + PythonNumber(this->Number("MaximumPropagation")) + ")",
     settings + ".SetMaximumNumberOfSteps(" + std::to_string(this->Integer("MaximumNumberOfSteps")) + ")",
   };
+}
+
+std::vector<PropertySpec> PipelineItem::ObserverConeProperties(int minimumDirections) const
+{
+  PropertySpec observer;
+  observer.Key = "Observer";
+  observer.Label = "Point";
+  observer.Type = PropertySpec::Vector3;
+  observer.Help = "Where the geodesics start";
+
+  PropertySpec axis;
+  axis.Key = "ConeAxis";
+  axis.Label = "Cone axis";
+  axis.Type = PropertySpec::Vector3;
+  axis.NonZero = true;
+
+  PropertySpec cone;
+  cone.Key = "ConeAngle";
+  cone.Label = "Cone angle";
+  cone.Minimum = 0.0;
+  cone.Maximum = 180.0;
+  cone.Help = "Half-angle in degrees (180: the whole sphere of directions)";
+
+  PropertySpec count;
+  count.Key = "NumberOfDirections";
+  count.Label = "Directions";
+  count.Type = PropertySpec::Integer;
+  count.Minimum = minimumDirections;
+  count.Maximum = 1000000;
+  return { observer, axis, cone, count };
+}
+
+std::vector<std::string> PipelineItem::ObserverConePythonLines(const std::string& var) const
+{
+  return {
+    var + ".SetObserver" + PythonTuple(this->Values.at("Observer")),
+    var + ".SetConeAxis" + PythonTuple(this->Values.at("ConeAxis")),
+    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
+    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
+  };
+}
+
+std::vector<PropertySpec> PipelineItem::WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const
+{
+  for (const PropertySpec& spec : IntegrationPropertySpecs())
+  {
+    specs.push_back(spec);
+  }
+  for (const PropertySpec& spec : this->DisplayProperties())
+  {
+    specs.push_back(spec);
+  }
+  return specs;
 }
 
 std::string PythonNumber(double value)

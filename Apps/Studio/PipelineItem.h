@@ -80,6 +80,14 @@ struct PropertySpec
  */
 QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value);
 
+/**
+ * The integration settings (vtkRiemannIntegrationSettings's names:
+ * IntegratorType spelled euler|rk4|dp45, InitialIntegrationStep,
+ * MaximumError, MaximumPropagation, MaximumNumberOfSteps), as every item and
+ * the inside view's properties show them.
+ */
+std::vector<PropertySpec> IntegrationPropertySpecs();
+
 /// What a job needs from the document, copied on the GUI thread.
 struct JobInputs
 {
@@ -169,10 +177,26 @@ protected:
   /// Copy integration settings keys (IntegratorType, InitialIntegrationStep,
   /// MaximumError, MaximumPropagation, MaximumNumberOfSteps) into `settings`.
   void ApplyIntegration(vtkRiemannIntegrationSettings* settings) const;
-  /// Their specs, with this item's defaults.
-  std::vector<PropertySpec> IntegrationProperties() const;
   /// The Python lines of ApplyIntegration.
   std::vector<std::string> IntegrationPythonLines(const std::string& var) const;
+  /// A base point ("Observer") and a cone of directions ("ConeAxis",
+  /// "ConeAngle", "NumberOfDirections"): the exponential map's and the
+  /// conjugate locus's settings, their Set calls and their Python lines.
+  std::vector<PropertySpec> ObserverConeProperties(int minimumDirections) const;
+  template <class ConeFilter>
+  void ApplyObserverCone(ConeFilter* filter) const
+  {
+    double observer[3], axis[3];
+    this->Vector("Observer", observer, 3);
+    this->Vector("ConeAxis", axis, 3);
+    filter->SetObserver(observer);
+    filter->SetConeAxis(axis);
+    filter->SetConeAngle(this->Number("ConeAngle"));
+    filter->SetNumberOfDirections(this->Integer("NumberOfDirections"));
+  }
+  std::vector<std::string> ObserverConePythonLines(const std::string& var) const;
+  /// `specs` followed by the integration and display settings.
+  std::vector<PropertySpec> WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const;
 
   std::vector<vtkSmartPointer<vtkDataObject>> Results;
   vtkSmartPointer<vtkAssembly> Assembly;

@@ -2,6 +2,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "InsideViewRays.h"
 
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
@@ -51,19 +52,7 @@ std::vector<PropertySpec> RayBundleItem::Properties() const
 vtkSmartPointer<vtkAlgorithm> RayBundleItem::MakeJob(const JobInputs& inputs) const
 {
   auto bundle = vtkSmartPointer<vtkRiemannRayBundle>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  vtkNew<vtkRiemannScene> scene;
-  scene->ShallowCopy(inputs.Scene);
-  vtkNew<vtkCamera> camera;
-  camera->DeepCopy(inputs.Observer);
-  bundle->SetMetric(metric);
-  bundle->SetScene(scene);
-  bundle->SetCamera(camera);
-  bundle->SetWidth(inputs.Width);
-  bundle->SetHeight(inputs.Height);
-  bundle->SetUseSceneSettings(inputs.UseSceneSettings);
-  bundle->GetIntegrationSettings()->DeepCopy(inputs.RaySettings);
+  SetUpInsideViewRays(bundle.Get(), inputs, inputs.Width, inputs.Height, true);
   bundle->SetSubgridResolution(this->Integer("SubgridResolution"));
   return bundle;
 }

@@ -1,6 +1,7 @@
 #include "StudioMainWindow.h"
 
 #include "InsideView.h"
+#include "InsideViewRays.h"
 #include "MetricEditor.h"
 #include "OutsideView.h"
 #include "ParameterPanel.h"
@@ -446,17 +447,11 @@ void StudioMainWindow::ShowInsideViewSettings()
   sceneSettings.Label = "Scene's integrator";
   sceneSettings.Type = PropertySpec::Boolean;
   sceneSettings.Help = "Use the scene's \"integrator\" block (else the settings below)";
-  // The integration settings of the rays, with an item's checks.
-  GeodesicsItem reference("rays");
+  // The integration settings of the rays, with the items' checks.
   std::vector<PropertySpec> specs{ backend, samples, sceneSettings };
-  for (const PropertySpec& spec : reference.Properties())
+  for (const PropertySpec& spec : IntegrationPropertySpecs())
   {
-    if (spec.Key == "IntegratorType" || spec.Key == "InitialIntegrationStep" ||
-      spec.Key == "MaximumError" || spec.Key == "MaximumPropagation" ||
-      spec.Key == "MaximumNumberOfSteps")
-    {
-      specs.push_back(spec);
-    }
+    specs.push_back(spec);
   }
   vtkRiemannIntegrationSettings* rays = this->Doc->RaySettings();
   const char* integrators[] = { "euler", "rk4", "dp45" };
@@ -524,14 +519,7 @@ void StudioMainWindow::PickPixel(int column, int row)
   }
   // The same rays the inside view draws: vtkRiemannRayBundle for one pixel.
   vtkNew<vtkRiemannRayBundle> bundle;
-  const JobInputs inputs = this->Doc->MakeJobInputs();
-  bundle->SetMetric(inputs.Metric);
-  bundle->SetScene(inputs.Scene);
-  bundle->SetCamera(inputs.Observer);
-  bundle->SetWidth(width);
-  bundle->SetHeight(height);
-  bundle->SetUseSceneSettings(inputs.UseSceneSettings);
-  bundle->GetIntegrationSettings()->DeepCopy(inputs.RaySettings);
+  SetUpInsideViewRays(bundle.Get(), this->Doc->MakeJobInputs(), width, height, false);
   bundle->SetPixelRegion(column, column, row, row);
   bundle->UsePixelRegionOn();
   bundle->Update();
