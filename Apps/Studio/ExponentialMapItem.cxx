@@ -20,7 +20,7 @@ namespace studio
 ExponentialMapItem::ExponentialMapItem(const QString& name)
   : PipelineItem(name,
       { { "Observer", { 0.0, 0.0, 3.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
-        { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 }, { "NumberOfWavefronts", 4 },
+        { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 }, { "Radii", { 1.25, 2.5, 3.75, 5.0 } },
         { "IntegratorType", "rk4" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
         { "MaximumPropagation", 5.0 }, { "MaximumNumberOfSteps", 10000 },
         { "ColorArray", "TransverseJacobian" } })
@@ -37,14 +37,15 @@ ExponentialMapItem::ExponentialMapItem(const QString& name)
 std::vector<PropertySpec> ExponentialMapItem::Properties() const
 {
   std::vector<PropertySpec> specs = this->ObserverConeProperties(4);
-  PropertySpec fronts;
-  fronts.Key = "NumberOfWavefronts";
-  fronts.Label = "Wavefronts";
-  fronts.Type = PropertySpec::Integer;
-  fronts.Minimum = 0;
-  fronts.Maximum = 100;
-  fronts.Help = "Geodesic spheres at radii L k / N, k = 1..N (L: the length)";
-  specs.push_back(fronts);
+  PropertySpec radii;
+  radii.Key = "Radii";
+  radii.Label = "Radii";
+  radii.Type = PropertySpec::NumberList;
+  radii.Minimum = 0.0;
+  radii.MinimumExclusive = true;
+  radii.Help = "Arc lengths of the geodesic spheres (wavefronts), e.g. 1, 2.5, 4; those beyond "
+               "the length are not reached";
+  specs.push_back(radii);
   return this->WithIntegrationAndDisplay(specs);
 }
 
@@ -56,11 +57,9 @@ vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& input
   expmap->SetMetric(metric);
   this->ApplyIntegration(expmap->GetIntegrationSettings());
   this->ApplyObserverCone(expmap.Get());
-  const int fronts = this->Integer("NumberOfWavefronts");
-  const double length = this->Number("MaximumPropagation");
-  for (int k = 1; k <= fronts; ++k)
+  for (const nlohmann::json& radius : this->Settings().at("Radii"))
   {
-    expmap->AddRadius(length * k / fronts);
+    expmap->AddRadius(radius.get<double>());
   }
   return expmap;
 }
@@ -99,11 +98,9 @@ std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var)
   {
     lines.push_back(line);
   }
-  const int fronts = this->Integer("NumberOfWavefronts");
-  const double length = this->Number("MaximumPropagation");
-  for (int k = 1; k <= fronts; ++k)
+  for (const nlohmann::json& radius : this->Settings().at("Radii"))
   {
-    lines.push_back(var + ".AddRadius(" + PythonNumber(length * k / fronts) + ")");
+    lines.push_back(var + ".AddRadius(" + PythonNumber(radius.get<double>()) + ")");
   }
   for (const std::string& line : this->IntegrationPythonLines(var))
   {

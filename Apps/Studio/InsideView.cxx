@@ -155,7 +155,7 @@ void InsideView::SetBackend(Backend backend)
   // CPU: the observer's renderer only clears; the traced image is on top.
   this->ObserverRenderer->SetPass(backend == GPU ? this->RayTracePass.Get() : nullptr);
   this->ImageRenderer->SetDraw(backend == CPU);
-  this->RenderNow();
+  this->ScheduleRender();
 }
 
 void InsideView::SetSamplesPerPixel(int samples)
@@ -163,7 +163,7 @@ void InsideView::SetSamplesPerPixel(int samples)
   this->Samples = std::max(1, samples);
   if (this->CurrentBackend == CPU)
   {
-    this->RenderNow();
+    this->ScheduleRender();
   }
 }
 

@@ -127,6 +127,12 @@ QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value
       return QString();
     case PropertySpec::Boolean:
       return value.is_boolean() ? QString() : QStringLiteral("expected true or false");
+    case PropertySpec::NumberList:
+      if (!value.is_array() || value.empty() || value.size() > 1000)
+      {
+        return QStringLiteral("expected 1 to 1000 numbers");
+      }
+      return CheckList(spec, value, static_cast<int>(value.size()), false);
   }
   return QStringLiteral("unknown kind of setting");
 }

@@ -54,7 +54,8 @@ struct PropertySpec
     Numbers6, ///< six real numbers (bounds x0 x1 y0 y1 z0 z1)
     Integers3,///< three whole numbers (grid dimensions)
     Choice,   ///< one of Choices (stored as the string)
-    Boolean
+    Boolean,
+    NumberList ///< one or more real numbers in [Minimum, Maximum] (radii), typed "1, 2.5, 4"
   };
   std::string Key;
   QString Label;

@@ -6,7 +6,7 @@
  * |-------------------|-----------------------------------------|-------|
  * | geodesics         | vtkRiemannGeodesicTracer                | polylines from a seed, a cone of directions |
  * | ray-bundle        | vtkRiemannRayBundle                     | the inside view's rays, coloured by where they end |
- * | exponential-map   | vtkRiemannExponentialMap                | rays + geodesic spheres (wavefronts) |
+ * | exponential-map   | vtkRiemannExponentialMap                | rays + geodesic spheres (wavefronts) at chosen radii |
  * | conjugate-locus   | vtkRiemannConjugateLocus                | conjugate points + caustic surfaces |
  * | field             | vtkRiemannCurvatureField / VolumeForm / MetricTensorField | slice, isosurface or tensor glyphs |
  */

@@ -127,6 +127,20 @@ QWidget* PropertiesPanel::MakeEditor(const PropertySpec& spec, const nlohmann::j
     QObject::connect(check, &QCheckBox::toggled, this, [this, spec]() { this->Edited(spec, true); });
     editors.push_back(check);
   }
+  else if (spec.Type == PropertySpec::NumberList)
+  {
+    auto* line = new QLineEdit(host);
+    QStringList numbers;
+    for (const nlohmann::json& number : value.is_array() ? value : nlohmann::json::array())
+    {
+      numbers << NumberText(number);
+    }
+    line->setText(numbers.join(", "));
+    line->setPlaceholderText("1, 2.5, 4");
+    QObject::connect(line, &QLineEdit::textEdited, this, [this, spec]() { this->Edited(spec, false); });
+    QObject::connect(line, &QLineEdit::editingFinished, this, [this, spec]() { this->Edited(spec, true); });
+    editors.push_back(line);
+  }
   else
   {
     const int count = ComponentCount(spec);
@@ -160,22 +174,36 @@ nlohmann::json PropertiesPanel::ReadEditor(const PropertySpec& spec, QString& pr
   {
     return check->isChecked();
   }
-  nlohmann::json numbers = nlohmann::json::array();
-  for (std::size_t i = 0; i < editors.size(); ++i)
+  // A list is one field of comma-separated numbers; a vector, one field each.
+  QStringList texts;
+  for (QWidget* editor : editors)
   {
-    const QString text = static_cast<QLineEdit*>(editors[i])->text().trimmed();
+    texts << static_cast<QLineEdit*>(editor)->text().trimmed();
+  }
+  if (spec.Type == PropertySpec::NumberList)
+  {
+    texts = texts.front().split(',', Qt::SkipEmptyParts);
+  }
+  nlohmann::json numbers = nlohmann::json::array();
+  for (int i = 0; i < texts.size(); ++i)
+  {
+    const QString text = texts[i].trimmed();
     bool ok = false;
     const double number = text.toDouble(&ok);
     if (!ok)
     {
-      problem = editors.size() > 1
+      problem = texts.size() > 1
         ? QStringLiteral("number %1: \"%2\" is not a number").arg(i + 1).arg(text)
         : QStringLiteral("\"%1\" is not a number").arg(text);
       return nlohmann::json();
     }
     numbers.push_back(number);
   }
-  return editors.size() == 1 ? numbers[0] : numbers;
+  if (spec.Type == PropertySpec::NumberList)
+  {
+    return numbers;
+  }
+  return editors.size() == 1 && !numbers.empty() ? numbers[0] : numbers;
 }
 
 void PropertiesPanel::Edited(const PropertySpec& spec, bool finished)

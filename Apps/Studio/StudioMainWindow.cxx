@@ -24,6 +24,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -649,7 +650,7 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
   {
     this->OutsideWidget->ResetCamera();
   }
-  this->OutsideWidget->RenderNow();
+  this->OutsideWidget->ScheduleRender();
   return QString();
 }
 
@@ -817,7 +818,14 @@ void StudioMainWindow::Settle(int timeoutMilliseconds)
     QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
   } while (this->Doc->Jobs()->NumberOfRunningJobs() > 0 && timer.elapsed() < timeoutMilliseconds);
   QCoreApplication::processEvents();
-  this->InsideWidget->RenderNow();
+  if (this->InsideWidget->GetBackend() == InsideView::GPU)
+  {
+    this->InsideWidget->RenderNow();
+  }
+  else
+  {
+    this->InsideWidget->renderWindow()->Render(); // the traced picture, not a new trace
+  }
   this->OutsideWidget->RenderNow();
   QCoreApplication::processEvents();
 }

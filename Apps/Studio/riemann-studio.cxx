@@ -69,7 +69,6 @@ int main(int argc, char* argv[])
 
   StudioMainWindow window;
   window.resize(width, height);
-  window.show();
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1)
   {
@@ -85,6 +84,9 @@ int main(int argc, char* argv[])
       return 1;
     }
   }
+  // Shown once the file is open: the first frame is the file's, not the
+  // default scene's (renders are scheduled, and run once the window shows).
+  window.show();
   if (!batch)
   {
     return app.exec();

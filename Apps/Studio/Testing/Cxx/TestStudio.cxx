@@ -55,12 +55,21 @@ using namespace riemann::studio;
 namespace
 {
 /// A window as a user gets it, shown and settled (jobs done, views drawn).
-/// The inside view is kept small: Mesa's llvmpipe traces about 20 000
-/// pixels a second here (Testing/Benchmarks/README.md).
-std::unique_ptr<StudioMainWindow> OpenWindow()
+/// The inside view is kept small, and unless `defaultRays` its rays short
+/// and coarse (the inside view's own settings instead of the scene's): Mesa's
+/// llvmpipe traces the default scene at about 20,000 pixels a second here.
+std::unique_ptr<StudioMainWindow> OpenWindow(bool defaultRays = false)
 {
   auto window = std::make_unique<StudioMainWindow>();
   window->Inside()->setFixedSize(240, 180);
+  if (!defaultRays)
+  {
+    vtkRiemannIntegrationSettings* rays = window->Document()->RaySettings();
+    rays->SetInitialIntegrationStep(0.06);
+    rays->SetMaximumPropagation(15.0);
+    rays->SetMaximumNumberOfSteps(300);
+    window->Document()->SetUseSceneSettings(false);
+  }
   window->resize(1100, 700);
   window->show();
   if (!QTest::qWaitForWindowExposed(window.get()))
@@ -180,7 +189,7 @@ private Q_SLOTS:
 
 void TestStudio::WindowOpensWithDefaultScene()
 {
-  auto window = OpenWindow();
+  auto window = OpenWindow(true);
   QVERIFY(window);
   // The default session: the paper's grid, the Gaussian bump with sliders
   // for a and s, the observer at the default scene's camera.
@@ -374,6 +383,8 @@ void TestStudio::PickedPixelShowsBundleRay()
   bundle->SetCamera(inside->Renderer()->GetActiveCamera());
   bundle->SetWidth(width);
   bundle->SetHeight(height);
+  bundle->SetUseSceneSettings(window->Document()->UseSceneSettings());
+  bundle->GetIntegrationSettings()->DeepCopy(window->Document()->RaySettings());
   bundle->SetPixelRegion(column, column, row, row);
   bundle->UsePixelRegionOn();
   bundle->Update();
@@ -531,6 +542,17 @@ void TestStudio::PropertiesRefuseBadValues()
   step->selectAll();
   QTest::keyClicks(step, "abc");
   QVERIFY(panel->FieldError("InitialIntegrationStep").contains("not a number"));
+  // The radii of the wavefronts: a list, every one positive.
+  auto* radii = qobject_cast<QLineEdit*>(panel->Field("Radii"));
+  QVERIFY(radii);
+  QCOMPARE(radii->text(), QString("1.25, 2.5, 3.75, 5"));
+  radii->selectAll();
+  QTest::keyClicks(radii, "1, -2");
+  QVERIFY2(panel->FieldError("Radii").contains("number 2: must be > 0"),
+    qPrintable(panel->FieldError("Radii")));
+  radii->selectAll();
+  QTest::keyClicks(radii, "1, 2.5");
+  QVERIFY(panel->FieldError("Radii").isEmpty());
   // Good values apply.
   angle->selectAll();
   QTest::keyClicks(angle, "20");
@@ -540,6 +562,7 @@ void TestStudio::PropertiesRefuseBadValues()
   QVERIFY(panel->Apply());
   QCOMPARE(item->Settings().at("ConeAngle").get<double>(), 20.0);
   QCOMPARE(item->Settings().at("InitialIntegrationStep").get<double>(), 0.02);
+  QCOMPARE(QString::fromStdString(item->Settings().at("Radii").dump()), QString("[1.0,2.5]"));
   window->Document()->Jobs()->CancelAll();
   QVERIFY(WaitForJobs(*window));
 }
