@@ -20,6 +20,17 @@
 
 int main(int argc, char* argv[])
 {
+  // Without a display Qt's xcb platform aborts the process after its own
+  // message; say what to do instead (as `riemann render` does for the GPU).
+  const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+  if (!platformChosen && qEnvironmentVariableIsEmpty("DISPLAY") &&
+    qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
+  {
+    std::fprintf(stderr, "riemann-studio: no display (DISPLAY is not set): run it in a desktop "
+                         "session, or under xvfb-run for --screenshot (xvfb-run -a riemann-studio "
+                         "FILE --screenshot out.png)\n");
+    return 1;
+  }
   // The format QVTKOpenGLNativeWidget needs (OpenGL 3.2 core or later),
   // before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());

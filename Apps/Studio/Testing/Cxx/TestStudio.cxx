@@ -629,6 +629,17 @@ void TestStudio::CommandLineScreenshot()
   app.start(binary, { "--screenshot", none, "--view", "sideways" });
   QVERIFY(app.waitForFinished(60000));
   QCOMPARE(app.exitCode(), 2);
+  // No display: a message that says what to do, exit status 1 (not Qt's abort).
+  QProcessEnvironment headless = QProcessEnvironment::systemEnvironment();
+  headless.remove("DISPLAY");
+  headless.remove("WAYLAND_DISPLAY");
+  headless.remove("QT_QPA_PLATFORM");
+  app.setProcessEnvironment(headless);
+  app.start(binary, { WriteQuickScene(folder), "--screenshot", none });
+  QVERIFY(app.waitForFinished(60000));
+  QCOMPARE(app.exitStatus(), QProcess::NormalExit);
+  QCOMPARE(app.exitCode(), 1);
+  QVERIFY(QString::fromUtf8(app.readAllStandardError()).contains("no display"));
 }
 
 void TestStudio::CpuBackendSeesWhatTheGpuSees()
