@@ -8,8 +8,11 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace riemann
 {
@@ -96,6 +99,60 @@ bool TransverseFrame(
   return e1.allFinite();
 }
 
+/**
+ * sample.Phases: the eigenvalue angles of W = (X + iY)(X - iY)^-1 (file
+ * comment of JacobiField.h), X and Y the fields and their covariant
+ * derivatives in the frame (e0, e1), columns = fields.
+ */
+bool MaslovPhases(
+  const Metric& metric, const Mat3& g, const Vec3& e0, const Vec3& e1, JacobiSample& sample)
+{
+  Mat3Stack gamma;
+  if (!metric.Christoffel(sample.Point, gamma))
+  {
+    return false;
+  }
+  // [X; Y] as a 4x2 real matrix; its columns are orthonormalised first (W
+  // depends only on the plane they span): keeps W accurate where the fields
+  // grow or shrink a lot.
+  Eigen::Matrix<double, 4, 2> frame;
+  for (int a = 0; a < 2; ++a)
+  {
+    Vec3 covariant = sample.DJ[a];
+    for (int m = 0; m < 3; ++m)
+    {
+      covariant[m] += sample.Velocity.dot(gamma[m] * sample.J[a]);
+    }
+    frame(0, a) = sample.J[a].dot(g * e0);
+    frame(1, a) = sample.J[a].dot(g * e1);
+    frame(2, a) = covariant.dot(g * e0);
+    frame(3, a) = covariant.dot(g * e1);
+  }
+  const Eigen::HouseholderQR<Eigen::Matrix<double, 4, 2>> qr(frame);
+  const Eigen::Matrix<double, 4, 2> q =
+    qr.householderQ() * Eigen::Matrix<double, 4, 2>::Identity();
+  using Complex = std::complex<double>;
+  Eigen::Matrix2cd plus, minus;
+  for (int r = 0; r < 2; ++r)
+  {
+    for (int c = 0; c < 2; ++c)
+    {
+      plus(r, c) = Complex(q(r, c), q(2 + r, c));
+      minus(r, c) = Complex(q(r, c), -q(2 + r, c));
+    }
+  }
+  const Eigen::Matrix2cd w = plus * minus.inverse();
+  // Eigenvalues of the 2x2 matrix without cancellation near a double
+  // eigenvalue (a round sphere's W is a multiple of I): the discriminant is
+  // ((w00 - w11) / 2)^2 + w01 w10, not tr^2 / 4 - det.
+  const Complex half = 0.5 * (w(0, 0) + w(1, 1));
+  const Complex gap = 0.5 * (w(0, 0) - w(1, 1));
+  const Complex root = std::sqrt(gap * gap + w(0, 1) * w(1, 0));
+  sample.Phases[0] = std::arg(half + root);
+  sample.Phases[1] = std::arg(half - root);
+  return std::isfinite(sample.Phases[0]) && std::isfinite(sample.Phases[1]);
+}
+
 bool FillSample(const Metric& metric, double s, const Vec18& y, JacobiSample& sample)
 {
   sample.ArcLength = s;
@@ -137,7 +194,7 @@ bool FillSample(const Metric& metric, double s, const Vec18& y, JacobiSample& sa
   const Eigen::JacobiSVD<Eigen::Matrix2d> svd(t);
   sample.SingularValues[0] = svd.singularValues()[0];
   sample.SingularValues[1] = svd.singularValues()[1];
-  return std::isfinite(sample.Determinant);
+  return std::isfinite(sample.Determinant) && MaslovPhases(metric, g, e0, e1, sample);
 }
 
 Vec18 StateOf(const JacobiSample& sample)
@@ -145,37 +202,6 @@ Vec18 StateOf(const JacobiSample& sample)
   Vec18 y;
   y << sample.Point, sample.Velocity, sample.J[0], sample.DJ[0], sample.J[1], sample.DJ[1];
   return y;
-}
-
-/// The sample at arc length s >= from.ArcLength, re-integrated from `from`
-/// by RK4 with a number of sub-steps fixed for a search (a smooth function
-/// of s): 8 per `interval` (the sample spacing there), at least 8.
-bool SampleAt(
-  const Metric& metric, const JacobiSample& from, double s, double interval, JacobiSample& sample)
-{
-  const int subSteps = std::max(8,
-    static_cast<int>(std::ceil(8.0 * (s - from.ArcLength) / std::max(interval, 1e-300) - 1e-9)));
-  Vec18 y = StateOf(from);
-  const double h = (s - from.ArcLength) / subSteps;
-  if (h != 0.0)
-  {
-    for (int i = 0; i < subSteps; ++i)
-    {
-      if (!RungeKutta4(metric, y, h))
-      {
-        return false;
-      }
-    }
-  }
-  return FillSample(metric, s, y, sample);
-}
-
-double RankThreshold(const Metric& metric, const JacobiSample& sample, double tolerance)
-{
-  const double scale =
-    std::sqrt(std::max(0.0, metric.InnerProduct(sample.Point, sample.DJ[0], sample.DJ[0]))) +
-    std::sqrt(std::max(0.0, metric.InnerProduct(sample.Point, sample.DJ[1], sample.DJ[1])));
-  return std::max(100.0 * tolerance, 1e-6) * scale;
 }
 
 /// TraceJacobiFields' first step: the state (x, v, J0, J0', J1, J1') at the
@@ -222,35 +248,31 @@ std::vector<double> LandingStops(const std::vector<double>& landings, double len
 }
 } // namespace
 
-void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
-  const GeodesicOptions& options, JacobiTrace& trace, bool backward,
-  const std::vector<double>& landings)
+int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
+  const GeodesicOptions& options, bool backward, const std::vector<double>& landings,
+  const std::function<bool(const JacobiSample&)>& visit)
 {
-  trace.Samples.clear();
-  trace.Reason = NotInitialized;
   if (!p.allFinite() || !direction.allFinite() || !(options.Step > 0.0) ||
     !(options.MaximumLength >= 0.0) || std::isnan(options.MaximumLength))
   {
-    return;
+    return NotInitialized;
   }
   Vec18 y;
-  if (!InitialState(metric, p, backward ? Vec3(-direction) : direction, y, trace.Reason))
+  int reason = NotInitialized;
+  if (!InitialState(metric, p, backward ? Vec3(-direction) : direction, y, reason))
   {
-    return;
+    return reason;
   }
   const double sign = backward ? -1.0 : 1.0;
   JacobiSample sample;
   double s = 0.0;
-  const auto record = [&]() -> bool
+  constexpr int stoppedByVisitor = 0;
+  // The sample at s; false when g is degenerate there.
+  const auto fill = [&]() -> bool { return FillSample(metric, sign * s, y, sample); };
+  if (fill() && !visit(sample))
   {
-    if (!FillSample(metric, sign * s, y, sample))
-    {
-      return false;
-    }
-    trace.Samples.push_back(sample);
-    return true;
-  };
-  record();
+    return stoppedByVisitor;
+  }
   const auto inside = [&](const Vec3& x)
   {
     return !options.UseBounds ||
@@ -259,8 +281,7 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
   };
   if (!inside(p))
   {
-    trace.Reason = OutOfDomain;
-    return;
+    return OutOfDomain;
   }
 
   const std::vector<double> stops = LandingStops(landings, options.MaximumLength);
@@ -282,40 +303,74 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
     const double remaining = target - s;
     if (options.MaximumLength - s <= arrival)
     {
-      trace.Reason = OutOfLength;
-      return;
+      return OutOfLength;
     }
     if (n >= options.MaximumSteps)
     {
-      trace.Reason = OutOfSteps;
-      return;
+      return OutOfSteps;
     }
     double taken = 0.0;
     const auto status = stepper.Advance(system, y, remaining, taken);
     if (status != IntegrationStep::Accepted)
     {
-      trace.Reason = status == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric;
-      return;
+      return status == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric;
     }
     if (!y.allFinite())
     {
-      trace.Reason = UnexpectedValue;
-      return;
+      return UnexpectedValue;
     }
     // Land exactly on a landing or on the length (no rounding drift).
     s = (remaining - taken <= arrival) ? target : s + taken;
-    if (!record())
+    if (!fill())
     {
       // The step landed where g is degenerate: not a point of the manifold.
-      trace.Reason = DegenerateMetric;
-      return;
+      return DegenerateMetric;
+    }
+    if (!visit(sample))
+    {
+      return stoppedByVisitor;
     }
     if (!inside(y.segment<3>(0)))
     {
-      trace.Reason = OutOfDomain;
-      return;
+      return OutOfDomain;
     }
   }
+}
+
+
+void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
+  const GeodesicOptions& options, JacobiTrace& trace, bool backward,
+  const std::vector<double>& landings)
+{
+  trace.Samples.clear();
+  trace.Reason = TraceJacobiFields(metric, p, direction, options, backward, landings,
+    [&trace](const JacobiSample& sample)
+    {
+      trace.Samples.push_back(sample);
+      return true;
+    });
+}
+
+bool ContinueJacobiFields(
+  const Metric& metric, const JacobiSample& from, double s, int subSteps, JacobiSample& sample)
+{
+  if (!(s >= from.ArcLength) || subSteps < 1)
+  {
+    return false;
+  }
+  Vec18 y = StateOf(from);
+  const double h = (s - from.ArcLength) / subSteps;
+  if (h != 0.0)
+  {
+    for (int i = 0; i < subSteps; ++i)
+    {
+      if (!RungeKutta4(metric, y, h))
+      {
+        return false;
+      }
+    }
+  }
+  return FillSample(metric, s, y, sample);
 }
 
 bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction, double step,
@@ -337,191 +392,4 @@ bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
   return trace.Reason == OutOfLength;
 }
 
-std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,
-  const Vec3& direction, double step, double length, double tolerance, int maximumCount)
-{
-  if (!(step > 0.0) || !(length >= 0.0) || !std::isfinite(length))
-  {
-    return {};
-  }
-  GeodesicOptions options;
-  options.Integrator = IntegratorType::RungeKutta4;
-  options.Step = step;
-  options.MaximumLength = length;
-  options.MaximumSteps = static_cast<long long>(std::ceil(length / step)) + 2;
-  return FindConjugatePoints(metric, p, direction, options, tolerance, maximumCount);
-}
-
-namespace
-{
-// FindConjugatePoints' steps: the two root searches on an interval of the
-// traced samples, and the record of a root found.
-
-/// A sign change of det J in [previous, current]: its zero by bisection to
-/// `tolerance`. False when a sample on the way cannot be integrated.
-bool BisectDeterminant(const Metric& metric, const JacobiSample& previous,
-  const JacobiSample& current, double spacing, double tolerance, JacobiSample& root)
-{
-  double a = previous.ArcLength;
-  double b = current.ArcLength;
-  double fa = previous.Determinant;
-  JacobiSample middle = current;
-  while (b - a > tolerance && current.Determinant != 0.0)
-  {
-    const double c = 0.5 * (a + b);
-    if (!SampleAt(metric, previous, c, spacing, middle))
-    {
-      return false;
-    }
-    if (middle.Determinant == 0.0)
-    {
-      a = b = c;
-      break;
-    }
-    if ((middle.Determinant < 0.0) == (fa < 0.0))
-    {
-      a = c;
-      fa = middle.Determinant;
-    }
-    else
-    {
-      b = c;
-    }
-  }
-  return SampleAt(metric, previous, 0.5 * (a + b), spacing, root);
-}
-
-/// A touching zero candidate (|det J| dips without a sign change): the
-/// golden-section minimum of the smallest singular value over
-/// [previous, following], a root when that value is below the rank threshold.
-bool MinimiseSingularValue(const Metric& metric, const JacobiSample& previous,
-  const JacobiSample& following, double spacing, double tolerance, JacobiSample& root)
-{
-  constexpr double ratio = 0.6180339887498949;
-  double a = previous.ArcLength;
-  double b = following.ArcLength;
-  JacobiSample left, right;
-  double c = b - ratio * (b - a);
-  double d = a + ratio * (b - a);
-  if (!SampleAt(metric, previous, c, spacing, left) ||
-    !SampleAt(metric, previous, d, spacing, right))
-  {
-    return false;
-  }
-  while (b - a > tolerance)
-  {
-    bool ok = true;
-    if (left.SingularValues[1] < right.SingularValues[1])
-    {
-      b = d;
-      d = c;
-      right = left;
-      c = b - ratio * (b - a);
-      ok = SampleAt(metric, previous, c, spacing, left);
-    }
-    else
-    {
-      a = c;
-      c = d;
-      left = right;
-      d = a + ratio * (b - a);
-      ok = SampleAt(metric, previous, d, spacing, right);
-    }
-    if (!ok)
-    {
-      return false;
-    }
-  }
-  return SampleAt(metric, previous, 0.5 * (a + b), spacing, root) &&
-    root.SingularValues[1] <= RankThreshold(metric, root, tolerance);
-}
-
-/// Append `root` as the next conjugate point, unless it is the one just
-/// found seen again from the neighbouring interval.
-void AddConjugatePoint(const Metric& metric, const JacobiSample& root, double spacing,
-  double tolerance, std::vector<ConjugatePoint>& points)
-{
-  if (!points.empty() && root.ArcLength - points.back().ArcLength < 0.5 * spacing)
-  {
-    return; // the same conjugate point seen from both neighbouring intervals
-  }
-  ConjugatePoint point;
-  point.ArcLength = root.ArcLength;
-  point.Point = root.Point;
-  // Rank drop 2 when the other singular value vanishes too. Integration
-  // error splits a double zero by about the step's error (1e-6 at RK4 step
-  // 0.01 on the unit sphere), while at a simple conjugate point the other
-  // singular value is of the size of the fields: compare relative to |DJ|.
-  point.Multiplicity = root.SingularValues[0] <=
-      1e-3 * RankThreshold(metric, root, tolerance) / std::max(100.0 * tolerance, 1e-6)
-    ? 2
-    : 1;
-  point.Index = static_cast<int>(points.size()) + 1;
-  points.push_back(point);
-}
-
-// The search stops where the integration stops being trustworthy: g(v, v)
-// must stay 1 (it drifts, then blows up, where a geodesic runs off through
-// a coordinate singularity, e.g. towards the point at infinity of the
-// stereographic sphere). Conjugate points are not reported beyond.
-bool Trustworthy(const JacobiSample& sample)
-{
-  return sample.Point.allFinite() && std::isfinite(sample.SpeedDrift) &&
-    std::abs(sample.SpeedDrift) <= 1e-4;
-}
-} // namespace
-
-// FindConjugatePoints as named steps: trace the Jacobi fields, then over
-// each interval of samples BisectDeterminant (a sign change of det J) or
-// MinimiseSingularValue (a touching zero), AddConjugatePoint for each root.
-std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,
-  const Vec3& direction, const GeodesicOptions& options, double tolerance, int maximumCount)
-{
-  std::vector<ConjugatePoint> points;
-  JacobiTrace trace;
-  TraceJacobiFields(metric, p, direction, options, trace);
-  const std::vector<JacobiSample>& samples = trace.Samples;
-  tolerance = std::max(tolerance, 1e-14);
-  const std::size_t n = samples.size();
-
-  // Sample 0 is the seed (J = 0): start the search at the interval [1, 2].
-  for (std::size_t i = 2; i < n; ++i)
-  {
-    if (maximumCount > 0 && static_cast<int>(points.size()) >= maximumCount)
-    {
-      break;
-    }
-    if (!Trustworthy(samples[i]))
-    {
-      break;
-    }
-    const JacobiSample& previous = samples[i - 1];
-    const JacobiSample& current = samples[i];
-    // The sample spacing around the current interval (variable with dp45).
-    const double spacing = current.ArcLength - previous.ArcLength;
-    const double d0 = previous.Determinant;
-    const double d1 = current.Determinant;
-    JacobiSample root;
-    if (d1 == 0.0 || d0 * d1 < 0.0)
-    {
-      if (BisectDeterminant(metric, previous, current, spacing, tolerance, root))
-      {
-        AddConjugatePoint(metric, root, spacing, tolerance, points);
-      }
-      continue;
-    }
-    if (i + 1 < n)
-    {
-      const double d2 = samples[i + 1].Determinant;
-      const bool sameSign =
-        (d0 > 0.0 && d1 > 0.0 && d2 > 0.0) || (d0 < 0.0 && d1 < 0.0 && d2 < 0.0);
-      if (sameSign && std::abs(d1) < std::abs(d0) && std::abs(d1) <= std::abs(d2) &&
-        MinimiseSingularValue(metric, previous, samples[i + 1], spacing, tolerance, root))
-      {
-        AddConjugatePoint(metric, root, spacing, tolerance, points);
-      }
-    }
-  }
-  return points;
-}
 } // namespace riemann

@@ -32,10 +32,20 @@
  * Determinant = sqrt(det g) det[J_0, J_1, v] / |v|_g (the g-volume of J_0, J_1
  * and the unit velocity) = det Transverse: signed, continuous in s, > 0 just
  * after the seed, and zero exactly where the transverse part of
- * d exp_p / dv loses rank, i.e. at conjugate points. A conjugate point of
- * multiplicity 1 is a sign change of the determinant; one of multiplicity 2
- * (e.g. every first conjugate point of a round sphere) is a touching zero
- * (det ~ (s - s0)^2), detected as a zero of the smallest singular value.
+ * d exp_p / dv loses rank, i.e. at conjugate points.
+ *
+ * Phases (the Maslov phases of the pair of fields): with X = Transverse^T and
+ * Y the same matrix of the covariant derivatives DJ_a/ds + Gamma(v, J_a)
+ * (columns = fields, rows = frame vectors), the matrix
+ * W = (X + iY)(X - iY)^-1 is unitary because the fields span a Lagrangian
+ * plane (X^T Y is symmetric: their Wronskian vanishes at the seed). Its two
+ * eigenvalues are exp(i Phases[k]). W does not depend on the choice of the
+ * transverse frame nor of the basis of fields (only on the plane they span),
+ * it is -I at the seed, and it has the eigenvalue -1 exactly where X is
+ * singular, with multiplicity the rank drop. Each phase passes pi (mod 2 pi)
+ * only decreasing, at speed 2 (the crossing form of a Riemannian Jacobi
+ * equation is definite), so conjugate points are counted, not guessed:
+ * ConjugatePoints.h tracks the phases continuously.
  */
 #ifndef RiemannJacobiField_h
 #define RiemannJacobiField_h
@@ -43,6 +53,7 @@
 #include "GeodesicTrace.h"
 #include "Metric.h"
 
+#include <functional>
 #include <vector>
 
 namespace riemann
@@ -62,6 +73,9 @@ struct JacobiSample
   double Determinant = 0.0;
   /// Singular values of Transverse, largest first.
   double SingularValues[2] = { 0.0, 0.0 };
+  /// The Maslov phases in (-pi, pi] (file comment): pi at the seed and at
+  /// every conjugate point, unordered.
+  double Phases[2] = { 0.0, 0.0 };
   /// g(v, v) - 1 (the seed velocity is g-unit): monitors the integration error.
   double SpeedDrift = 0.0;
 };
@@ -91,6 +105,25 @@ RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Ve
   const std::vector<double>& landings = {});
 
 /**
+ * TraceJacobiFields handing each sample to `visit` as soon as it is computed
+ * (s = 0 first) instead of storing them; `visit` returns false to stop the
+ * trace there (the conjugate-point search stops after the points it wants).
+ * Returns the TerminationReason, or 0 when `visit` stopped it.
+ */
+RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec3& p,
+  const Vec3& direction, const GeodesicOptions& options, bool backward,
+  const std::vector<double>& landings, const std::function<bool(const JacobiSample&)>& visit);
+
+/**
+ * Continue the fields from `from` (a sample of a forward trace) to arc length
+ * s >= from.ArcLength by `subSteps` equal RK4 steps (the root searches use it:
+ * a fixed number of steps makes the result a smooth function of s). False
+ * where the metric is degenerate on the way.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(
+  const Metric& metric, const JacobiSample& from, double s, int subSteps, JacobiSample& sample);
+
+/**
  * The fixed-step RK4 shorthand: trace with step `step` up to `length` (the
  * last step is shortened to land on it). `samples` receives s = 0 and every
  * step. Returns false (samples holding what was reached) for invalid
@@ -100,47 +133,6 @@ RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Ve
 RIEMANNCOMMONMETRIC_EXPORT bool TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, double step, double length, std::vector<JacobiSample>& samples);
 
-struct ConjugatePoint
-{
-  double ArcLength = 0.0;
-  Vec3 Point = Vec3::Zero();
-  /// 1 or 2: the rank drop of the transverse Jacobian at the point.
-  int Multiplicity = 1;
-  /// 1 for the first conjugate point along the geodesic, 2 for the next, ...
-  int Index = 0;
-};
-
-/**
- * Conjugate points of p along the geodesic in `direction`, up to arc length
- * options.MaximumLength (TraceJacobiFields with `options`: any integrator; a
- * geodesic stopped early is searched as far as it got). Candidates:
- *  - a sign change of the determinant between two samples, refined by
- *    bisection on the determinant re-integrated by RK4 from the earlier
- *    sample (at least 8 sub-steps per sample interval), to `tolerance` in
- *    arc length;
- *  - a local minimum of |determinant| at a sample without sign change (a
- *    touching zero), refined by golden-section minimisation of the smallest
- *    singular value over the two neighbouring steps, to `tolerance`, and
- *    accepted when that minimum is below the rank threshold.
- * Rank threshold: max(100 tolerance, 1e-6) (|DJ_0|_g + |DJ_1|_g) at the root.
- * Multiplicity 2 when the largest singular value is below 1e-3 (|DJ_0|_g +
- * |DJ_1|_g) too (integration error splits a double zero slightly). The
- * search stops where |g(v, v) - 1| exceeds 1e-4: there the fixed-step
- * integration is no longer trustworthy (e.g. a geodesic running off through
- * the point at infinity of stereographic coordinates). At most
- * `maximumCount` points (no limit when <= 0), in order of arc length.
- * With the adaptive integrator, keep options.MaximumStep short enough (0.1 of
- * the expected distance between conjugate points) that no step jumps over
- * two sign changes.
- */
-RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
-  const Vec3& p, const Vec3& direction, const GeodesicOptions& options, double tolerance,
-  int maximumCount);
-
-/// FindConjugatePoints with fixed-step RK4 of `step` up to `length`.
-RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
-  const Vec3& p, const Vec3& direction, double step, double length, double tolerance,
-  int maximumCount);
 } // namespace riemann
 
 #endif

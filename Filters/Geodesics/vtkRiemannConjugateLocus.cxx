@@ -1,6 +1,6 @@
 #include "vtkRiemannConjugateLocus.h"
 
-#include "JacobiField.h"
+#include "ConjugatePoints.h"
 #include "Metric.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -19,7 +19,7 @@
  * one by one (an atomic counter): their costs differ.
  */
 #include "DirectionLattice.h"
-#include "JacobiField.h"
+#include "ConjugatePoints.h"
 #include "MetricDefinition.h"
 
 #include <benchmark/benchmark.h>
