@@ -1,11 +1,12 @@
 // riemann conjugate: conjugate points of an observer along a fan of geodesics
 // (vtkRiemannConjugateLocus), written as .vtp (vertices with point data) or
-// .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex); with
-// --surface, the conjugate locus as surfaces over the direction grid (.vtp).
+// .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet); with
+// --surface, the caustic as sheets over the direction grid (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "ProgressBar.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -22,6 +23,7 @@
 #include <iostream>
 #include <memory>
 #include <set>
+#include <string>
 
 namespace riemann
 {
@@ -38,6 +40,7 @@ struct ConjugateArguments
   double ConeAngle = 180.0;
   double Length = 10.0;
   double Step = 0.01;
+  double MaximumStep = 0.1;
   double Tolerance = 1e-8;
   long long Count = 1;
   std::string Integrator = "dp45";
@@ -54,13 +57,14 @@ bool WriteCsv(vtkPolyData* locus, const std::string& path)
   {
     return false;
   }
-  out << "direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex\n";
+  out << "direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet\n";
   out << std::setprecision(17);
   vtkPointData* pd = locus->GetPointData();
   vtkDataArray* arcLength = pd->GetArray("ArcLength");
   vtkDataArray* multiplicity = pd->GetArray("Multiplicity");
   vtkDataArray* index = pd->GetArray("ConjugateIndex");
   vtkDataArray* direction = pd->GetArray("DirectionId");
+  vtkDataArray* sheet = pd->GetArray("Sheet");
   for (vtkIdType i = 0; i < locus->GetNumberOfPoints(); ++i)
   {
     double p[3];
@@ -68,10 +72,30 @@ bool WriteCsv(vtkPolyData* locus, const std::string& path)
     out << static_cast<long long>(direction->GetTuple1(i)) << ',' << p[0] << ',' << p[1] << ','
         << p[2] << ',' << arcLength->GetTuple1(i) << ','
         << static_cast<int>(multiplicity->GetTuple1(i)) << ','
-        << static_cast<int>(index->GetTuple1(i)) << '\n';
+        << static_cast<int>(index->GetTuple1(i)) << ',' << static_cast<int>(sheet->GetTuple1(i))
+        << '\n';
   }
   out.flush();
   return static_cast<bool>(out);
+}
+
+/// "N sheet(s), T triangles (C crossed by a cusp edge, M where sheets meet)".
+std::string DescribeSheets(vtkPolyData* sheets)
+{
+  vtkDataArray* sheet = sheets->GetCellData()->GetArray("Sheet");
+  vtkDataArray* singularity = sheets->GetCellData()->GetArray("Singularity");
+  std::set<int> distinct;
+  vtkIdType cusps = 0;
+  vtkIdType meet = 0;
+  for (vtkIdType t = 0; sheet && singularity && t < sheets->GetNumberOfPolys(); ++t)
+  {
+    distinct.insert(static_cast<int>(sheet->GetTuple1(t)));
+    cusps += singularity->GetTuple1(t) == 1 ? 1 : 0;
+    meet += singularity->GetTuple1(t) == 2 ? 1 : 0;
+  }
+  return std::to_string(distinct.size()) + " sheet(s), " +
+    std::to_string(sheets->GetNumberOfPolys()) + " triangles (" + std::to_string(cusps) +
+    " crossed by a cusp edge, " + std::to_string(meet) + " where two sheets meet)";
 }
 
 void RunConjugate(const ConjugateArguments& args)
@@ -100,6 +124,12 @@ void RunConjugate(const ConjugateArguments& args)
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);
   const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
+  if (integrator == IntegratorType::DormandPrince45 && args.MaximumStep < args.Step)
+  {
+    throw Failure("--max-step " + FormatNumber(args.MaximumStep) +
+        ": must be at least --step " + FormatNumber(args.Step) + " (the initial step of dp45)",
+      2);
+  }
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannConjugateLocus> locus;
@@ -113,6 +143,7 @@ void RunConjugate(const ConjugateArguments& args)
   locus->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
   locus->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
   locus->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
+  locus->GetIntegrationSettings()->SetMaximumIntegrationStep(args.MaximumStep);
   locus->SetTolerance(args.Tolerance);
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
   vtkNew<ProgressBar> progress;
@@ -148,8 +179,7 @@ void RunConjugate(const ConjugateArguments& args)
             << " of them up to arc length " << args.Length << " -> " << args.Output;
   if (!args.Surface.empty())
   {
-    std::cerr << ", locus surface (" << locus->GetOutput(1)->GetNumberOfPolys()
-              << " triangles) -> " << args.Surface;
+    std::cerr << ", caustic " << DescribeSheets(locus->GetOutput(1)) << " -> " << args.Surface;
   }
   std::cerr << "\n";
 }
@@ -182,11 +212,14 @@ void RegisterConjugateCommand(CLI::App& app)
     ->check(PositiveNumber());
   command
     ->add_option("--integrator", args->Integrator,
-      "Integrator of the Jacobi fields: euler, rk4 or dp45 (default, tolerance 1e-9)")
+      "Integrator of the Jacobi fields: euler, rk4 or dp45 (default; its tolerance follows "
+      "--tolerance: tolerance / 100). With euler and rk4 the step decides the accuracy")
     ->check(IntegratorName());
   command
     ->add_option(
-      "--tolerance", args->Tolerance, "Root-finding tolerance in arc length (default 1e-8)")
+      "--tolerance", args->Tolerance,
+      "Accuracy of the conjugate points in arc length, and their resolution: two closer than "
+      "this are one point of multiplicity 2 (default 1e-8)")
     ->check(FiniteNumber(1e-15, 1.0));
   command
     ->add_option("--count,-k", args->Count,
@@ -194,7 +227,8 @@ void RegisterConjugateCommand(CLI::App& app)
     ->check(WholeNumber(1, 1000000));
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->add_option("--surface", args->Surface,
-    "Also write the conjugate locus as surfaces over the direction grid (.vtp)");
+    "Also write the caustic as sheets over the direction grid (.vtp; cell data Sheet and "
+    "Singularity: 1 cusp edge, 2 where two sheets meet)");
   command->callback([args]() { RunConjugate(*args); });
 }
 } // namespace cli

@@ -1,5 +1,6 @@
 #include "vtkRiemannConjugateLocus.h"
 
+#include "CausticSheets.h"
 #include "ConjugatePoints.h"
 #include "Metric.h"
 #include "vtkCellArray.h"
@@ -7,6 +8,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -19,6 +21,7 @@
 #include "vtkRiemannParallelBatches.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -30,16 +33,16 @@ vtkRiemannConjugateLocus::vtkRiemannConjugateLocus()
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(2);
   // Defaults of this filter. DORMAND_PRINCE45: on the round sphere it finds
-  // all of 10,000 double conjugate points to 1e-8 and is faster than RK4 at
-  // step 0.01, which gives up on 16 of them: they pass near the chart's point
-  // at infinity, where the fixed step drifts g(v, v) past the search's trust
-  // limit (Testing/Benchmarks/README.md). The largest step, 0.1, is short
-  // enough that no step jumps over two conjugate points; the step budget is
-  // large: the search must not stop before MaximumPropagation.
+  // all of 10,000 double conjugate points to 1e-8, where RK4 at step 0.01
+  // gives up on some: they pass near the chart's point at infinity, where the
+  // fixed step drifts g(v, v) past the search's trust limit
+  // (Testing/Benchmarks/README.md). MaximumError is only a cap: the
+  // integration tolerance follows Tolerance (FindConjugatePoints). The step
+  // budget is large: the search must not stop before MaximumPropagation.
   vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
   settings->SetIntegratorTypeToDormandPrince45();
   settings->SetMaximumIntegrationStep(0.1);
-  settings->SetMaximumError(1e-9);
+  settings->SetMaximumError(1e-6);
   settings->SetMaximumNumberOfSteps(10000000);
 }
 
@@ -106,6 +109,13 @@ int vtkRiemannConjugateLocus::RequestData(
   index->SetNumberOfTuples(pointCount);
   directionId->SetName("DirectionId");
   directionId->SetNumberOfTuples(pointCount);
+  vtkNew<vtkIntArray> sheet;
+  sheet->SetName("Sheet");
+  sheet->SetNumberOfTuples(pointCount);
+  vtkNew<vtkDoubleArray> kernel;
+  kernel->SetName("KernelDirection");
+  kernel->SetNumberOfComponents(3);
+  kernel->SetNumberOfTuples(pointCount);
   vtkIdType next = 0;
   for (vtkIdType i = 0; i < done; ++i)
   {
@@ -117,6 +127,8 @@ int vtkRiemannConjugateLocus::RequestData(
       multiplicity->SetValue(next, point.Multiplicity);
       index->SetValue(next, point.Index);
       directionId->SetValue(next, static_cast<int>(i));
+      sheet->SetValue(next, point.Sheet);
+      kernel->SetTypedTuple(next, point.KernelDirection.data());
       ++next;
     }
   }
@@ -126,60 +138,91 @@ int vtkRiemannConjugateLocus::RequestData(
   output->GetPointData()->AddArray(multiplicity);
   output->GetPointData()->AddArray(index);
   output->GetPointData()->AddArray(directionId);
+  output->GetPointData()->AddArray(sheet);
+  output->GetPointData()->AddArray(kernel);
   if (done == count)
   {
-    this->BuildLocusSurfaces(grid, found, locus);
+    riemann::Mat3 g;
+    if (metric->Tensor(observer, g))
+    {
+      this->BuildLocusSurfaces(grid, directions, found, g, locus);
+    }
   }
   return 1;
 }
 
 void vtkRiemannConjugateLocus::BuildLocusSurfaces(vtkPolyData* grid,
-  const std::vector<std::vector<riemann::ConjugatePoint>>& found, vtkPolyData* locus)
+  const std::vector<riemann::Vec3>& directions,
+  const std::vector<std::vector<riemann::ConjugatePoint>>& found, const riemann::Mat3& g,
+  vtkPolyData* locus)
 {
-  size_t deepest = 0;
-  for (const auto& points : found)
+  std::vector<std::array<int, 3>> gridTriangles;
+  gridTriangles.reserve(static_cast<size_t>(grid->GetNumberOfPolys()));
+  vtkCellArray* polys = grid->GetPolys();
+  vtkNew<vtkIdList> cell;
+  for (polys->InitTraversal(); polys->GetNextCell(cell);)
   {
-    deepest = std::max(deepest, points.size());
+    gridTriangles.push_back({ static_cast<int>(cell->GetId(0)), static_cast<int>(cell->GetId(1)),
+      static_cast<int>(cell->GetId(2)) });
   }
+  const riemann::CausticSheets sheets =
+    riemann::BuildCausticSheets(directions, gridTriangles, found, g);
+
+  const vtkIdType pointCount = static_cast<vtkIdType>(sheets.Points.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> triangles;
-  vtkNew<vtkDoubleArray> arcLength;
+  points->SetNumberOfPoints(pointCount);
+  vtkNew<vtkDoubleArray> arcLength, kernelSlope;
   arcLength->SetName("ArcLength");
-  vtkNew<vtkIntArray> multiplicity, index, directionId, cellIndex;
+  arcLength->SetNumberOfTuples(pointCount);
+  kernelSlope->SetName("KernelSlope");
+  kernelSlope->SetNumberOfTuples(pointCount);
+  vtkNew<vtkIntArray> multiplicity, index, sheet, directionId;
   multiplicity->SetName("Multiplicity");
+  multiplicity->SetNumberOfTuples(pointCount);
   index->SetName("ConjugateIndex");
+  index->SetNumberOfTuples(pointCount);
+  sheet->SetName("Sheet");
+  sheet->SetNumberOfTuples(pointCount);
   directionId->SetName("DirectionId");
-  cellIndex->SetName("ConjugateIndex");
-  std::vector<vtkIdType> local(found.size());
-  for (size_t k = 0; k < deepest; ++k)
+  directionId->SetNumberOfTuples(pointCount);
+  for (vtkIdType v = 0; v < pointCount; ++v)
   {
-    for (size_t i = 0; i < found.size(); ++i)
-    {
-      local[i] = -1;
-      if (found[i].size() > k)
-      {
-        const riemann::ConjugatePoint& point = found[i][k];
-        local[i] = points->InsertNextPoint(point.Point.data());
-        arcLength->InsertNextValue(point.ArcLength);
-        multiplicity->InsertNextValue(point.Multiplicity);
-        index->InsertNextValue(point.Index);
-        directionId->InsertNextValue(static_cast<int>(i));
-      }
-    }
-    const vtkIdType appended = vtkRiemannDirectionGrid::AppendTriangles(grid, local, triangles);
-    for (vtkIdType t = 0; t < appended; ++t)
-    {
-      cellIndex->InsertNextValue(static_cast<int>(k) + 1);
-    }
+    points->SetPoint(v, sheets.Points[v].data());
+    arcLength->SetValue(v, sheets.ArcLength[v]);
+    kernelSlope->SetValue(v, sheets.KernelSlope[v]);
+    multiplicity->SetValue(v, sheets.Multiplicity[v]);
+    index->SetValue(v, sheets.Index[v]);
+    sheet->SetValue(v, sheets.Sheet[v]);
+    directionId->SetValue(v, sheets.Direction[v]);
+  }
+
+  const vtkIdType triangleCount = static_cast<vtkIdType>(sheets.Triangles.size());
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(triangleCount, 3 * triangleCount);
+  vtkNew<vtkIntArray> cellSheet, singularity;
+  cellSheet->SetName("Sheet");
+  cellSheet->SetNumberOfTuples(triangleCount);
+  singularity->SetName("Singularity");
+  singularity->SetNumberOfTuples(triangleCount);
+  for (vtkIdType t = 0; t < triangleCount; ++t)
+  {
+    const vtkIdType ids[3] = { sheets.Triangles[t][0], sheets.Triangles[t][1],
+      sheets.Triangles[t][2] };
+    triangles->InsertNextCell(3, ids);
+    cellSheet->SetValue(t, sheets.TriangleSheet[t]);
+    singularity->SetValue(t, sheets.TriangleSingularity[t]);
   }
   locus->SetPoints(points);
   locus->SetPolys(triangles);
   locus->GetPointData()->AddArray(arcLength);
   locus->GetPointData()->AddArray(multiplicity);
   locus->GetPointData()->AddArray(index);
+  locus->GetPointData()->AddArray(sheet);
   locus->GetPointData()->AddArray(directionId);
-  locus->GetCellData()->AddArray(cellIndex);
+  locus->GetPointData()->AddArray(kernelSlope);
+  locus->GetCellData()->AddArray(cellSheet);
+  locus->GetCellData()->AddArray(singularity);
 }
 
 void vtkRiemannConjugateLocus::PrintSelf(ostream& os, vtkIndent indent)

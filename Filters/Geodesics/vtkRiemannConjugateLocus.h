@@ -1,15 +1,23 @@
 /**
  * @class   vtkRiemannConjugateLocus
- * @brief   Conjugate points of an observer along a fan of geodesics.
+ * @brief   Conjugate points of an observer along a fan of geodesics, and the
+ * caustic they form as sheets.
  *
  * vtkRiemannConjugateLocus (a source: no input) shoots geodesics of a
  * vtkRiemannMetric from the Observer in NumberOfDirections directions and
  * finds, along each, the first MaximumNumberOfConjugatePoints conjugate points
  * up to the settings' MaximumPropagation (arc length) with
- * riemann::FindConjugatePoints (JacobiField.h: the Jacobi fields integrated as
- * GetIntegrationSettings() says, roots refined to Tolerance). This filter's
- * default settings: DORMAND_PRINCE45 with MaximumError 1e-9, steps of at most
- * 0.1 (no step jumps over two conjugate points), MaximumPropagation 10.
+ * riemann::FindConjugatePoints (ConjugatePoints.h). Conjugate points are
+ * counted, not guessed: the Maslov phases of the Jacobi fields pass pi once
+ * per conjugate point, so two simple points are never stepped over or merged
+ * however close they are, as long as they are farther apart than Tolerance;
+ * crossings closer than Tolerance are one point of multiplicity 2. Tolerance
+ * bounds the arc-length error: the Jacobi fields are integrated (adaptive
+ * integrator) to min(MaximumError, riemann::ConjugateIntegrationTolerance(
+ * Tolerance)) = min(MaximumError, Tolerance / 100). This filter's default
+ * settings: DORMAND_PRINCE45, MaximumError 1e-6 (a cap: Tolerance decides),
+ * steps of at most 0.1 (SetMaximumIntegrationStep; the detection does not
+ * depend on it), MaximumPropagation 10.
  *
  * Directions are those of vtkRiemannDirectionGrid: a Fibonacci lattice over
  * the unit sphere or, when ConeAngle < 180 degrees, over the spherical cap of
@@ -18,15 +26,22 @@
  *
  * Output port 0: one vertex per conjugate point with point data `ArcLength`
  * (double), `Multiplicity` (int, 1 or 2), `ConjugateIndex` (int, 1 for the
- * first conjugate point along its geodesic) and `DirectionId` (int, the
- * lattice index of its direction), in order of direction then arc length.
+ * first conjugate point along its geodesic), `Sheet` (int, 1 + the number of
+ * conjugate points before it counted with multiplicity: a point of
+ * multiplicity 2 lies on sheets Sheet and Sheet + 1), `DirectionId` (int, the
+ * lattice index of its direction) and `KernelDirection` (3 doubles: the
+ * g-unit initial variation at the observer whose Jacobi field vanishes there,
+ * up to sign; zero for multiplicity 2), in order of direction then arc length.
  *
- * Output port 1: the conjugate locus (caustic) as surfaces over the direction
- * grid: for each index k, point i is the k-th conjugate point along direction
- * i, and a triangle of the grid is kept where its three directions all have a
- * k-th conjugate point. Same point data as port 0, and `ConjugateIndex` as
- * cell data too. Where the locus degenerates (a round sphere's conjugate
- * points all coincide at the antipode) the surface collapses accordingly.
+ * Output port 1: the caustic as sheets (riemann::BuildCausticSheets,
+ * CausticSheets.h). Sheet k holds, for each direction, its point on sheet k,
+ * and the grid triangles whose three directions reach sheet k; each sheet
+ * has its own points (a double point appears on two sheets). Point data as
+ * port 0 (without KernelDirection) plus `KernelSlope` (|d ArcLength / d
+ * angle| along the kernel direction: 0 on a cusp edge, where the sheet's
+ * rank drops); cell data `Sheet` and `Singularity` (0 none, 1 a cusp edge
+ * crosses the triangle, 2 a corner is a point where two sheets meet).
+ * vtkThreshold on `Sheet` extracts one sheet.
  *
  * Directions are processed in parallel with vtkSMPTools, in batches so that
  * progress is reported and AbortExecute honoured on the calling thread.
@@ -38,6 +53,8 @@
 
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
+
+#include "Jets.h" // For riemann::Vec3, riemann::Mat3
 
 #include <vector> // For BuildLocusSurfaces
 
@@ -75,7 +92,8 @@ public:
   ///@}
 
   ///@{
-  /// Arc-length tolerance of the root finding. Default 1e-8.
+  /// The arc-length accuracy of the conjugate points, and the resolution:
+  /// crossings closer than this are one point of multiplicity 2. Default 1e-8.
   vtkSetClampMacro(Tolerance, double, 1e-15, 1.0);
   vtkGetMacro(Tolerance, double);
   ///@}
@@ -93,9 +111,11 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  /// Port 1: the k-th conjugate points as surfaces over the grid's triangles.
-  void BuildLocusSurfaces(vtkPolyData* grid,
-    const std::vector<std::vector<riemann::ConjugatePoint>>& found, vtkPolyData* locus);
+  /// Port 1: the caustic sheets over the grid's triangles (g: the metric at
+  /// the observer).
+  void BuildLocusSurfaces(vtkPolyData* grid, const std::vector<riemann::Vec3>& directions,
+    const std::vector<std::vector<riemann::ConjugatePoint>>& found, const riemann::Mat3& g,
+    vtkPolyData* locus);
 
   double Observer[3] = { 0.0, 0.0, 0.0 };
   int NumberOfDirections = 100;

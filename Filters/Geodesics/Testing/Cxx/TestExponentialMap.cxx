@@ -328,21 +328,34 @@ TEST(ConjugateLocus, SphereLocusSurfaceCollapsesToTheAntipode)
   locus->GetIntegrationSettings()->SetIntegratorTypeToDormandPrince45();
   locus->GetIntegrationSettings()->SetInitialIntegrationStep(0.01);
   locus->Update();
+  // Every first conjugate point is double: it lies on sheets 1 and 2, which
+  // meet everywhere (each sheet its own copy of the grid's triangles).
   vtkPolyData* surface = locus->GetOutput(1);
-  ASSERT_EQ(surface->GetNumberOfPoints(), 50);
-  EXPECT_EQ(surface->GetNumberOfPolys(), 2 * 50 - 4);
+  ASSERT_EQ(surface->GetNumberOfPoints(), 100);
+  EXPECT_EQ(surface->GetNumberOfPolys(), 2 * (2 * 50 - 4));
   const double r2 =
     observer[0] * observer[0] + observer[1] * observer[1] + observer[2] * observer[2];
   const double antipode[3] = { -observer[0] / r2, -observer[1] / r2, -observer[2] / r2 };
   vtkDataArray* arcLength = surface->GetPointData()->GetArray("ArcLength");
   vtkDataArray* multiplicity = surface->GetPointData()->GetArray("Multiplicity");
-  ASSERT_NE(surface->GetCellData()->GetArray("ConjugateIndex"), nullptr);
-  for (vtkIdType i = 0; i < 50; ++i)
+  vtkDataArray* pointSheet = surface->GetPointData()->GetArray("Sheet");
+  vtkDataArray* cellSheet = surface->GetCellData()->GetArray("Sheet");
+  vtkDataArray* singularity = surface->GetCellData()->GetArray("Singularity");
+  ASSERT_NE(pointSheet, nullptr);
+  ASSERT_NE(cellSheet, nullptr);
+  ASSERT_NE(singularity, nullptr);
+  for (vtkIdType t = 0; t < surface->GetNumberOfPolys(); ++t)
+  {
+    EXPECT_EQ(cellSheet->GetTuple1(t), t < 2 * 50 - 4 ? 1 : 2);
+    EXPECT_EQ(singularity->GetTuple1(t), 2); // where two sheets meet
+  }
+  for (vtkIdType i = 0; i < 100; ++i)
   {
     double x[3];
     surface->GetPoint(i, x);
     EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(x, antipode)), 1e-6);
     EXPECT_NEAR(arcLength->GetTuple1(i), vtkMath::Pi(), 1e-6);
+    EXPECT_EQ(pointSheet->GetTuple1(i), i < 50 ? 1 : 2);
     EXPECT_EQ(multiplicity->GetTuple1(i), 2);
   }
 }
