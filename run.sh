@@ -151,9 +151,11 @@ run_sanitize_tests() {
   # Instrumented numerics run ~4-5 times slower than the GCC build. Left out
   # here (they run in the normal build): the two tests that CPU-trace every
   # shipped scene at full size (5 and 1.5 minutes alone), whose code paths
-  # the other CPU tracer, mesh and CLI tests cover. Cli.riemann (its CPU
-  # renders have a 60 s limit each) runs last, alone.
-  local skip='CPURayTracer\.RendersEveryShippedSceneAsTheGpu|^Image\.mesh-two-bumps-cpu$'
+  # the other CPU tracer, mesh and CLI tests cover; and the 10,000-direction
+  # round-sphere conjugate locus (15 s here), whose code paths the other
+  # conjugate-point tests cover. Cli.riemann (its CPU renders have a 60 s
+  # limit each) runs last, alone.
+  local skip='CPURayTracer\.RendersEveryShippedSceneAsTheGpu|^Image\.mesh-two-bumps-cpu$|CausticSheets\.RoundSphereIsDouble'
   log "sanitize: ctest --test-dir build-asan -L Cxx -E '$skip' $*; then -L Cli"
   "${XVFB[@]}" env "${sanitizer_env[@]}" \
     ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -j2 -L Cxx -E "$skip" "$@" \

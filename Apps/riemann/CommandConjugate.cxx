@@ -211,6 +211,11 @@ void RegisterConjugateCommand(CLI::App& app)
       "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
     ->check(PositiveNumber());
   command
+    ->add_option("--max-step", args->MaximumStep,
+      "Largest step of dp45 in arc length (default 0.1). Conjugate points are counted, not "
+      "searched for between steps, so no step can jump over one whatever its length")
+    ->check(PositiveNumber());
+  command
     ->add_option("--integrator", args->Integrator,
       "Integrator of the Jacobi fields: euler, rk4 or dp45 (default; its tolerance follows "
       "--tolerance: tolerance / 100). With euler and rk4 the step decides the accuracy")

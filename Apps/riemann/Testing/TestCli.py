@@ -416,7 +416,7 @@ class ConjugateTests(unittest.TestCase):
         with open(out, newline="") as f:
             rows = list(csv.reader(f))
         self.assertEqual(rows[0], ["direction_id", "x", "y", "z", "ArcLength", "Multiplicity",
-                                   "ConjugateIndex"])
+                                   "ConjugateIndex", "Sheet"])
         self.assertEqual(len(rows) - 1, 20)
         p = (0.2, 0.1, -0.3)
         r2 = sum(t * t for t in p)
@@ -427,7 +427,31 @@ class ConjugateTests(unittest.TestCase):
             self.assertAlmostEqual(float(row[4]), math.pi, delta=1e-6)
             self.assertEqual(int(row[5]), 2)
             self.assertEqual(int(row[6]), 1)
+            self.assertEqual(int(row[7]), 1)
         self.assertEqual(sorted(os.listdir(self.dir)), ["conjugate.csv", "sphere.json"])
+
+    def test_close_simple_points_are_both_found(self):
+        # g = diag((cos y cos kz)^2, 1, 1): along +x the Jacobi fields are
+        # sin(s) and sin(ks)/k, two simple conjugate points at pi/k and pi that
+        # the old search merged with its defaults (the reproducer).
+        for k in (1.002, 1.005, 1.01, 1.05):
+            with self.subTest(k=k):
+                metric = os.path.join(self.dir, "two-speeds.json")
+                with open(metric, "w") as f:
+                    f.write('{"type":"tensor","parameters":{"k":%r},'
+                            '"g":[["(cos(y)*cos(k*z))^2","0","0"],["0","1","0"],["0","0","1"]]}' % k)
+                out = os.path.join(self.dir, "pair.csv")
+                status, _, err = run("conjugate", "--metric", metric, "--cone-axis", "1,0,0",
+                                     "--cone-angle", "0", "-n", "1", "-l", "4", "-k", "3", "-o", out)
+                self.assertEqual(status, 0, err)
+                with open(out, newline="") as f:
+                    rows = list(csv.DictReader(f))
+                self.assertEqual(len(rows), 2)
+                for row, expected, index in ((rows[0], math.pi / k, 1), (rows[1], math.pi, 2)):
+                    self.assertAlmostEqual(float(row["ArcLength"]), expected, delta=1e-8)
+                    self.assertEqual(int(row["Multiplicity"]), 1)
+                    self.assertEqual(int(row["ConjugateIndex"]), index)
+                    self.assertEqual(int(row["Sheet"]), index)
 
     def test_sphere_vtp(self):
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -442,9 +466,12 @@ class ConjugateTests(unittest.TestCase):
         self.assertEqual(data.GetNumberOfPoints(), 10)
         self.assertEqual(data.GetNumberOfVerts(), 10)
         pd = data.GetPointData()
-        for name in ("ArcLength", "Multiplicity", "ConjugateIndex", "DirectionId"):
+        for name in ("ArcLength", "Multiplicity", "ConjugateIndex", "DirectionId", "Sheet",
+                     "KernelDirection"):
             self.assertIsNotNone(pd.GetArray(name), name)
         self.assertEqual(pd.GetArray("ConjugateIndex").GetRange(), (1.0, 2.0))
+        # Double points: the second one lies on sheets 3 and 4.
+        self.assertEqual(pd.GetArray("Sheet").GetRange(), (1.0, 3.0))
 
     def test_bad_arguments(self):
         cases = [
@@ -454,6 +481,8 @@ class ConjugateTests(unittest.TestCase):
             (["--step", "0"], "--step"),
             (["--count", "0"], "--count"),
             (["--seed", "1,2"], "--seed: expected three finite"),
+            (["--max-step", "0"], "--max-step"),
+            (["--max-step", "0.001"], "--max-step 0.001: must be at least --step 0.01"),
         ]
         for args, expected in cases:
             with self.subTest(args=args):
@@ -471,15 +500,19 @@ class ConjugateTests(unittest.TestCase):
                              "--directions", "30", "--length", "4", "--integrator", "dp45",
                              "--cone-axis", "1,0,0", "--cone-angle", "60", "-o", out, "--surface", surface)
         self.assertEqual(status, 0, err)
-        self.assertIn("locus surface (", err)
+        self.assertIn("caustic 2 sheet(s)", err)
         reader = vtkXMLPolyDataReader()
         reader.SetFileName(surface)
         reader.Update()
         data = reader.GetOutput()
-        # Every direction has a first conjugate point: one per grid point, the
-        # grid's triangles (a disc: more than N - 2), all at the antipode.
-        self.assertEqual(data.GetNumberOfPoints(), 30)
-        self.assertGreater(data.GetNumberOfPolys(), 20)
+        # Every direction has a first conjugate point, double: one per grid
+        # point on each of sheets 1 and 2, the grid's triangles (a disc: more
+        # than N - 2) on each, all at the antipode, where the two sheets meet.
+        self.assertEqual(data.GetNumberOfPoints(), 60)
+        self.assertGreater(data.GetNumberOfPolys(), 40)
+        cells = data.GetCellData()
+        self.assertEqual(cells.GetArray("Sheet").GetRange(), (1.0, 2.0))
+        self.assertEqual(cells.GetArray("Singularity").GetRange(), (2.0, 2.0))
         p = (0.2, 0.1, -0.3)
         r2 = sum(t * t for t in p)
         for i in range(data.GetNumberOfPoints()):
@@ -682,6 +715,7 @@ NUMERIC_OPTIONS = [
      "--camera-position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
     ("conjugate", ["--step", "nan"], '--step: expected a finite positive number, got "nan"'),
     ("conjugate", ["--length", "inf"], '--length: expected a finite positive number, got "inf"'),
+    ("conjugate", ["--max-step", "nan"], '--max-step: expected a finite positive number, got "nan"'),
     ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "nan"'),
     ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a finite non-negative number at most 180, got "nan"'),
     ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),
