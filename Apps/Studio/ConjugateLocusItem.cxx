@@ -1,4 +1,4 @@
-// Conjugate points and caustic surfaces of a point (vtkRiemannConjugateLocus).
+// Conjugate points and caustic sheets of a point (vtkRiemannConjugateLocus).
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
@@ -22,8 +22,10 @@ ConjugateLocusItem::ConjugateLocusItem(const QString& name)
       { { "Observer", { 0.0, 0.0, 2.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
         { "ConeAngle", 30.0 }, { "NumberOfDirections", 800 },
         { "MaximumNumberOfConjugatePoints", 2 }, { "Tolerance", 1e-8 },
-        // The filter's own defaults: adaptive, tight per-step error.
-        { "IntegratorType", "dp45" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-9 },
+        // The filter's own defaults: adaptive; its error follows Tolerance
+        // (Tolerance / 100), MaximumError only caps it.
+        { "IntegratorType", "dp45" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
+        { "MaximumIntegrationStep", 0.1 },
         { "MaximumPropagation", 6.0 }, { "MaximumNumberOfSteps", 100000 },
         { "ColorArray", "ArcLength" } })
 {
@@ -51,11 +53,22 @@ std::vector<PropertySpec> ConjugateLocusItem::Properties() const
 
   PropertySpec tolerance;
   tolerance.Key = "Tolerance";
-  tolerance.Label = "Root tolerance";
+  tolerance.Label = "Tolerance";
   tolerance.Minimum = 1e-15;
   tolerance.Maximum = 1.0;
-  tolerance.Help = "Arc-length accuracy of each conjugate point";
+  tolerance.Help = "Arc-length accuracy of each conjugate point, and the resolution: two "
+                   "closer than this are one point of multiplicity 2 (the integration error "
+                   "follows it)";
   specs.push_back(tolerance);
+
+  PropertySpec largestStep;
+  largestStep.Key = "MaximumIntegrationStep";
+  largestStep.Label = "Largest step";
+  largestStep.Minimum = 1e-6;
+  largestStep.Maximum = 100.0;
+  largestStep.Help = "Largest step of dp45 (conjugate points are counted, so no step can jump "
+                     "over one)";
+  specs.push_back(largestStep);
   return this->WithIntegrationAndDisplay(specs);
 }
 
@@ -66,6 +79,8 @@ vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& input
   metric->ShallowCopy(inputs.Metric);
   locus->SetMetric(metric);
   this->ApplyIntegration(locus->GetIntegrationSettings());
+  locus->GetIntegrationSettings()->SetMaximumIntegrationStep(
+    this->Number("MaximumIntegrationStep"));
   this->ApplyObserverCone(locus.Get());
   locus->SetMaximumNumberOfConjugatePoints(this->Integer("MaximumNumberOfConjugatePoints"));
   locus->SetTolerance(this->Number("Tolerance"));
@@ -112,6 +127,8 @@ std::vector<std::string> ConjugateLocusItem::PythonLines(const std::string& var)
   {
     lines.push_back(line);
   }
+  lines.push_back(var + ".GetIntegrationSettings().SetMaximumIntegrationStep(" +
+    PythonNumber(this->Number("MaximumIntegrationStep")) + ")");
   return lines;
 }
 }
