@@ -64,7 +64,7 @@ struct ConjugatePoint
 
 /// The integration tolerance of the adaptive integrator that keeps the
 /// arc-length error of the conjugate points within `tolerance`
-/// (Testing/Benchmarks/README.md, "Conjugate points": measured).
+/// (Testing/Benchmarks/README.md, section BenchConjugatePoints.cxx: measured).
 RIEMANNCOMMONMETRIC_EXPORT double ConjugateIntegrationTolerance(double tolerance);
 
 /**
