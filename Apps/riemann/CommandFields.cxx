@@ -36,8 +36,29 @@ struct FieldsArguments
   std::string Metric;
   std::string Bounds = "-2,2,-2,2,-2,2";
   std::string Dimensions = "33,33,33";
+  std::string Compress = "lz4";
   std::string Output;
 };
+
+/// The .vti compression: LZ4 by default (at 80^3, zlib took 2.75 s of a
+/// 3.2 s run for an 11 % smaller file; LZ4 is several times faster), zlib for
+/// the smallest file, none for the fastest write. ParaView and VTK's readers
+/// read all three.
+void SetCompressor(vtkXMLImageDataWriter* writer, const std::string& name)
+{
+  if (name == "none")
+  {
+    writer->SetCompressorTypeToNone();
+  }
+  else if (name == "zlib")
+  {
+    writer->SetCompressorTypeToZLib();
+  }
+  else
+  {
+    writer->SetCompressorTypeToLZ4();
+  }
+}
 
 constexpr long long MaximumPerAxis = 512;
 constexpr long long MaximumPoints = 20000000;
@@ -204,6 +225,7 @@ void RunFields(const FieldsArguments& args)
       writer->SetFileName(temporary.c_str());
       writer->SetInputData(image);
       writer->SetDataModeToAppended();
+      SetCompressor(writer, args.Compress);
       return writer->Write() == 1 && writer->GetErrorCode() == 0;
     });
 
@@ -245,6 +267,10 @@ void RegisterFieldsCommand(CLI::App& app)
         return CheckDimensions(text, dims);
       },
       "NX,NY,NZ"));
+  command
+    ->add_option("--compress", args->Compress,
+      "Compression of .vti output: lz4 (default, fast), zlib (smallest, slow) or none")
+    ->check(CLI::IsMember({ "lz4", "zlib", "none" }));
   command->add_option("--output,-o", args->Output, "Output file: .vti or .csv")->required();
   command->callback([args]() { RunFields(*args); });
 }

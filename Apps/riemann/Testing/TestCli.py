@@ -372,6 +372,39 @@ class FieldsTests(unittest.TestCase):
         self.assertAlmostEqual(hi, 6.0, places=9)
         self.assertIsNotNone(image.GetFieldData().GetArray("VolumeIntegral"))
 
+    def test_compressors_write_the_same_values(self):
+        # --compress lz4 (the default), zlib and none: the header names the
+        # compressor, and the values read back are identical.
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        values = {}
+        for compress, header in (("lz4", 'compressor="vtkLZ4DataCompressor"'),
+                                 ("zlib", 'compressor="vtkZLibDataCompressor"'), ("none", None)):
+            with self.subTest(compress=compress):
+                out = os.path.join(self.dir, "fields-%s.vti" % compress)
+                args = ["fields", "--metric", self.metric, "--dims", "6,5,4", "-o", out]
+                if compress != "lz4":
+                    args[1:1] = ["--compress", compress]
+                status, _, err = run(*args)
+                self.assertEqual(status, 0, err)
+                with open(out, "rb") as f:
+                    start = f.read(400).decode("latin-1")
+                if header:
+                    self.assertIn(header, start)
+                else:
+                    self.assertNotIn("compressor=", start)
+                reader = vtkXMLImageDataReader()
+                reader.SetFileName(out)
+                reader.Update()
+                values[compress] = vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("Ricci"))
+        self.assertTrue((values["lz4"] == values["zlib"]).all())
+        self.assertTrue((values["lz4"] == values["none"]).all())
+        status, _, err = run("fields", "--metric", self.metric, "--compress", "lz5", "-o",
+                             os.path.join(self.dir, "bad.vti"))
+        self.assertEqual(status, 2, err)
+        self.assertIn("--compress", err)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "bad.vti")))
+
     def test_bad_bounds_and_dims(self):
         cases = [
             (["--bounds", "-1,1,-1,1"], "--bounds: expected 6 comma-separated numbers"),
