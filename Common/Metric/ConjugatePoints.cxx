@@ -228,7 +228,7 @@ private:
   {
     const int subSteps = std::max(8,
       static_cast<int>(std::ceil(8.0 * (s - from.ArcLength) / std::max(spacing, 1e-300) - 1e-9)));
-    return ContinueJacobiFields(this->M, from, s, subSteps, sample);
+    return ContinueJacobiFields(this->M, from, s, subSteps, sample, true);
   }
 
   /// Enough points found (and the last one cannot merge with a later crossing).
@@ -236,7 +236,28 @@ private:
   {
     return this->MaximumCount > 0 && !this->Crossings.empty() &&
       arcLength > this->Crossings.back().ArcLength + this->Tolerance &&
-      static_cast<int>(this->MergeCrossings().size()) >= this->MaximumCount;
+      this->CountPoints() >= this->MaximumCount;
+  }
+
+  /// How many points MergeCrossings makes, without making them (it runs
+  /// after every sample once crossings are found).
+  int CountPoints() const
+  {
+    int count = 0;
+    for (size_t i = 0; i < this->Crossings.size(); ++i, ++count)
+    {
+      if (i + 1 < this->Crossings.size() && this->Merges(i))
+      {
+        ++i;
+      }
+    }
+    return count;
+  }
+
+  /// Crossing i and the next are one point of multiplicity 2.
+  bool Merges(size_t i) const
+  {
+    return this->Crossings[i + 1].ArcLength - this->Crossings[i].ArcLength <= this->Tolerance;
   }
 
   /// Crossings closer than the tolerance are one point of multiplicity 2.
@@ -250,8 +271,7 @@ private:
       ConjugatePoint point;
       point.Index = static_cast<int>(points.size()) + 1;
       point.Sheet = sheet;
-      if (i + 1 < this->Crossings.size() &&
-        this->Crossings[i + 1].ArcLength - root.ArcLength <= this->Tolerance)
+      if (i + 1 < this->Crossings.size() && this->Merges(i))
       {
         const JacobiSample& next = this->Crossings[i + 1];
         point.ArcLength = 0.5 * (root.ArcLength + next.ArcLength);
@@ -310,7 +330,7 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
       std::min(searchOptions.Tolerance, ConjugateIntegrationTolerance(tolerance));
   }
   ConjugateSearch search(metric, tolerance, maximumCount);
-  TraceJacobiFields(metric, p, direction, searchOptions, false, {},
+  TraceJacobiFields(metric, p, direction, searchOptions, false, {}, true,
     [&search](const JacobiSample& sample) { return search.Visit(sample); });
   return search.Points();
 }

@@ -153,7 +153,9 @@ bool MaslovPhases(
   return std::isfinite(sample.Phases[0]) && std::isfinite(sample.Phases[1]);
 }
 
-bool FillSample(const Metric& metric, double s, const Vec18& y, JacobiSample& sample)
+/// The sample of state y at arc length s; with `withPhases`, its Maslov phases too.
+bool FillSample(
+  const Metric& metric, double s, const Vec18& y, JacobiSample& sample, bool withPhases)
 {
   sample.ArcLength = s;
   sample.Point = y.segment<3>(0);
@@ -194,7 +196,8 @@ bool FillSample(const Metric& metric, double s, const Vec18& y, JacobiSample& sa
   const Eigen::JacobiSVD<Eigen::Matrix2d> svd(t);
   sample.SingularValues[0] = svd.singularValues()[0];
   sample.SingularValues[1] = svd.singularValues()[1];
-  return std::isfinite(sample.Determinant) && MaslovPhases(metric, g, e0, e1, sample);
+  return std::isfinite(sample.Determinant) &&
+    (!withPhases || MaslovPhases(metric, g, e0, e1, sample));
 }
 
 Vec18 StateOf(const JacobiSample& sample)
@@ -250,7 +253,7 @@ std::vector<double> LandingStops(const std::vector<double>& landings, double len
 
 int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
   const GeodesicOptions& options, bool backward, const std::vector<double>& landings,
-  const std::function<bool(const JacobiSample&)>& visit)
+  bool withPhases, const std::function<bool(const JacobiSample&)>& visit)
 {
   if (!p.allFinite() || !direction.allFinite() || !(options.Step > 0.0) ||
     !(options.MaximumLength >= 0.0) || std::isnan(options.MaximumLength))
@@ -268,7 +271,7 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   double s = 0.0;
   constexpr int stoppedByVisitor = 0;
   // The sample at s; false when g is degenerate there.
-  const auto fill = [&]() -> bool { return FillSample(metric, sign * s, y, sample); };
+  const auto fill = [&]() -> bool { return FillSample(metric, sign * s, y, sample, withPhases); };
   if (fill() && !visit(sample))
   {
     return stoppedByVisitor;
@@ -343,7 +346,7 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
   const std::vector<double>& landings)
 {
   trace.Samples.clear();
-  trace.Reason = TraceJacobiFields(metric, p, direction, options, backward, landings,
+  trace.Reason = TraceJacobiFields(metric, p, direction, options, backward, landings, false,
     [&trace](const JacobiSample& sample)
     {
       trace.Samples.push_back(sample);
@@ -351,8 +354,8 @@ void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& directio
     });
 }
 
-bool ContinueJacobiFields(
-  const Metric& metric, const JacobiSample& from, double s, int subSteps, JacobiSample& sample)
+bool ContinueJacobiFields(const Metric& metric, const JacobiSample& from, double s, int subSteps,
+  JacobiSample& sample, bool withPhases)
 {
   if (!(s >= from.ArcLength) || subSteps < 1)
   {
@@ -370,7 +373,7 @@ bool ContinueJacobiFields(
       }
     }
   }
-  return FillSample(metric, s, y, sample);
+  return FillSample(metric, s, y, sample, withPhases);
 }
 
 bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction, double step,

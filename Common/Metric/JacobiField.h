@@ -74,7 +74,9 @@ struct JacobiSample
   /// Singular values of Transverse, largest first.
   double SingularValues[2] = { 0.0, 0.0 };
   /// The Maslov phases in (-pi, pi] (file comment): pi at the seed and at
-  /// every conjugate point, unordered.
+  /// every conjugate point, unordered. Computed only when asked for
+  /// (`withPhases`: the conjugate-point search; the other consumers do not
+  /// pay for them), else 0.
   double Phases[2] = { 0.0, 0.0 };
   /// g(v, v) - 1 (the seed velocity is g-unit): monitors the integration error.
   double SpeedDrift = 0.0;
@@ -108,20 +110,24 @@ RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Ve
  * TraceJacobiFields handing each sample to `visit` as soon as it is computed
  * (s = 0 first) instead of storing them; `visit` returns false to stop the
  * trace there (the conjugate-point search stops after the points it wants).
- * Returns the TerminationReason, or 0 when `visit` stopped it.
+ * With `withPhases` the samples carry their Maslov phases. Returns the
+ * TerminationReason, or 0 when `visit` stopped it.
  */
 RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, const GeodesicOptions& options, bool backward,
-  const std::vector<double>& landings, const std::function<bool(const JacobiSample&)>& visit);
+  const std::vector<double>& landings, bool withPhases,
+  const std::function<bool(const JacobiSample&)>& visit);
 
 /**
  * Continue the fields from `from` (a sample of a forward trace) to arc length
  * s >= from.ArcLength by `subSteps` equal RK4 steps (the root searches use it:
- * a fixed number of steps makes the result a smooth function of s). False
- * where the metric is degenerate on the way.
+ * a fixed number of steps makes the result a smooth function of s), with the
+ * Maslov phases when `withPhases`. False where the metric is degenerate on
+ * the way.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(
-  const Metric& metric, const JacobiSample& from, double s, int subSteps, JacobiSample& sample);
+RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(const Metric& metric,
+  const JacobiSample& from, double s, int subSteps, JacobiSample& sample,
+  bool withPhases = false);
 
 /**
  * The fixed-step RK4 shorthand: trace with step `step` up to `length` (the
