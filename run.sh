@@ -37,7 +37,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libvtk9-dev python3-vtk9 vtk9
   libeigen3-dev libembree-dev libopenimageio-dev openimageio-tools libginac-dev
-  libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libhwy-dev
   python3-numpy xvfb xauth libgl1-mesa-dri
   clang libclang-rt-14-dev glslang-tools
   qtbase5-dev libqt5opengl5-dev libvtk9-qt-dev

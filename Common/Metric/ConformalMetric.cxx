@@ -1,5 +1,7 @@
 #include "ConformalMetric.h"
 
+#include "PacketKernels.h"
+
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -9,6 +11,7 @@ namespace riemann
 ConformalMetric::ConformalMetric(std::shared_ptr<const ScalarField> index)
   : Index(std::move(index))
 {
+  this->Bumps = this->Index->GaussianSum(this->BumpsConstant);
 }
 
 std::string ConformalMetric::Describe() const
@@ -84,6 +87,39 @@ bool ConformalMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
   const Vec3 l = n.Gradient / n.Value;
   a = v.squaredNorm() * l - 2.0 * l.dot(v) * v;
   return a.allFinite();
+}
+
+LaneMask ConformalMetric::AccelerationPacket(
+  const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const
+{
+  if (this->Bumps)
+  {
+    return ConformalAccelerationOfGaussians(*this->Bumps, this->BumpsConstant, x, v, a) & lanes;
+  }
+  PacketScalarJet n;
+  this->Index->EvaluatePacket(x, FirstDerivatives, n, lanes);
+  return ConformalAccelerationFromJet(n, v, a) & lanes;
+}
+
+LaneMask ConformalMetric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
+{
+  // g = n^2 I.
+  PacketScalarJet n;
+  this->Index->EvaluatePacket(x, ValueOnly, n, lanes);
+  LaneMask defined = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    const double n2 = n.Value[l] * n.Value[l];
+    g.C[XX][l] = n2;
+    g.C[YY][l] = n2;
+    g.C[ZZ][l] = n2;
+    g.C[XY][l] = 0.0;
+    g.C[XZ][l] = 0.0;
+    g.C[YZ][l] = 0.0;
+    const bool ok = n.Value[l] > 0 && std::isfinite(n.Value[l]);
+    defined |= ok ? LaneMask{ 1 } << l : 0;
+  }
+  return defined & lanes;
 }
 
 bool ConformalMetric::InverseTensor(const Vec3& p, Mat3& inverse) const

@@ -30,6 +30,9 @@ public:
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
   void EmitGlsl(GlslBuilder& builder) const override;
   bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const override;
+  LaneMask AccelerationPacket(
+    const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const override;
+  LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const override;
   bool InverseTensor(const Vec3& p, Mat3& inverse) const override;
   double VolumeForm(const Vec3& p) const override;
   /// Checks n > 0 (and finite) at the sample points, naming the value found.
@@ -41,7 +44,9 @@ protected:
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 
 private:
-  std::shared_ptr<const ScalarField> Index;
+  std::shared_ptr<const ScalarField> Index;  // The field's bumps when it is a sum of Gaussians (the fused packet kernel).
+  const GaussianTerms* Bumps = nullptr;
+  double BumpsConstant = 0.0;
 };
 } // namespace riemann
 

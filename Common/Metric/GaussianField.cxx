@@ -11,54 +11,71 @@ GaussianField::GaussianField(double amplitude, const Vec3& center, const Vec3& s
   , Sigma(sigma)
   , InverseVariance(sigma.cwiseProduct(sigma).cwiseInverse())
 {
+  this->Term.Add(amplitude, center, this->InverseVariance);
 }
 
-void GaussianField::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
+void AccumulateGaussianTerms(const GaussianTerms& terms, const Vec3& p, int order, ScalarJet& jet)
 {
   // With w_i = 1/s_i^2 and u_i = w_i (p_i - c_i):
   //   d_i f = -u_i f
   //   d_i d_j f = (u_i u_j - delta_ij w_i) f
   //   d_i d_j d_k f = (-u_i u_j u_k + delta_ij w_i u_k + delta_ik w_i u_j + delta_jk w_j u_i) f
-  const Vec3 d = p - this->Center;
-  const Vec3 u = this->InverseVariance.cwiseProduct(d);
-  const double f = this->Amplitude * std::exp(-0.5 * d.dot(u));
-  jet.Value += f;
-  if (order >= FirstDerivatives)
+  for (size_t term = 0; term < terms.Size(); ++term)
   {
-    jet.Gradient.noalias() -= f * u;
-  }
-  if (order >= SecondDerivatives)
-  {
-    jet.Hessian.noalias() += (f * u) * u.transpose();
-    jet.Hessian.diagonal() -= f * this->InverseVariance;
-  }
-  if (order >= ThirdDerivatives)
-  {
-    const Vec3& w = this->InverseVariance;
-    for (int i = 0; i < 3; ++i)
+    const Vec3 center(terms.Center[0][term], terms.Center[1][term], terms.Center[2][term]);
+    const Vec3 w(terms.InverseVariance[0][term], terms.InverseVariance[1][term],
+      terms.InverseVariance[2][term]);
+    const Vec3 d = p - center;
+    const Vec3 u = w.cwiseProduct(d);
+    const double f = terms.Amplitude[term] * std::exp(-0.5 * d.dot(u));
+    jet.Value += f;
+    if (order >= FirstDerivatives)
     {
-      for (int j = 0; j < 3; ++j)
+      jet.Gradient.noalias() -= f * u;
+    }
+    if (order >= SecondDerivatives)
+    {
+      jet.Hessian.noalias() += (f * u) * u.transpose();
+      jet.Hessian.diagonal() -= f * w;
+    }
+    if (order >= ThirdDerivatives)
+    {
+      for (int i = 0; i < 3; ++i)
       {
-        for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
         {
-          double t = -u[i] * u[j] * u[k];
-          if (i == j)
+          for (int k = 0; k < 3; ++k)
           {
-            t += w[i] * u[k];
+            double t = -u[i] * u[j] * u[k];
+            if (i == j)
+            {
+              t += w[i] * u[k];
+            }
+            if (i == k)
+            {
+              t += w[i] * u[j];
+            }
+            if (j == k)
+            {
+              t += w[j] * u[i];
+            }
+            jet.Third[i](j, k) += f * t;
           }
-          if (i == k)
-          {
-            t += w[i] * u[j];
-          }
-          if (j == k)
-          {
-            t += w[j] * u[i];
-          }
-          jet.Third[i](j, k) += f * t;
         }
       }
     }
   }
+}
+
+void GaussianField::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
+{
+  AccumulateGaussianTerms(this->Term, p, order, jet);
+}
+
+void GaussianField::AccumulatePacket(
+  const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask /*lanes*/) const
+{
+  AccumulateGaussianTerms(this->Term, p, order, jet);
 }
 
 std::string GaussianField::Describe() const

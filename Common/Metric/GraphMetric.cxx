@@ -1,5 +1,7 @@
 #include "GraphMetric.h"
 
+#include "PacketKernels.h"
+
 #include <cmath>
 
 namespace riemann
@@ -7,6 +9,7 @@ namespace riemann
 GraphMetric::GraphMetric(std::shared_ptr<const ScalarField> f)
   : Field(std::move(f))
 {
+  this->Bumps = this->Field->GaussianSum(this->BumpsConstant);
 }
 
 std::string GraphMetric::Describe() const
@@ -79,6 +82,40 @@ bool GraphMetric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
   this->Field->Evaluate(p, SecondDerivatives, f);
   a = (-v.dot(f.Hessian * v) / (1.0 + f.Gradient.squaredNorm())) * f.Gradient;
   return a.allFinite();
+}
+
+LaneMask GraphMetric::AccelerationPacket(
+  const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const
+{
+  if (this->Bumps)
+  {
+    return GraphAccelerationOfGaussians(*this->Bumps, x, v, a) & lanes;
+  }
+  PacketScalarJet f;
+  this->Field->EvaluatePacket(x, SecondDerivatives, f, lanes);
+  return GraphAccelerationFromJet(f, v, a) & lanes;
+}
+
+LaneMask GraphMetric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
+{
+  // g = I + grad f grad f^T.
+  PacketScalarJet f;
+  this->Field->EvaluatePacket(x, FirstDerivatives, f, lanes);
+  LaneMask finite = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    const double fx = f.Gradient[0][l], fy = f.Gradient[1][l], fz = f.Gradient[2][l];
+    g.C[XX][l] = 1.0 + fx * fx;
+    g.C[YY][l] = 1.0 + fy * fy;
+    g.C[ZZ][l] = 1.0 + fz * fz;
+    g.C[XY][l] = fx * fy;
+    g.C[XZ][l] = fx * fz;
+    g.C[YZ][l] = fy * fz;
+    const bool ok = std::isfinite(g.C[XX][l]) && std::isfinite(g.C[YY][l]) &&
+      std::isfinite(g.C[ZZ][l]) && std::isfinite(g.C[XY][l] + g.C[XZ][l] + g.C[YZ][l]);
+    finite |= ok ? LaneMask{ 1 } << l : 0;
+  }
+  return finite & lanes;
 }
 
 bool GraphMetric::InverseTensor(const Vec3& p, Mat3& inverse) const

@@ -23,6 +23,37 @@ bool Metric::Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const
   return a.allFinite();
 }
 
+LaneMask Metric::AccelerationPacket(
+  const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const
+{
+  LaneMask defined = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    Vec3 lane = Vec3::Zero();
+    if (HasLane(lanes, l) && this->Acceleration(x.Lane(l), v.Lane(l), lane))
+    {
+      defined |= LaneMask{ 1 } << l;
+    }
+    a.SetLane(l, lane);
+  }
+  return defined;
+}
+
+LaneMask Metric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
+{
+  LaneMask defined = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    Mat3 lane = Mat3::Identity();
+    if (HasLane(lanes, l) && this->Tensor(x.Lane(l), lane))
+    {
+      defined |= LaneMask{ 1 } << l;
+    }
+    g.SetLane(l, lane);
+  }
+  return defined;
+}
+
 bool Metric::TensorSecondDerivatives(
   const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
 {

@@ -17,6 +17,7 @@
 
 #include "GlslSource.h"
 #include "Jets.h"
+#include "Packet.h"
 #include "RiemannCommonMetricExport.h"
 
 #include <string>
@@ -54,6 +55,17 @@ public:
    * a cheaper closed form.
    */
   virtual bool Acceleration(const Vec3& p, const Vec3& v, Vec3& a) const;
+  /**
+   * The acceleration of PacketWidth geodesics at once (Packet.h), the hot
+   * path of the packet integrators: a on the lanes of `lanes`, returning
+   * those where it is defined and finite. The default calls Acceleration()
+   * lane by lane; families whose providers have SIMD forms override it, with
+   * results equal to Acceleration()'s to rounding.
+   */
+  virtual LaneMask AccelerationPacket(
+    const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const;
+  /// g at PacketWidth points; the default calls Tensor() lane by lane.
+  virtual LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const;
   /// g^ij at p. The default inverts Tensor() by Cholesky.
   virtual bool InverseTensor(const Vec3& p, Mat3& inverse) const;
   /// sqrt(det g) at p; NaN where the metric is degenerate.

@@ -11,6 +11,7 @@
 
 #include "GlslSource.h"
 #include "Jets.h"
+#include "Packet.h"
 #include "RiemannCommonMetricExport.h"
 
 #include <string>
@@ -18,6 +19,8 @@
 
 namespace riemann
 {
+struct GaussianTerms;
+
 class RIEMANNCOMMONMETRIC_EXPORT ScalarField
 {
 public:
@@ -37,6 +40,63 @@ public:
    * which measured 1.7x faster geodesic steps on the 8-Gaussian benchmark.
    */
   virtual void Accumulate(const Vec3& p, int order, ScalarJet& jet) const = 0;
+
+  /**
+   * Add the value and derivatives up to `order` (at most SecondDerivatives)
+   * at the PacketWidth points of `p` to `jet`, for the packet engine. Lanes
+   * outside `lanes` may be left as they are. The default calls Accumulate()
+   * lane by lane; the built-in providers override it with SIMD loops
+   * (PacketKernels.h) whose results equal Accumulate()'s to rounding.
+   */
+  virtual void AccumulatePacket(
+    const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask lanes) const
+  {
+    ScalarJet lane;
+    for (int l = 0; l < PacketWidth; ++l)
+    {
+      if (!HasLane(lanes, l))
+      {
+        continue;
+      }
+      lane.SetZero(order);
+      this->Accumulate(p.Lane(l), order, lane);
+      jet.Value[l] += lane.Value;
+      if (order >= FirstDerivatives)
+      {
+        for (int i = 0; i < 3; ++i)
+        {
+          jet.Gradient[i][l] += lane.Gradient[i];
+        }
+      }
+      if (order >= SecondDerivatives)
+      {
+        PacketSym3 h;
+        h.SetLane(l, lane.Hessian);
+        for (int e = 0; e < 6; ++e)
+        {
+          jet.Hessian.C[e][l] += h.C[e][l];
+        }
+      }
+    }
+  }
+
+  /**
+   * If this field is exactly `constant` plus a sum of Gaussian bumps, their
+   * table (and the constant); else null. Lets the families call the fused
+   * kernels of PacketKernels.h, which keep the jet in registers.
+   */
+  virtual const GaussianTerms* GaussianSum(double& constant) const
+  {
+    constant = 0.0;
+    return nullptr;
+  }
+
+  /// AccumulatePacket onto a zeroed jet.
+  void EvaluatePacket(const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask lanes) const
+  {
+    jet.SetZero(order);
+    this->AccumulatePacket(p, order, jet, lanes);
+  }
 
   /// One line saying what the field is, for `riemann info` and error messages.
   virtual std::string Describe() const = 0;

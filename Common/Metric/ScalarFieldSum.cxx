@@ -1,5 +1,7 @@
 #include "ScalarFieldSum.h"
 
+#include "GaussianField.h"
+
 #include <sstream>
 
 namespace riemann
@@ -9,14 +11,41 @@ ScalarFieldSum::ScalarFieldSum(
   : Constant(constant)
   , Terms(std::move(terms))
 {
+  for (const auto& field : this->Terms)
+  {
+    if (const auto* bump = dynamic_cast<const GaussianField*>(field.get()))
+    {
+      this->Bumps.Add(bump->GetAmplitude(), bump->GetCenter(),
+        bump->GetSigma().cwiseProduct(bump->GetSigma()).cwiseInverse());
+    }
+    else
+    {
+      this->OtherTerms.push_back(field.get());
+    }
+  }
 }
 
 void ScalarFieldSum::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
 {
   jet.Value += this->Constant;
-  for (const auto& field : this->Terms)
+  AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  for (const ScalarField* field : this->OtherTerms)
   {
     field->Accumulate(p, order, jet);
+  }
+}
+
+void ScalarFieldSum::AccumulatePacket(
+  const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask lanes) const
+{
+  for (double& value : jet.Value)
+  {
+    value += this->Constant;
+  }
+  AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  for (const ScalarField* field : this->OtherTerms)
+  {
+    field->AccumulatePacket(p, order, jet, lanes);
   }
 }
 

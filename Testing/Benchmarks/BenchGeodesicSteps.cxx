@@ -26,7 +26,9 @@
 #include "GaussianField.h"
 #include "GeodesicTrace.h"
 #include "GraphMetric.h"
+#include "HandPacketReference.h"
 #include "Integrators.h"
+#include "PacketTrace.h"
 #include "ScalarFieldSum.h"
 
 #include <benchmark/benchmark.h>
@@ -209,8 +211,16 @@ public:
   std::shared_ptr<const riemann::Metric> Metric;
   PlainBumps Plain;
   std::vector<Seed> Seeds;
+  /// The same seeds for the packet engine.
+  std::vector<riemann::GeodesicSeed> PacketSeeds;
+  /// The bumps for the SIMD hand-written reference.
+  riemann_bench::HandBumps Hand;
   /// RK4, step 0.01, MaximumLength = 1000 steps (MaximumSteps is not reached).
   riemann::GeodesicOptions Options;
+  /// dp45 over the same length, tolerance 1e-8 (the library's default).
+  riemann::GeodesicOptions AdaptiveOptions;
+  /// Accepted dp45 steps of all seeds (TraceGeodesic's), for steps/s.
+  long long AdaptiveSteps = 0;
 
   /// Built and verified once, on first use (never inside a timed loop).
   static const Scene& Get()
@@ -230,10 +240,13 @@ private:
       const Vec3 sigma(bump.Sigma[0], bump.Sigma[1], bump.Sigma[2]);
       terms.push_back(std::make_shared<riemann::GaussianField>(bump.Amplitude, center, sigma));
       this->Plain.Amplitude[k] = bump.Amplitude;
+      this->Hand.Amplitude[k] = bump.Amplitude;
       for (int i = 0; i < 3; ++i)
       {
         this->Plain.Center[i][k] = bump.Center[i];
         this->Plain.InverseVariance[i][k] = 1.0 / (bump.Sigma[i] * bump.Sigma[i]);
+        this->Hand.Center[i][k] = bump.Center[i];
+        this->Hand.InverseVariance[i][k] = this->Plain.InverseVariance[i][k];
       }
     }
     this->Metric = std::make_shared<riemann::GraphMetric>(
@@ -243,6 +256,10 @@ private:
     this->Options.Step = Step;
     this->Options.MaximumLength = StepsPerGeodesic * Step;
     this->Options.MaximumSteps = 10 * StepsPerGeodesic;
+    this->Hand.Count = BumpCount;
+    this->AdaptiveOptions = this->Options;
+    this->AdaptiveOptions.Integrator = riemann::IntegratorType::DormandPrince45;
+    this->AdaptiveOptions.Tolerance = 1e-8;
 
     this->MakeSeeds();
     this->Verify();
@@ -272,11 +289,12 @@ private:
         Fail("no unit-speed velocity", i, 0.0);
       }
       this->Seeds.push_back(seed);
+      this->PacketSeeds.push_back({ seed.Point, seed.Velocity, false });
     }
   }
 
   /// All variants give the same endpoints after exactly StepsPerGeodesic steps.
-  void Verify() const
+  void Verify()
   {
     riemann::GeodesicPath path;
     std::vector<double> points(3 * (StepsPerGeodesic + 1));
@@ -311,6 +329,95 @@ private:
         Fail("TraceGeodesic and the RungeKutta4Step loop disagree", i, stepDifference);
       }
     }
+    this->VerifyPackets();
+  }
+
+  /**
+   * The packet engine and the SIMD reference give TraceGeodesic's endpoints
+   * too, with RK4 and with dp45 (same number of accepted steps); records the
+   * dp45 step count for steps/s.
+   */
+  void VerifyPackets()
+  {
+    std::vector<riemann::GeodesicPath> packet(SeedCount);
+    std::vector<double> handPoints(3 * StepsPerGeodesic * riemann_bench::HandLanes);
+    for (const riemann::GeodesicOptions* options : { &this->Options, &this->AdaptiveOptions })
+    {
+      const bool adaptive = options == &this->AdaptiveOptions;
+      riemann::TraceGeodesics(*this->Metric, this->PacketSeeds.data(), SeedCount, *options, packet.data());
+      for (int first = 0; first < SeedCount; first += riemann_bench::HandLanes)
+      {
+        riemann_bench::HandState y = HandStart(first);
+        long long handSteps[riemann_bench::HandLanes];
+        if (adaptive)
+        {
+          std::vector<std::vector<double>> lanePoints(
+            riemann_bench::HandLanes, std::vector<double>(3 * 100000));
+          double* pointers[riemann_bench::HandLanes];
+          for (int l = 0; l < riemann_bench::HandLanes; ++l)
+          {
+            pointers[l] = lanePoints[l].data();
+          }
+          HandDormandPrince45(y, pointers, 100000, handSteps);
+        }
+        else
+        {
+          riemann_bench::HandPacketRungeKutta4(this->Hand, y, StepsPerGeodesic, Step, handPoints.data());
+        }
+        for (int l = 0; l < riemann_bench::HandLanes; ++l)
+        {
+          const int i = first + l;
+          riemann::GeodesicPath scalar;
+          riemann::TraceGeodesic(*this->Metric, this->Seeds[i].Point, this->Seeds[i].Velocity, *options, scalar);
+          if (packet[i].Reason != riemann::OutOfLength || packet[i].Points.size() != scalar.Points.size())
+          {
+            Fail("TraceGeodesics and TraceGeodesic took different steps", i,
+              static_cast<double>(packet[i].Points.size()) - static_cast<double>(scalar.Points.size()));
+          }
+          const double packetDifference = (packet[i].Points.back() - scalar.Points.back()).cwiseAbs().maxCoeff();
+          if (!(packetDifference <= EndpointTolerance))
+          {
+            Fail("TraceGeodesics and TraceGeodesic disagree", i, packetDifference);
+          }
+          const Vec3 hand(y.Y[0][l], y.Y[1][l], y.Y[2][l]);
+          const double handDifference = (hand - scalar.Points.back()).cwiseAbs().maxCoeff();
+          if (!(handDifference <= EndpointTolerance) ||
+            (adaptive && handSteps[l] + 1 != static_cast<long long>(scalar.Points.size())))
+          {
+            Fail("the SIMD reference and TraceGeodesic disagree", i, handDifference);
+          }
+          if (adaptive)
+          {
+            this->AdaptiveSteps += handSteps[l];
+          }
+        }
+      }
+    }
+  }
+
+public:
+  /// The 8 seeds from `first` as the reference's state.
+  riemann_bench::HandState HandStart(int first) const
+  {
+    riemann_bench::HandState y;
+    for (int l = 0; l < riemann_bench::HandLanes; ++l)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        y.Y[i][l] = this->Seeds[first + l].Point[i];
+        y.Y[3 + i][l] = this->Seeds[first + l].Velocity[i];
+      }
+    }
+    return y;
+  }
+
+  /// The reference's dp45 with AdaptiveOptions.
+  void HandDormandPrince45(riemann_bench::HandState& y, double* const* points,
+    std::size_t capacity, long long* steps) const
+  {
+    const riemann::GeodesicOptions& o = this->AdaptiveOptions;
+    riemann_bench::HandPacketDormandPrince45(this->Hand, y, o.MaximumLength, o.Step, o.Tolerance,
+      o.MinimumStep, o.MaximumStep, points, capacity, steps);
   }
 };
 
@@ -502,4 +609,179 @@ void BM_GeodesicRungeKutta4Step(benchmark::State& state)
   ReportSteps(state, 1);
 }
 BENCHMARK(BM_GeodesicRungeKutta4Step)->Unit(benchmark::kMillisecond);
+// ---------------------------------------------------------------------------
+// The packet engine against the SIMD hand-written reference and today's
+// scalar tracer, RK4 and dp45 (items_per_second = accepted steps/s).
+
+const riemann::GeodesicOptions& OptionsFor(const Scene& scene, bool adaptive, bool drift)
+{
+  static thread_local riemann::GeodesicOptions options;
+  options = adaptive ? scene.AdaptiveOptions : scene.Options;
+  options.RecordSpeedDrift = drift;
+  return options;
+}
+
+long long StepsOf(const Scene& scene, bool adaptive)
+{
+  return adaptive ? scene.AdaptiveSteps : static_cast<long long>(SeedCount) * StepsPerGeodesic;
+}
+
+void ReportStepsOf(benchmark::State& state, const Scene& scene, bool adaptive, unsigned threads)
+{
+  state.SetItemsProcessed(state.iterations() * StepsOf(scene, adaptive));
+  state.counters["threads"] = threads;
+}
+
+/// Today's scalar path (TraceGeodesic per seed), for dp45 (RK4: BM_GeodesicTrace).
+void BM_GeodesicTraceAdaptive(benchmark::State& state, bool drift)
+{
+  const Scene& scene = Scene::Get();
+  const riemann::GeodesicOptions options = OptionsFor(scene, true, drift);
+  riemann::GeodesicPath path;
+  for (auto _ : state)
+  {
+    for (const Seed& seed : scene.Seeds)
+    {
+      riemann::TraceGeodesic(*scene.Metric, seed.Point, seed.Velocity, options, path);
+      benchmark::DoNotOptimize(path.Points.back());
+    }
+  }
+  ReportStepsOf(state, scene, true, 1);
+}
+BENCHMARK_CAPTURE(BM_GeodesicTraceAdaptive, dp45_no_drift, false)->Unit(benchmark::kMillisecond);
+
+/// The library's packet engine: TraceGeodesics over the 64 seeds.
+void BM_GeodesicPacketTrace(benchmark::State& state, bool adaptive, bool drift)
+{
+  const Scene& scene = Scene::Get();
+  const riemann::GeodesicOptions options = OptionsFor(scene, adaptive, drift);
+  std::vector<riemann::GeodesicPath> paths(SeedCount);
+  riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+  for (auto _ : state)
+  {
+    riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+    benchmark::DoNotOptimize(paths.back().Points.back());
+  }
+  ReportStepsOf(state, scene, adaptive, 1);
+}
+BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, rk4_drift, false, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, rk4_no_drift, false, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, dp45_no_drift, true, false)->Unit(benchmark::kMillisecond);
+
+void BM_GeodesicPacketTraceAllCores(benchmark::State& state, bool adaptive, bool drift)
+{
+  const Scene& scene = Scene::Get();
+  const riemann::GeodesicOptions options = OptionsFor(scene, adaptive, drift);
+  const unsigned threadCount = ThreadCount();
+  std::vector<riemann::GeodesicPath> paths(SeedCount);
+  riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+  for (auto _ : state)
+  {
+    RunOnAllCores(threadCount,
+      [&](unsigned, int begin, int end)
+      {
+        riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data() + begin,
+          static_cast<size_t>(end - begin), options, paths.data() + begin);
+      });
+    benchmark::DoNotOptimize(paths.back().Points.back());
+  }
+  ReportStepsOf(state, scene, adaptive, threadCount);
+}
+BENCHMARK_CAPTURE(BM_GeodesicPacketTraceAllCores, rk4_no_drift, false, false)
+  ->Unit(benchmark::kMillisecond)
+  ->MeasureProcessCPUTime()
+  ->UseRealTime();
+BENCHMARK_CAPTURE(BM_GeodesicPacketTraceAllCores, dp45_no_drift, true, false)
+  ->Unit(benchmark::kMillisecond)
+  ->MeasureProcessCPUTime()
+  ->UseRealTime();
+
+/// The SIMD hand-written reference over seeds [begin, end) (whole packets).
+void HandPackets(const Scene& scene, bool adaptive, int begin, int end, std::vector<double>& buffer)
+{
+  constexpr int W = riemann_bench::HandLanes;
+  const size_t perLane = buffer.size() / W;
+  for (int first = begin; first < end; first += W)
+  {
+    riemann_bench::HandState y = scene.HandStart(first);
+    if (adaptive)
+    {
+      double* pointers[W];
+      for (int l = 0; l < W; ++l)
+      {
+        pointers[l] = buffer.data() + l * perLane;
+      }
+      long long steps[W];
+      scene.HandDormandPrince45(y, pointers, perLane / 3, steps);
+    }
+    else
+    {
+      riemann_bench::HandPacketRungeKutta4(scene.Hand, y, StepsPerGeodesic, Step, buffer.data());
+    }
+    benchmark::DoNotOptimize(buffer.data());
+    benchmark::ClobberMemory();
+  }
+}
+
+void BM_GeodesicHandPacket(benchmark::State& state, bool adaptive)
+{
+  const Scene& scene = Scene::Get();
+  std::vector<double> buffer(3 * 20000 * riemann_bench::HandLanes);
+  for (auto _ : state)
+  {
+    HandPackets(scene, adaptive, 0, SeedCount, buffer);
+  }
+  ReportStepsOf(state, scene, adaptive, 1);
+  state.SetLabel(riemann_bench::HandPacketTargetName());
+}
+BENCHMARK_CAPTURE(BM_GeodesicHandPacket, rk4, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GeodesicHandPacket, dp45, true)->Unit(benchmark::kMillisecond);
+
+void BM_GeodesicHandPacketAllCores(benchmark::State& state, bool adaptive)
+{
+  const Scene& scene = Scene::Get();
+  const unsigned threadCount = ThreadCount();
+  std::vector<std::vector<double>> buffers(
+    threadCount, std::vector<double>(3 * 20000 * riemann_bench::HandLanes));
+  for (auto _ : state)
+  {
+    RunOnAllCores(threadCount,
+      [&](unsigned t, int begin, int end) { HandPackets(scene, adaptive, begin, end, buffers[t]); });
+  }
+  ReportStepsOf(state, scene, adaptive, threadCount);
+}
+BENCHMARK_CAPTURE(BM_GeodesicHandPacketAllCores, rk4, false)
+  ->Unit(benchmark::kMillisecond)
+  ->MeasureProcessCPUTime()
+  ->UseRealTime();
+BENCHMARK_CAPTURE(BM_GeodesicHandPacketAllCores, dp45, true)
+  ->Unit(benchmark::kMillisecond)
+  ->MeasureProcessCPUTime()
+  ->UseRealTime();
+
+void BM_GeodesicTraceAdaptiveAllCores(benchmark::State& state)
+{
+  const Scene& scene = Scene::Get();
+  const riemann::GeodesicOptions options = OptionsFor(scene, true, false);
+  const unsigned threadCount = ThreadCount();
+  std::vector<ThreadPath> paths(threadCount);
+  for (auto _ : state)
+  {
+    RunOnAllCores(threadCount,
+      [&](unsigned t, int begin, int end)
+      {
+        for (int i = begin; i < end; ++i)
+        {
+          const Seed& seed = scene.Seeds[i];
+          riemann::TraceGeodesic(*scene.Metric, seed.Point, seed.Velocity, options, paths[t].Path);
+          benchmark::DoNotOptimize(paths[t].Path.Points.back());
+        }
+      });
+  }
+  ReportStepsOf(state, scene, true, threadCount);
+}
+BENCHMARK(BM_GeodesicTraceAdaptiveAllCores)
+  ->Unit(benchmark::kMillisecond)
+  ->MeasureProcessCPUTime()
+  ->UseRealTime();
 } // namespace

@@ -1,0 +1,575 @@
+// The packet kernels (PacketKernels.h), written once with Google Highway.
+//
+// Highway's foreach_target.h compiles this file once per x86 target (SSE4,
+// AVX2, AVX-512, ...), each copy in its own namespace riemann::N_<TARGET>;
+// the HWY_ONCE part at the end exports one table per kernel and calls the
+// entry for the best target this CPU supports (HWY_DYNAMIC_DISPATCH).
+//
+// Every kernel walks a packet's PacketWidth lanes in vectors of N =
+// Lanes(D) doubles (8 with AVX-512, 4 with AVX2, 2 with SSE4); the arrays of
+// Packet.h are 64-byte aligned, so every chunk is an aligned load.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "PacketKernels.cxx"
+#include <hwy/foreach_target.h> // IWYU pragma: keep
+
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include "Metric.h"
+#include "PacketKernels.h"
+
+#include <cmath>
+
+HWY_BEFORE_NAMESPACE();
+namespace riemann
+{
+namespace HWY_NAMESPACE
+{
+namespace hn = hwy::HWY_NAMESPACE;
+using D = hn::CappedTag<double, PacketWidth>;
+using V = hn::Vec<D>;
+using M = hn::Mask<D>;
+
+// --- Lane masks --------------------------------------------------------------
+
+/// The vector mask of lanes [offset, offset + N) of `lanes`.
+HWY_INLINE M MaskAt(D d, LaneMask lanes, int offset)
+{
+  const uint8_t bits[8] = { static_cast<uint8_t>(lanes >> offset), 0, 0, 0, 0, 0, 0, 0 };
+  return hn::LoadMaskBits(d, bits);
+}
+
+/// `mask` as the bits [offset, offset + N) of a LaneMask.
+HWY_INLINE LaneMask BitsAt(D d, M mask, int offset)
+{
+  uint8_t bits[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  hn::StoreMaskBits(d, mask, bits);
+  const LaneMask chunk = (LaneMask{ 1 } << hn::Lanes(d)) - 1;
+  return (LaneMask{ bits[0] } & chunk) << offset;
+}
+
+// --- Gaussian sums -----------------------------------------------------------
+
+/// A scalar jet in registers: value, gradient and the 6 Hessian entries.
+struct JetVectors
+{
+  V Value, Gx, Gy, Gz, Hxx, Hyy, Hzz, Hxy, Hxz, Hyz;
+};
+
+/**
+ * Add the bumps' value and derivatives up to Order at the points (x, y, z)
+ * to `jet`, the formulas of GaussianField::Accumulate: with u = w (p - c)
+ * and f = a exp(-(p - c) . u / 2), d_i f = -u_i f and
+ * d_i d_j f = u_i u_j f - delta_ij w_i f.
+ */
+template <int Order>
+HWY_INLINE void AddGaussianTerms(const GaussianTerms& terms, V x, V y, V z, JetVectors& jet)
+{
+  const D d;
+  const V minusHalf = hn::Set(d, -0.5);
+  const size_t count = terms.Size();
+  for (size_t k = 0; k < count; ++k)
+  {
+    const V dx = hn::Sub(x, hn::Set(d, terms.Center[0][k]));
+    const V dy = hn::Sub(y, hn::Set(d, terms.Center[1][k]));
+    const V dz = hn::Sub(z, hn::Set(d, terms.Center[2][k]));
+    const V wx = hn::Set(d, terms.InverseVariance[0][k]);
+    const V wy = hn::Set(d, terms.InverseVariance[1][k]);
+    const V wz = hn::Set(d, terms.InverseVariance[2][k]);
+    const V ux = hn::Mul(wx, dx);
+    const V uy = hn::Mul(wy, dy);
+    const V uz = hn::Mul(wz, dz);
+    const V q = hn::MulAdd(dz, uz, hn::MulAdd(dy, uy, hn::Mul(dx, ux)));
+    const V f = hn::Mul(hn::Set(d, terms.Amplitude[k]), hn::Exp(d, hn::Mul(minusHalf, q)));
+    jet.Value = hn::Add(jet.Value, f);
+    if (Order >= FirstDerivatives)
+    {
+      const V fux = hn::Mul(f, ux);
+      const V fuy = hn::Mul(f, uy);
+      const V fuz = hn::Mul(f, uz);
+      jet.Gx = hn::Sub(jet.Gx, fux);
+      jet.Gy = hn::Sub(jet.Gy, fuy);
+      jet.Gz = hn::Sub(jet.Gz, fuz);
+      if (Order >= SecondDerivatives)
+      {
+        jet.Hxx = hn::NegMulAdd(f, wx, hn::MulAdd(fux, ux, jet.Hxx));
+        jet.Hyy = hn::NegMulAdd(f, wy, hn::MulAdd(fuy, uy, jet.Hyy));
+        jet.Hzz = hn::NegMulAdd(f, wz, hn::MulAdd(fuz, uz, jet.Hzz));
+        jet.Hxy = hn::MulAdd(fux, uy, jet.Hxy);
+        jet.Hxz = hn::MulAdd(fux, uz, jet.Hxz);
+        jet.Hyz = hn::MulAdd(fuy, uz, jet.Hyz);
+      }
+    }
+  }
+}
+
+HWY_INLINE JetVectors ZeroJet(D d)
+{
+  const V zero = hn::Zero(d);
+  return { zero, zero, zero, zero, zero, zero, zero, zero, zero, zero };
+}
+
+/// AccumulateGaussianTerms for one order, so the loop carries no branch.
+template <int Order>
+void AccumulateGaussianTermsOfOrder(
+  const GaussianTerms& terms, const PacketVec3& p, PacketScalarJet& jet)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    JetVectors sum = ZeroJet(d);
+    AddGaussianTerms<Order>(
+      terms, hn::Load(d, p.C[0] + o), hn::Load(d, p.C[1] + o), hn::Load(d, p.C[2] + o), sum);
+    hn::Store(hn::Add(hn::Load(d, jet.Value + o), sum.Value), d, jet.Value + o);
+    if (Order >= FirstDerivatives)
+    {
+      const V g[3] = { sum.Gx, sum.Gy, sum.Gz };
+      for (int i = 0; i < 3; ++i)
+      {
+        hn::Store(hn::Add(hn::Load(d, jet.Gradient[i] + o), g[i]), d, jet.Gradient[i] + o);
+      }
+    }
+    if (Order >= SecondDerivatives)
+    {
+      V h[6];
+      h[XX] = sum.Hxx;
+      h[YY] = sum.Hyy;
+      h[ZZ] = sum.Hzz;
+      h[XY] = sum.Hxy;
+      h[XZ] = sum.Hxz;
+      h[YZ] = sum.Hyz;
+      for (int e = 0; e < 6; ++e)
+      {
+        double* entry = jet.Hessian.C[e] + o;
+        hn::Store(hn::Add(hn::Load(d, entry), h[e]), d, entry);
+      }
+    }
+  }
+}
+
+void AccumulateGaussianTermsImpl(
+  const GaussianTerms& terms, const PacketVec3& p, int order, PacketScalarJet& jet)
+{
+  switch (order)
+  {
+    case ValueOnly:
+      AccumulateGaussianTermsOfOrder<ValueOnly>(terms, p, jet);
+      break;
+    case FirstDerivatives:
+      AccumulateGaussianTermsOfOrder<FirstDerivatives>(terms, p, jet);
+      break;
+    default:
+      AccumulateGaussianTermsOfOrder<SecondDerivatives>(terms, p, jet);
+      break;
+  }
+}
+
+// --- Accelerations of the families from their providers' jets ----------------
+
+HWY_INLINE M AllFinite(V ax, V ay, V az)
+{
+  return hn::And(hn::IsFinite(ax), hn::And(hn::IsFinite(ay), hn::IsFinite(az)));
+}
+
+/// a = -grad f (v^T H v) / (1 + |grad f|^2), stored at lanes [o, o + N) of
+/// `a`; returns the lanes where a is finite.
+HWY_INLINE LaneMask StoreGraphAcceleration(
+  const JetVectors& f, V vx, V vy, V vz, PacketVec3& a, int o)
+{
+  const D d;
+  // v^T H v = sum_i h_ii v_i^2 + 2 (h_xy vx vy + h_xz vx vz + h_yz vy vz).
+  const V diagonal = hn::MulAdd(
+    hn::Mul(f.Hzz, vz), vz, hn::MulAdd(hn::Mul(f.Hyy, vy), vy, hn::Mul(hn::Mul(f.Hxx, vx), vx)));
+  const V offDiagonal = hn::MulAdd(
+    hn::Mul(f.Hyz, vy), vz, hn::MulAdd(hn::Mul(f.Hxz, vx), vz, hn::Mul(hn::Mul(f.Hxy, vx), vy)));
+  const V vHv = hn::MulAdd(hn::Set(d, 2.0), offDiagonal, diagonal);
+  const V gradientSquared = hn::MulAdd(f.Gz, f.Gz, hn::MulAdd(f.Gy, f.Gy, hn::Mul(f.Gx, f.Gx)));
+  const V s = hn::Neg(hn::Div(vHv, hn::Add(hn::Set(d, 1.0), gradientSquared)));
+  const V ax = hn::Mul(s, f.Gx);
+  const V ay = hn::Mul(s, f.Gy);
+  const V az = hn::Mul(s, f.Gz);
+  hn::Store(ax, d, a.C[0] + o);
+  hn::Store(ay, d, a.C[1] + o);
+  hn::Store(az, d, a.C[2] + o);
+  return BitsAt(d, AllFinite(ax, ay, az), o);
+}
+
+/// a = |v|^2 l - 2 (l . v) v with l = grad n / n, stored at lanes [o, o + N)
+/// of `a`; returns the lanes where n > 0 and a is finite.
+HWY_INLINE LaneMask StoreConformalAcceleration(
+  const JetVectors& index, V vx, V vy, V vz, PacketVec3& a, int o)
+{
+  const D d;
+  const V lx = hn::Div(index.Gx, index.Value);
+  const V ly = hn::Div(index.Gy, index.Value);
+  const V lz = hn::Div(index.Gz, index.Value);
+  const V speedSquared = hn::MulAdd(vz, vz, hn::MulAdd(vy, vy, hn::Mul(vx, vx)));
+  const V twiceLv =
+    hn::Mul(hn::Set(d, 2.0), hn::MulAdd(lz, vz, hn::MulAdd(ly, vy, hn::Mul(lx, vx))));
+  const V ax = hn::NegMulAdd(twiceLv, vx, hn::Mul(speedSquared, lx));
+  const V ay = hn::NegMulAdd(twiceLv, vy, hn::Mul(speedSquared, ly));
+  const V az = hn::NegMulAdd(twiceLv, vz, hn::Mul(speedSquared, lz));
+  hn::Store(ax, d, a.C[0] + o);
+  hn::Store(ay, d, a.C[1] + o);
+  hn::Store(az, d, a.C[2] + o);
+  return BitsAt(d, hn::And(hn::Gt(index.Value, hn::Zero(d)), AllFinite(ax, ay, az)), o);
+}
+
+/// The jet of PacketScalarJet's lanes [o, o + N) in registers.
+HWY_INLINE JetVectors LoadJet(const PacketScalarJet& jet, int o)
+{
+  const D d;
+  const PacketSym3& h = jet.Hessian;
+  return { hn::Load(d, jet.Value + o), hn::Load(d, jet.Gradient[0] + o),
+    hn::Load(d, jet.Gradient[1] + o), hn::Load(d, jet.Gradient[2] + o), hn::Load(d, h.C[XX] + o),
+    hn::Load(d, h.C[YY] + o), hn::Load(d, h.C[ZZ] + o), hn::Load(d, h.C[XY] + o),
+    hn::Load(d, h.C[XZ] + o), hn::Load(d, h.C[YZ] + o) };
+}
+
+LaneMask GraphAccelerationFromJetImpl(const PacketScalarJet& f, const PacketVec3& v, PacketVec3& a)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  LaneMask finite = 0;
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    finite |= StoreGraphAcceleration(LoadJet(f, o), hn::Load(d, v.C[0] + o),
+      hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
+  }
+  return finite;
+}
+
+LaneMask ConformalAccelerationFromJetImpl(
+  const PacketScalarJet& index, const PacketVec3& v, PacketVec3& a)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  LaneMask defined = 0;
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    // Only the value and gradient are filled (first order).
+    JetVectors jet = ZeroJet(d);
+    jet.Value = hn::Load(d, index.Value + o);
+    jet.Gx = hn::Load(d, index.Gradient[0] + o);
+    jet.Gy = hn::Load(d, index.Gradient[1] + o);
+    jet.Gz = hn::Load(d, index.Gradient[2] + o);
+    defined |= StoreConformalAcceleration(jet, hn::Load(d, v.C[0] + o),
+      hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
+  }
+  return defined;
+}
+
+LaneMask GraphAccelerationOfGaussiansImpl(const GaussianTerms& terms, const PacketVec3& x,
+  const PacketVec3& v, PacketVec3& a)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  LaneMask finite = 0;
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    JetVectors f = ZeroJet(d);
+    AddGaussianTerms<SecondDerivatives>(
+      terms, hn::Load(d, x.C[0] + o), hn::Load(d, x.C[1] + o), hn::Load(d, x.C[2] + o), f);
+    finite |= StoreGraphAcceleration(
+      f, hn::Load(d, v.C[0] + o), hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
+  }
+  return finite;
+}
+
+LaneMask ConformalAccelerationOfGaussiansImpl(const GaussianTerms& terms, double constant,
+  const PacketVec3& x, const PacketVec3& v, PacketVec3& a)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  LaneMask defined = 0;
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    JetVectors index = ZeroJet(d);
+    index.Value = hn::Set(d, constant);
+    AddGaussianTerms<FirstDerivatives>(
+      terms, hn::Load(d, x.C[0] + o), hn::Load(d, x.C[1] + o), hn::Load(d, x.C[2] + o), index);
+    defined |= StoreConformalAcceleration(
+      index, hn::Load(d, v.C[0] + o), hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
+  }
+  return defined;
+}
+
+// --- The geodesic flow and the integrators' arithmetic -----------------------
+
+LaneMask GeodesicFlowPacketImpl(
+  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+{
+  // dx/dt = v, copied by vectors (a struct copy may become a memmove call).
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int o = 0; o < PacketWidth; o += n)
+    {
+      hn::Store(hn::Load(d, y.V.C[i] + o), d, dy.X.C[i] + o);
+    }
+  }
+  return metric.AccelerationPacket(y.X, y.V, dy.V, lanes);
+}
+
+/// out = y + h * sum_j c_j k_j per lane, for the six components (a
+/// Runge-Kutta stage). The sum runs in the order of the coefficients, as
+/// the scalar integrators' Eigen expressions do.
+template <int Count>
+HWY_INLINE void Stage(const PacketState& y, const double* h, const double (&c)[Count],
+  const PacketState* const (&k)[Count], PacketState& out)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    const V step = hn::Load(d, h + o);
+    for (int i = 0; i < 6; ++i)
+    {
+      V sum = hn::Mul(hn::Set(d, c[0]), hn::Load(d, k[0]->Component(i) + o));
+      for (int j = 1; j < Count; ++j)
+      {
+        sum = hn::MulAdd(hn::Set(d, c[j]), hn::Load(d, k[j]->Component(i) + o), sum);
+      }
+      hn::Store(hn::MulAdd(step, sum, hn::Load(d, y.Component(i) + o)), d, out.Component(i) + o);
+    }
+  }
+}
+
+/// y <- candidate on the lanes of `lanes`; the others keep y.
+HWY_INLINE void Commit(const PacketState& candidate, LaneMask lanes, PacketState& y)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    const M take = MaskAt(d, lanes, o);
+    for (int i = 0; i < 6; ++i)
+    {
+      const V next = hn::Load(d, candidate.Component(i) + o);
+      hn::Store(hn::IfThenElse(take, next, hn::Load(d, y.Component(i) + o)), d, y.Component(i) + o);
+    }
+  }
+}
+
+LaneMask EulerPacketStepImpl(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+{
+  PacketState k1, next;
+  const LaneMask defined = GeodesicFlowPacketImpl(metric, y, k1, lanes) & lanes;
+  const PacketState* const k[1] = { &k1 };
+  Stage<1>(y, h, { 1.0 }, k, next);
+  Commit(next, defined, y);
+  return defined;
+}
+
+LaneMask RungeKutta4PacketStepImpl(
+  const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+{
+  PacketState k1, k2, k3, k4, t;
+  alignas(64) double half[PacketWidth];
+  alignas(64) double sixth[PacketWidth];
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    half[l] = 0.5 * h[l];
+    sixth[l] = h[l] / 6.0;
+  }
+  LaneMask defined = GeodesicFlowPacketImpl(metric, y, k1, lanes) & lanes;
+  const PacketState* const s1[1] = { &k1 };
+  Stage<1>(y, half, { 1.0 }, s1, t);
+  defined &= GeodesicFlowPacketImpl(metric, t, k2, defined);
+  const PacketState* const s2[1] = { &k2 };
+  Stage<1>(y, half, { 1.0 }, s2, t);
+  defined &= GeodesicFlowPacketImpl(metric, t, k3, defined);
+  const PacketState* const s3[1] = { &k3 };
+  Stage<1>(y, h, { 1.0 }, s3, t);
+  defined &= GeodesicFlowPacketImpl(metric, t, k4, defined);
+  const PacketState* const all[4] = { &k1, &k2, &k3, &k4 };
+  Stage<4>(y, sixth, { 1.0, 2.0, 2.0, 1.0 }, all, t);
+  Commit(t, defined, y);
+  return defined;
+}
+
+LaneMask DormandPrince45PacketAttemptImpl(const Metric& metric, const PacketState& y,
+  const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
+  PacketAttempt& attempt)
+{
+  // The Butcher tableau of DormandPrince45Of::Step (RungeKutta.h).
+  constexpr double a21 = 1.0 / 5.0;
+  constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
+  constexpr double a41 = 44.0 / 45.0, a42 = -56.0 / 15.0, a43 = 32.0 / 9.0;
+  constexpr double a51 = 19372.0 / 6561.0, a52 = -25360.0 / 2187.0, a53 = 64448.0 / 6561.0,
+                   a54 = -212.0 / 729.0;
+  constexpr double a61 = 9017.0 / 3168.0, a62 = -355.0 / 33.0, a63 = 46732.0 / 5247.0,
+                   a64 = 49.0 / 176.0, a65 = -5103.0 / 18656.0;
+  constexpr double b1 = 35.0 / 384.0, b3 = 500.0 / 1113.0, b4 = 125.0 / 192.0,
+                   b5 = -2187.0 / 6784.0, b6 = 11.0 / 84.0;
+  constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0,
+                   e5 = -17253.0 / 339200.0, e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
+
+  PacketState k2, k3, k4, k5, k6, t, estimate;
+  LaneMask defined = lanes;
+  {
+    const PacketState* const k[1] = { &k1 };
+    Stage<1>(y, step, { a21 }, k, t);
+    defined &= GeodesicFlowPacketImpl(metric, t, k2, defined);
+  }
+  {
+    const PacketState* const k[2] = { &k1, &k2 };
+    Stage<2>(y, step, { a31, a32 }, k, t);
+    defined &= GeodesicFlowPacketImpl(metric, t, k3, defined);
+  }
+  {
+    const PacketState* const k[3] = { &k1, &k2, &k3 };
+    Stage<3>(y, step, { a41, a42, a43 }, k, t);
+    defined &= GeodesicFlowPacketImpl(metric, t, k4, defined);
+  }
+  {
+    const PacketState* const k[4] = { &k1, &k2, &k3, &k4 };
+    Stage<4>(y, step, { a51, a52, a53, a54 }, k, t);
+    defined &= GeodesicFlowPacketImpl(metric, t, k5, defined);
+  }
+  {
+    const PacketState* const k[5] = { &k1, &k2, &k3, &k4, &k5 };
+    Stage<5>(y, step, { a61, a62, a63, a64, a65 }, k, t);
+    defined &= GeodesicFlowPacketImpl(metric, t, k6, defined);
+  }
+  {
+    const PacketState* const k[5] = { &k1, &k3, &k4, &k5, &k6 };
+    Stage<5>(y, step, { b1, b3, b4, b5, b6 }, k, attempt.Next);
+    defined &= GeodesicFlowPacketImpl(metric, attempt.Next, attempt.Derivative, defined);
+  }
+  {
+    // estimate = 0 + h sum e_j k_j, with y = 0 for Stage.
+    PacketState zero;
+    for (int i = 0; i < 6; ++i)
+    {
+      for (int l = 0; l < PacketWidth; ++l)
+      {
+        zero.Component(i)[l] = 0.0;
+      }
+    }
+    const PacketState* const k[6] = { &k1, &k3, &k4, &k5, &k6, &attempt.Derivative };
+    Stage<6>(zero, step, { e1, e3, e4, e5, e6, e7 }, k, estimate);
+  }
+
+  // RMS of estimate / (tol + tol max(|y|, |next|)) over the 6 components,
+  // and the controller's factors 0.9 error^(-1/5) clamped to [0.2, 5].
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  const V tol = hn::Set(d, tolerance);
+  const V infinity = hn::Set(d, HUGE_VAL);
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    V sum = hn::Zero(d);
+    for (int i = 0; i < 6; ++i)
+    {
+      const V scale = hn::MulAdd(tol,
+        hn::Max(hn::Abs(hn::Load(d, y.Component(i) + o)),
+          hn::Abs(hn::Load(d, attempt.Next.Component(i) + o))),
+        tol);
+      const V ratio = hn::Div(hn::Load(d, estimate.Component(i) + o), scale);
+      sum = hn::MulAdd(ratio, ratio, sum);
+    }
+    V error = hn::Sqrt(hn::Div(sum, hn::Set(d, 6.0)));
+    error = hn::IfThenElse(MaskAt(d, defined, o), error, infinity);
+    error = hn::IfThenElse(hn::IsNaN(error), infinity, error);
+    const V power =
+      hn::Mul(hn::Set(d, 0.9), hn::Exp(d, hn::Mul(hn::Set(d, -0.2), hn::Log(d, error))));
+    const V accept = hn::IfThenElse(hn::Gt(error, hn::Zero(d)),
+      hn::Min(hn::Set(d, 5.0), hn::Max(hn::Set(d, 0.2), power)), hn::Set(d, 5.0));
+    const V reject =
+      hn::IfThenElse(hn::IsFinite(error), hn::Max(hn::Set(d, 0.2), power), hn::Set(d, 0.25));
+    hn::Store(error, d, attempt.Error + o);
+    hn::Store(accept, d, attempt.AcceptFactor + o);
+    hn::Store(reject, d, attempt.RejectFactor + o);
+  }
+  return defined;
+}
+} // namespace HWY_NAMESPACE
+} // namespace riemann
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace riemann
+{
+HWY_EXPORT(AccumulateGaussianTermsImpl);
+HWY_EXPORT(GraphAccelerationFromJetImpl);
+HWY_EXPORT(ConformalAccelerationFromJetImpl);
+HWY_EXPORT(GraphAccelerationOfGaussiansImpl);
+HWY_EXPORT(ConformalAccelerationOfGaussiansImpl);
+HWY_EXPORT(GeodesicFlowPacketImpl);
+HWY_EXPORT(EulerPacketStepImpl);
+HWY_EXPORT(RungeKutta4PacketStepImpl);
+HWY_EXPORT(DormandPrince45PacketAttemptImpl);
+
+void GaussianTerms::Add(double amplitude, const Vec3& center, const Vec3& inverseVariance)
+{
+  this->Amplitude.push_back(amplitude);
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Center[i].push_back(center[i]);
+    this->InverseVariance[i].push_back(inverseVariance[i]);
+  }
+}
+
+std::string PacketTargetName()
+{
+  // The target HWY_DYNAMIC_DISPATCH chooses: the best of those compiled in
+  // that this CPU supports.
+  return hwy::TargetName(static_cast<int64_t>(hwy::SupportedAndGeneratedTargets()[0]));
+}
+
+void AccumulateGaussianTerms(
+  const GaussianTerms& terms, const PacketVec3& p, int order, PacketScalarJet& jet)
+{
+  HWY_DYNAMIC_DISPATCH(AccumulateGaussianTermsImpl)(terms, p, order, jet);
+}
+
+LaneMask GraphAccelerationFromJet(const PacketScalarJet& f, const PacketVec3& v, PacketVec3& a)
+{
+  return HWY_DYNAMIC_DISPATCH(GraphAccelerationFromJetImpl)(f, v, a);
+}
+
+LaneMask ConformalAccelerationFromJet(const PacketScalarJet& n, const PacketVec3& v, PacketVec3& a)
+{
+  return HWY_DYNAMIC_DISPATCH(ConformalAccelerationFromJetImpl)(n, v, a);
+}
+
+LaneMask GraphAccelerationOfGaussians(
+  const GaussianTerms& terms, const PacketVec3& x, const PacketVec3& v, PacketVec3& a)
+{
+  return HWY_DYNAMIC_DISPATCH(GraphAccelerationOfGaussiansImpl)(terms, x, v, a);
+}
+
+LaneMask ConformalAccelerationOfGaussians(const GaussianTerms& terms, double constant,
+  const PacketVec3& x, const PacketVec3& v, PacketVec3& a)
+{
+  return HWY_DYNAMIC_DISPATCH(ConformalAccelerationOfGaussiansImpl)(terms, constant, x, v, a);
+}
+
+LaneMask GeodesicFlowPacket(
+  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+{
+  return HWY_DYNAMIC_DISPATCH(GeodesicFlowPacketImpl)(metric, y, dy, lanes);
+}
+
+LaneMask EulerPacketStep(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+{
+  return HWY_DYNAMIC_DISPATCH(EulerPacketStepImpl)(metric, y, h, lanes);
+}
+
+LaneMask RungeKutta4PacketStep(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+{
+  return HWY_DYNAMIC_DISPATCH(RungeKutta4PacketStepImpl)(metric, y, h, lanes);
+}
+
+LaneMask DormandPrince45PacketAttempt(const Metric& metric, const PacketState& y,
+  const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
+  PacketAttempt& attempt)
+{
+  return HWY_DYNAMIC_DISPATCH(DormandPrince45PacketAttemptImpl)(
+    metric, y, k1, step, tolerance, lanes, attempt);
+}
+} // namespace riemann
+#endif

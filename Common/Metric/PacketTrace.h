@@ -1,0 +1,80 @@
+/**
+ * @file PacketTrace.h
+ * @brief The packet engine's integrators and tracer: PacketWidth geodesics
+ * stepped in lock step, one SIMD lane each (PacketKernels.h).
+ *
+ * Lanes are independent: each has its own step, its own adaptive step
+ * control (dp45 accepts or rejects per lane, and a lane whose attempt was
+ * accepted waits while the others retry), and finishes, fails or hits on
+ * its own; TraceGeodesics refills a finished lane with the next seed. The
+ * sequence of steps of every lane is the scalar integrators' (RungeKutta.h),
+ * so the results equal TraceGeodesic's to rounding.
+ */
+#ifndef RiemannPacketTrace_h
+#define RiemannPacketTrace_h
+
+#include "GeodesicTrace.h"
+#include "PacketKernels.h"
+
+#include <cstddef>
+
+namespace riemann
+{
+/**
+ * @class PacketStepper
+ * @brief GeodesicStepper for a packet: fixed-step Euler or RK4, or adaptive
+ * Dormand-Prince 5(4) with per-lane step control and first-same-as-last
+ * cache, in the parameter of each lane's curve.
+ */
+class RIEMANNCOMMONMETRIC_EXPORT PacketStepper
+{
+public:
+  /// `tolerance` is dp45's mixed absolute/relative error per step.
+  PacketStepper(IntegratorType type, double tolerance);
+
+  /**
+   * Start lane l on a new curve: `step` is its fixed step (the initial one
+   * for dp45), bounded by [minimumStep, maximumStep] for dp45.
+   */
+  void StartLane(int l, double step, double minimumStep, double maximumStep);
+
+  /**
+   * Advance each lane of `lanes` by one step of at most limit[l]: taken[l]
+   * is the step used and status[l] the outcome (IntegrationStep::Status).
+   * A lane that does not succeed keeps its state.
+   */
+  void Advance(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
+    double* taken, IntegrationStep::Status* status);
+
+private:
+  void AdvanceAdaptive(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
+    double* taken, IntegrationStep::Status* status);
+
+  IntegratorType Type;
+  double Tolerance;
+  alignas(64) double Step[PacketWidth];
+  alignas(64) double MinimumStep[PacketWidth];
+  alignas(64) double MaximumStep[PacketWidth];
+  /// dp45's first-same-as-last derivative, valid on the lanes of HaveDerivative.
+  PacketState Derivative;
+  LaneMask HaveDerivative = 0;
+};
+
+/// Where a geodesic starts: TraceGeodesic's p, v and backward.
+struct GeodesicSeed
+{
+  Vec3 Point = Vec3::Zero();
+  Vec3 Velocity = Vec3::Zero();
+  bool Backward = false;
+};
+
+/**
+ * TraceGeodesic for seeds[0, count) into paths[0, count), PacketWidth at a
+ * time: the same paths, points, arc lengths, drifts and termination reasons,
+ * to rounding. Single-threaded; callers split their seeds across threads.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void TraceGeodesics(const Metric& metric, const GeodesicSeed* seeds,
+  std::size_t count, const GeodesicOptions& options, GeodesicPath* paths);
+} // namespace riemann
+
+#endif
