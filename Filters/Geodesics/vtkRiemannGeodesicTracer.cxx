@@ -3,6 +3,7 @@
 #include "GeodesicTrace.h"
 #include "JacobiField.h"
 #include "Metric.h"
+#include "PacketTrace.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -164,8 +165,9 @@ std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input, std::
 }
 
 /// Step 2: every seed's geodesic, in parallel, with progress and abort
-/// between batches of 256 seeds. A seed whose direction cannot be normalised
-/// gets an empty path.
+/// between batches of 256 seeds; packets of seeds through the packet engine
+/// (TraceGeodesics), or one by one with the Jacobi fields. A seed whose
+/// direction cannot be normalised gets an empty path.
 Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   const std::vector<Seed>& seeds, const riemann::GeodesicOptions& options, bool jacobian)
 {
@@ -176,26 +178,40 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   traces.Traced = vtkRiemannForInBatches(self, count, 256,
     [&](vtkIdType first, vtkIdType last)
     {
-      for (vtkIdType i = first; i < last; ++i)
+      if (jacobian)
       {
-        const Seed& seed = seeds[i];
-        riemann::Vec3 velocity;
-        if (!riemann::UnitSpeedVelocity(metric, seed.Position, seed.Direction, velocity))
+        for (vtkIdType i = first; i < last; ++i)
         {
-          traces.Paths[i].Clear();
-          continue;
-        }
-        if (jacobian)
-        {
+          const Seed& seed = seeds[i];
+          riemann::Vec3 velocity;
+          if (!riemann::UnitSpeedVelocity(metric, seed.Position, seed.Direction, velocity))
+          {
+            traces.Paths[i].Clear();
+            continue;
+          }
           TraceWithJacobian(metric, seed, options, traces.Paths[i], traces.Jacobians[i]);
         }
-        else
+        return;
+      }
+      // The packet engine, PacketWidth geodesics at a time. A seed whose
+      // direction cannot be normalised gets a zero velocity: TraceGeodesics
+      // then leaves its path empty, as Clear() would.
+      std::vector<riemann::GeodesicSeed> packetSeeds(static_cast<size_t>(last - first));
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        riemann::GeodesicSeed& packetSeed = packetSeeds[static_cast<size_t>(i - first)];
+        packetSeed.Point = seeds[i].Position;
+        packetSeed.Backward = seeds[i].Backward;
+        if (!riemann::UnitSpeedVelocity(
+              metric, seeds[i].Position, seeds[i].Direction, packetSeed.Velocity))
         {
-          riemann::TraceGeodesic(
-            metric, seed.Position, velocity, options, traces.Paths[i], seed.Backward);
+          packetSeed.Velocity = riemann::Vec3::Zero();
         }
       }
-    });
+      riemann::TraceGeodesics(
+        metric, packetSeeds.data(), packetSeeds.size(), options, traces.Paths.data() + first);
+    },
+    jacobian ? 0 : 8 * riemann::PacketWidth);
   return traces;
 }
 
