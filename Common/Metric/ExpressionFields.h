@@ -40,6 +40,9 @@ public:
   ~ExpressionScalarField() override;
 
   void Accumulate(const Vec3& p, int order, ScalarJet& jet) const override;
+  /// The tape on all lanes at once (CompiledExpressions::EvaluatePacket).
+  void AccumulatePacket(
+    const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask lanes) const override;
   std::string Describe() const override;
   std::string EmitGlsl(GlslBuilder& builder) const override;
   /// A 9^3 grid over [-4, 4]^3: an expression may vary anywhere.
