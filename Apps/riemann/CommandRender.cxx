@@ -683,10 +683,7 @@ void RunRender(const RenderArguments& args)
 void RegisterRenderCommand(CLI::App& app)
 {
   auto args = std::make_shared<RenderArguments>();
-  CLI::App* command = app.add_subcommand("render",
-    "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU, or CPU with\n"
-    "--backend cpu: triangle meshes, anti-aliasing, EXR channels of the rays' hits).\n"
-    "Without --metric and --scene: the paper's grid with one Gaussian bump.");
+  CLI::App* command = app.add_subcommand("render", RenderCommandDescription);
   command
     ->add_option("--metric,-m", args->Metric,
       "Metric definition (JSON file); default: the scene's metric, else the paper's bump")

@@ -19,6 +19,13 @@ void RegisterRenderCommand(CLI::App& app);
 void RegisterFieldsCommand(CLI::App& app);
 void RegisterConjugateCommand(CLI::App& app);
 void RegisterExpmapCommand(CLI::App& app);
+
+/// The render subcommand's description, shared by riemann-render and the
+/// listing of render in `riemann --help`.
+constexpr const char* RenderCommandDescription =
+  "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU, or CPU with\n"
+  "--backend cpu: triangle meshes, anti-aliasing, EXR channels of the rays' hits).\n"
+  "Without --metric and --scene: the paper's grid with one Gaussian bump.";
 }
 }
 

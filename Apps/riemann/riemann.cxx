@@ -1,104 +1,91 @@
 // riemann: the RiemannVTK command-line tool. Design a Riemannian metric on R^3
 // (a JSON file) and compute with it: `riemann trace`, `riemann info`, ...
 // Errors: see the convention at the top of CliUtilities.h.
-#include "CliUtilities.h"
+//
+// Start-up time is the point of this file's shape. `render` needs the
+// rendering stack (OpenGL, Embree, and OpenImageIO, which alone loads some
+// 260 shared libraries and took 0.4 s of every start); the other subcommands
+// need the metric core, the filters and VTK's XML writers (about 35
+// libraries). So `riemann` links only the latter, and `riemann render ...`
+// replaces itself (execv, same arguments) with `riemann-render`, installed
+// next to it, which holds the render subcommand (riemann-render.cxx).
+#include "CliMain.h"
 #include "Commands.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
+#include <string>
+
+#include <unistd.h>
 
 namespace
 {
-/// The hint printed under a usage error: the --help of the command at fault.
-std::string HelpHint(const CLI::App& app)
+/// The subcommand named on the command line: the first argument that is
+/// not an option of `riemann` itself (--verbose, --help, --version).
+std::string SubcommandName(int argc, char** argv)
 {
-  const std::vector<CLI::App*> commands = app.get_subcommands();
-  return "Run 'riemann" + (commands.empty() ? std::string() : " " + commands.front()->get_name()) +
-    " --help' for the options.";
+  for (int i = 1; i < argc; ++i)
+  {
+    if (argv[i][0] != '-')
+    {
+      return argv[i];
+    }
+  }
+  return std::string();
 }
 
-/// Hands VTK's output window and vtkLogger back before static destruction.
-struct VtkMessageRouting
+/// `riemann-render` in the folder of this executable (build/bin or the
+/// install's bin).
+std::string RenderToolPath()
 {
-  riemann::cli::CliOutputWindow* Window = riemann::cli::CliOutputWindow::Install();
-  ~VtkMessageRouting() { riemann::cli::CliOutputWindow::Uninstall(); }
-};
+  std::string self(4096, '\0');
+  const ssize_t length = readlink("/proc/self/exe", &self[0], self.size() - 1);
+  if (length <= 0)
+  {
+    return "riemann-render";
+  }
+  self.resize(static_cast<size_t>(length));
+  const size_t slash = self.rfind('/');
+  return (slash == std::string::npos ? std::string() : self.substr(0, slash + 1)) +
+    "riemann-render";
+}
+
+/// Replace this process by riemann-render with the same arguments; returns
+/// only on failure, with the exit status.
+int RunRenderTool(char** argv)
+{
+  const std::string tool = RenderToolPath();
+  execv(tool.c_str(), argv);
+  std::cerr << "riemann: error: cannot run " << tool << " (" << std::strerror(errno)
+            << "): the render command lives there; install it next to riemann\n";
+  return 1;
+}
+
+/// `render` in `riemann --help`, with its one-line description; it never
+/// runs here (main hands render to riemann-render first).
+void RegisterRenderListing(CLI::App& app)
+{
+  app.add_subcommand("render", riemann::cli::RenderCommandDescription);
+}
 }
 
 int main(int argc, char** argv)
 {
-  // Before anything else: VTK's messages go to the CLI's output window, which
-  // keeps them (and prints them plainly with --verbose), never to the terminal
-  // as raw log lines.
-  VtkMessageRouting routing;
-
-  CLI::App app{ "riemann: design Riemannian metrics on R^3 and compute with them.\n"
-                "Metrics are JSON files (see Data/metrics/ and Documentation/MetricFormat.md)." };
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("riemann 0.1.0"));
-  app.add_flag_callback(
-    "--verbose", [&routing]() { routing.Window->SetVerbose(true); },
-    "Also print VTK's own errors and warnings on stderr, plainly, as they come (by default "
-    "they are kept and the tool says what failed in one sentence); may follow the command");
-  // --verbose (an option of `riemann` itself) may also be written after the
-  // command's name; set before the commands are added, which inherit it.
-  app.fallthrough();
-  riemann::cli::RegisterTraceCommand(app);
-  riemann::cli::RegisterInfoCommand(app);
-  riemann::cli::RegisterRenderCommand(app);
-  riemann::cli::RegisterFieldsCommand(app);
-  riemann::cli::RegisterConjugateCommand(app);
-  riemann::cli::RegisterExpmapCommand(app);
-  int status = 0;
-  try
+  if (SubcommandName(argc, argv) == "render")
   {
-    app.parse(argc, argv);
+    return RunRenderTool(argv);
   }
-  catch (const CLI::ParseError& e)
-  {
-    // --help and --version exit 0; every usage error exits 2, as in the
-    // commands (CLI11's own codes, 100 and up, mean nothing to a shell user).
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success))
+  return riemann::cli::RunCommandLine(argc, argv,
+    [](CLI::App& app)
     {
-      return app.exit(e);
-    }
-    std::cerr << "riemann: error: " << e.what() << "\n" << HelpHint(app) << "\n";
-    return 2;
-  }
-  catch (const riemann::cli::Failure& e)
-  {
-    std::cerr << "riemann: error: " << e.what() << "\n";
-    if (e.Status == 2)
-    {
-      std::cerr << HelpHint(app) << "\n";
-    }
-    status = e.Status;
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "riemann: internal error: " << e.what() << "\n";
-    status = 1;
-  }
-  // What VTK said and the tool kept: one line that it exists, not VTK's
-  // words (they name the filters' settings, not the options). The errors
-  // behind a failure are what its sentence tells.
-  if (!routing.Window->GetVerbose())
-  {
-    const int errors = routing.Window->GetNumberOfErrors();
-    const int warnings = routing.Window->GetNumberOfWarnings();
-    if (status == 0 && errors > 0)
-    {
-      std::cerr << "riemann: warning: VTK reported " << errors
-                << (errors == 1 ? " error that did not stop the command; --verbose prints it\n"
-                                : " errors that did not stop the command; --verbose prints them\n");
-    }
-    if (warnings > 0)
-    {
-      std::cerr << "riemann: note: VTK also reported " << warnings
-                << (warnings == 1 ? " warning; --verbose prints it\n"
-                                  : " warnings; --verbose prints them\n");
-    }
-  }
-  return status;
+      riemann::cli::RegisterTraceCommand(app);
+      riemann::cli::RegisterInfoCommand(app);
+      RegisterRenderListing(app);
+      riemann::cli::RegisterFieldsCommand(app);
+      riemann::cli::RegisterConjugateCommand(app);
+      riemann::cli::RegisterExpmapCommand(app);
+    });
 }

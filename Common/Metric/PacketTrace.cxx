@@ -60,13 +60,12 @@ void PacketStepper::StartLane(int l, double step, double minimumStep, double max
   this->HaveDerivative &= ~Bit(l);
 }
 
-void PacketStepper::Advance(const Metric& metric, PacketState& y, const double* limit,
+LaneMask PacketStepper::Advance(const Metric& metric, PacketState& y, const double* limit,
   LaneMask lanes, double* taken, IntegrationStep::Status* status)
 {
   if (this->Type == IntegratorType::DormandPrince45)
   {
-    this->AdvanceAdaptive(metric, y, limit, lanes, taken, status);
-    return;
+    return this->AdvanceAdaptive(metric, y, limit, lanes, taken, status);
   }
   alignas(64) double h[PacketWidth];
   for (int l = 0; l < PacketWidth; ++l)
@@ -84,10 +83,11 @@ void PacketStepper::Advance(const Metric& metric, PacketState& y, const double* 
       status[l] = HasLane(stepped, l) ? IntegrationStep::Accepted : IntegrationStep::Degenerate;
     }
   }
+  return 0;
 }
 
-void PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y, const double* limit,
-  LaneMask lanes, double* taken, IntegrationStep::Status* status)
+LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
+  const double* limit, LaneMask lanes, double* taken, IntegrationStep::Status* status)
 {
   // Step 1: the first-same-as-last derivative of lanes that start a curve.
   LaneMask pending = lanes;
@@ -114,9 +114,12 @@ void PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y, const 
       }
     }
   }
+  if (pending == 0)
+  {
+    return 0;
+  }
 
-  // Step 2: attempts until every lane is accepted or fails; accepted lanes
-  // wait (masked) while the others retry with a smaller step.
+  // Step 2: one attempt of every pending lane, each with its own step.
   alignas(64) double step[PacketWidth];
   bool lastStep[PacketWidth];
   for (int l = 0; l < PacketWidth; ++l)
@@ -126,56 +129,49 @@ void PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y, const 
     if (HasLane(pending, l))
     {
       this->Step[l] = std::min(std::max(this->Step[l], this->MinimumStep[l]), this->MaximumStep[l]);
+      lastStep[l] = this->Step[l] >= limit[l];
+      step[l] = lastStep[l] ? limit[l] : this->Step[l];
     }
   }
   PacketAttempt attempt;
-  while (pending != 0)
+  const LaneMask defined =
+    DormandPrince45PacketAttempt(metric, y, this->Derivative, step, this->Tolerance, pending, attempt);
+
+  // Step 3: each lane's controller, as DormandPrince45Of::Step; a rejected
+  // lane keeps its state and retries with the smaller step.
+  LaneMask retry = 0;
+  for (int l = 0; l < PacketWidth; ++l)
   {
-    for (int l = 0; l < PacketWidth; ++l)
+    if (!HasLane(pending, l))
     {
-      if (HasLane(pending, l))
-      {
-        lastStep[l] = this->Step[l] >= limit[l];
-        step[l] = lastStep[l] ? limit[l] : this->Step[l];
-      }
+      continue;
     }
-    const LaneMask defined = DormandPrince45PacketAttempt(
-      metric, y, this->Derivative, step, this->Tolerance, pending, attempt);
-    // Step 3: each lane's controller, as DormandPrince45Of::Step.
-    for (int l = 0; l < PacketWidth; ++l)
+    if (attempt.Error[l] <= 1.0)
     {
-      if (!HasLane(pending, l))
+      CopyStateLane(attempt.Next, l, y);
+      CopyStateLane(attempt.Derivative, l, this->Derivative);
+      taken[l] = step[l];
+      const double factor = attempt.AcceptFactor[l];
+      if (!lastStep[l] || factor < 1.0)
       {
-        continue;
+        this->Step[l] =
+          std::min(std::max(step[l] * factor, this->MinimumStep[l]), this->MaximumStep[l]);
       }
-      if (attempt.Error[l] <= 1.0)
-      {
-        CopyStateLane(attempt.Next, l, y);
-        CopyStateLane(attempt.Derivative, l, this->Derivative);
-        taken[l] = step[l];
-        const double factor = attempt.AcceptFactor[l];
-        if (!lastStep[l] || factor < 1.0)
-        {
-          this->Step[l] =
-            std::min(std::max(step[l] * factor, this->MinimumStep[l]), this->MaximumStep[l]);
-        }
-        status[l] = IntegrationStep::Accepted;
-        pending &= ~Bit(l);
-      }
-      else if (step[l] <= this->MinimumStep[l])
-      {
-        // A stage still hits a degenerate point at the smallest step: report
-        // it as such rather than as an accuracy failure.
-        status[l] =
-          HasLane(defined, l) ? IntegrationStep::StepTooSmall : IntegrationStep::Degenerate;
-        pending &= ~Bit(l);
-      }
-      else
-      {
-        this->Step[l] = std::max(this->MinimumStep[l], step[l] * attempt.RejectFactor[l]);
-      }
+      status[l] = IntegrationStep::Accepted;
+    }
+    else if (step[l] <= this->MinimumStep[l])
+    {
+      // A stage still hits a degenerate point at the smallest step: report
+      // it as such rather than as an accuracy failure.
+      status[l] = HasLane(defined, l) ? IntegrationStep::StepTooSmall : IntegrationStep::Degenerate;
+    }
+    else
+    {
+      this->Step[l] = std::max(this->MinimumStep[l], step[l] * attempt.RejectFactor[l]);
+      retry |= Bit(l);
     }
   }
+  return retry;
 }
 
 // --- TraceGeodesics --------------------------------------------------------------
@@ -343,17 +339,19 @@ private:
     return stepping;
   }
 
-  /// Step 3: one step of every stepping lane, then each lane's checks and
-  /// record, as TraceGeodesic's loop body.
+  /// Step 3: one attempt of every stepping lane, then the checks and record
+  /// of each lane that stepped, as TraceGeodesic's loop body.
   void StepAndRecord(LaneMask stepping)
   {
     alignas(64) double taken[PacketWidth] = {};
     IntegrationStep::Status status[PacketWidth] = {};
-    this->Stepper.Advance(this->TheMetric, this->State, this->Remaining, stepping, taken, status);
+    const LaneMask retry =
+      this->Stepper.Advance(this->TheMetric, this->State, this->Remaining, stepping, taken, status);
     LaneMask stepped = 0;
     for (int l = 0; l < PacketWidth; ++l)
     {
-      if (!HasLane(stepping, l))
+      // A lane to retry (dp45 rejected its step) tries again next round.
+      if (!HasLane(stepping & ~retry, l))
       {
         continue;
       }

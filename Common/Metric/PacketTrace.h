@@ -4,11 +4,12 @@
  * stepped in lock step, one SIMD lane each (PacketKernels.h).
  *
  * Lanes are independent: each has its own step, its own adaptive step
- * control (dp45 accepts or rejects per lane, and a lane whose attempt was
- * accepted waits while the others retry), and finishes, fails or hits on
- * its own; TraceGeodesics refills a finished lane with the next seed. The
- * sequence of steps of every lane is the scalar integrators' (RungeKutta.h),
- * so the results equal TraceGeodesic's to rounding.
+ * control (dp45 accepts or rejects per lane; a rejected lane retries with a
+ * smaller step in the next attempt while the accepted ones go on, so no
+ * lane waits for another), and finishes, fails or hits on its own;
+ * TraceGeodesics refills a finished lane with the next seed. The sequence
+ * of attempts of every lane is the scalar integrators' (RungeKutta.h), so
+ * the results equal TraceGeodesic's to rounding.
  */
 #ifndef RiemannPacketTrace_h
 #define RiemannPacketTrace_h
@@ -39,16 +40,19 @@ public:
   void StartLane(int l, double step, double minimumStep, double maximumStep);
 
   /**
-   * Advance each lane of `lanes` by one step of at most limit[l]: taken[l]
-   * is the step used and status[l] the outcome (IntegrationStep::Status).
-   * A lane that does not succeed keeps its state.
+   * One attempt to advance each lane of `lanes` by a step of at most
+   * limit[l]. Returns the lanes to retry: dp45 rejected their step, kept
+   * their state and set a smaller step (never with euler and rk4). On the
+   * other lanes of `lanes`, taken[l] is the step used and status[l] the
+   * outcome (IntegrationStep::Status); a lane that does not succeed keeps
+   * its state.
    */
-  void Advance(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
+  LaneMask Advance(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
     double* taken, IntegrationStep::Status* status);
 
 private:
-  void AdvanceAdaptive(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
-    double* taken, IntegrationStep::Status* status);
+  LaneMask AdvanceAdaptive(const Metric& metric, PacketState& y, const double* limit,
+    LaneMask lanes, double* taken, IntegrationStep::Status* status);
 
   IntegratorType Type;
   double Tolerance;

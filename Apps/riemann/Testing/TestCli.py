@@ -165,6 +165,45 @@ def png_size_and_pixels(path):
     return width, height, vtk_to_numpy(image.GetPointData().GetScalars()).copy()
 
 
+class StartupTests(unittest.TestCase):
+    """`riemann` links only what its light subcommands need; render runs
+    riemann-render, found next to riemann (riemann.cxx)."""
+
+    def loaded_libraries(self, *args):
+        env = dict(os.environ, LD_DEBUG="libs")
+        result = subprocess.run([EXE, *args], capture_output=True, text=True, timeout=60, env=env)
+        self.assertEqual(result.returncode, 0, result.stderr[-2000:])
+        return [line for line in result.stderr.splitlines() if "calling init:" in line]
+
+    def test_info_loads_no_rendering_library(self):
+        libraries = self.loaded_libraries("info", "-m", os.path.join(METRICS, "gaussian-bump.json"))
+        names = "\n".join(libraries)
+        for heavy in ("libOpenImageIO", "libvtkRenderingOpenGL2", "libembree", "libRiemannRendering"):
+            self.assertNotIn(heavy, names)
+        # About 35 today (310 when render was linked in): a margin, not a timing.
+        self.assertLess(len(libraries), 60, names)
+
+    def test_render_help_comes_from_riemann_render(self):
+        status, out, err = run("render", "--help")
+        self.assertEqual(status, 0, err)
+        self.assertIn("--backend", out)
+        status, out, _ = run("--help")
+        self.assertEqual(status, 0)
+        self.assertIn("render", out)
+
+    def test_render_without_riemann_render_is_a_clear_error(self):
+        with tempfile.TemporaryDirectory() as folder:
+            alone = os.path.join(folder, "riemann")
+            import shutil
+            shutil.copy2(EXE, alone)
+            result = subprocess.run([alone, "render", "-o", os.path.join(folder, "x.png")],
+                                    capture_output=True, text=True, timeout=60)
+            self.assertEqual(result.returncode, 1)
+            self.assertIn("cannot run", result.stderr)
+            self.assertIn("riemann-render", result.stderr)
+            self.assertFalse(os.path.exists(os.path.join(folder, "x.png")))
+
+
 class RenderTests(unittest.TestCase):
     """riemann render: needs an X display (ctest runs under xvfb-run)."""
 
