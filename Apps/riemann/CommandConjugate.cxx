@@ -3,6 +3,7 @@
 // .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet); with
 // --surface, the caustic as sheets over the direction grid (.vtp).
 #include "CliUtilities.h"
+#include "CsvWriter.h"
 #include "Commands.h"
 #include "ProgressBar.h"
 
@@ -58,7 +59,7 @@ bool WriteCsv(vtkPolyData* locus, const std::string& path)
     return false;
   }
   out << "direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet\n";
-  out << std::setprecision(17);
+  CsvWriter csv(out);
   vtkPointData* pd = locus->GetPointData();
   vtkDataArray* arcLength = pd->GetArray("ArcLength");
   vtkDataArray* multiplicity = pd->GetArray("Multiplicity");
@@ -69,14 +70,14 @@ bool WriteCsv(vtkPolyData* locus, const std::string& path)
   {
     double p[3];
     locus->GetPoint(i, p);
-    out << static_cast<long long>(direction->GetTuple1(i)) << ',' << p[0] << ',' << p[1] << ','
-        << p[2] << ',' << arcLength->GetTuple1(i) << ','
-        << static_cast<int>(multiplicity->GetTuple1(i)) << ','
-        << static_cast<int>(index->GetTuple1(i)) << ',' << static_cast<int>(sheet->GetTuple1(i))
-        << '\n';
+    csv.Add(static_cast<long long>(direction->GetTuple1(i))).Add(p[0]).Add(p[1]).Add(p[2]);
+    csv.Add(arcLength->GetTuple1(i))
+      .Add(static_cast<long long>(multiplicity->GetTuple1(i)))
+      .Add(static_cast<long long>(index->GetTuple1(i)))
+      .Add(static_cast<long long>(sheet->GetTuple1(i)));
+    csv.EndRow();
   }
-  out.flush();
-  return static_cast<bool>(out);
+  return csv.Finish();
 }
 
 /// "N sheet(s), T triangles (C crossed by a cusp edge, M where sheets meet)".

@@ -2,6 +2,7 @@
 // regular grid, written as .vti (VTK XML image) or .csv (x,y,z, then one
 // column per point-data component, one row per grid point).
 #include "CliUtilities.h"
+#include "CsvWriter.h"
 #include "Commands.h"
 
 #include "vtkDataArray.h"
@@ -150,23 +151,23 @@ bool WriteCsv(vtkImageData* image, const std::string& path)
       }
     }
   }
-  out << '\n' << std::setprecision(17);
+  out << '\n';
+  CsvWriter csv(out);
   for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
   {
     double x[3];
     image->GetPoint(i, x);
-    out << x[0] << ',' << x[1] << ',' << x[2];
+    csv.Add(x[0]).Add(x[1]).Add(x[2]);
     for (vtkDataArray* array : arrays)
     {
       for (int c = 0; c < array->GetNumberOfComponents(); ++c)
       {
-        out << ',' << array->GetComponent(i, c);
+        csv.Add(array->GetComponent(i, c));
       }
     }
-    out << '\n';
+    csv.EndRow();
   }
-  out.flush();
-  return static_cast<bool>(out);
+  return csv.Finish();
 }
 
 void RunFields(const FieldsArguments& args)

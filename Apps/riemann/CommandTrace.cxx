@@ -1,6 +1,7 @@
 // riemann trace: geodesics of a metric from one seed or a CSV of seeds, written
 // as .vtp (VTK XML polylines) or .csv (seed_id,step,t,x,y,z,vx,vy,vz).
 #include "CliUtilities.h"
+#include "CsvWriter.h"
 #include "Commands.h"
 #include "GeodesicTrace.h"
 
@@ -162,7 +163,7 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
   // The transverse Jacobian's columns come after the fixed ones, when asked.
   out << "seed_id,step,t,x,y,z,vx,vy,vz"
       << (determinant ? ",TransverseJacobian,SingularValue0,SingularValue1" : "") << "\n";
-  out << std::setprecision(17);
+  CsvWriter csv(out);
   vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
   vtkDataArray* velocity = lines->GetPointData()->GetArray("Velocity");
   vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
@@ -180,18 +181,18 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
       double p[3], v[3];
       lines->GetPoint(ids[k], p);
       velocity->GetTuple(ids[k], v);
-      out << seed << ',' << k << ',' << arcLength->GetTuple1(ids[k]) << ',' << p[0] << ',' << p[1]
-          << ',' << p[2] << ',' << v[0] << ',' << v[1] << ',' << v[2];
+      csv.Add(seed).Add(static_cast<long long>(k)).Add(arcLength->GetTuple1(ids[k]));
+      csv.Add(p[0]).Add(p[1]).Add(p[2]).Add(v[0]).Add(v[1]).Add(v[2]);
       if (determinant && singular)
       {
-        out << ',' << determinant->GetTuple1(ids[k]) << ',' << singular->GetComponent(ids[k], 0)
-            << ',' << singular->GetComponent(ids[k], 1);
+        csv.Add(determinant->GetTuple1(ids[k]))
+          .Add(singular->GetComponent(ids[k], 0))
+          .Add(singular->GetComponent(ids[k], 1));
       }
-      out << '\n';
+      csv.EndRow();
     }
   }
-  out.flush();
-  return static_cast<bool>(out);
+  return csv.Finish();
 }
 
 void RunTrace(const TraceArguments& args)

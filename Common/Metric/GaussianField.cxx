@@ -89,15 +89,17 @@ std::string GaussianField::Describe() const
 void GaussianField::AppendSamplePoints(std::vector<Vec3>& points) const
 {
   constexpr int n = 17;
+  points.reserve(points.size() + n * n * n);
+  // Offsets -4 sigma .. 4 sigma in steps of sigma / 2 along each axis.
+  const Vec3 step = this->Sigma * (8.0 / (n - 1));
+  const Vec3 corner = this->Center - 4.0 * this->Sigma;
   for (int i = 0; i < n; ++i)
   {
     for (int j = 0; j < n; ++j)
     {
       for (int k = 0; k < n; ++k)
       {
-        const Vec3 unit(i, j, k);
-        const Vec3 offset = (unit / (n - 1) * 8.0 - Vec3::Constant(4.0)).cwiseProduct(this->Sigma);
-        points.push_back(this->Center + offset);
+        points.emplace_back(corner[0] + i * step[0], corner[1] + j * step[1], corner[2] + k * step[2]);
       }
     }
   }
