@@ -220,7 +220,9 @@ void CPUTracer::StartRays(int x0, int y0, int x1, int y1, std::vector<TileRay>& 
   }
 }
 
-// Step 2: the wavefront. Every live ray takes a step, then all the new
+// Step 2: the wavefront. Every live ray takes a step (PacketWidth rays at a
+// time in the packet engine; the live rays are repacked after every step,
+// so a packet never carries a finished ray), then all the new
 // segments go to Embree in one stream query and each is tested against the
 // analytic objects; the nearer hit wins, and rays that hit leave the front.
 // Returns the number of steps taken.
@@ -246,13 +248,26 @@ long long CPUTracer::MarchWavefront(std::vector<RayMarcher>& marchers) const
     stepped.clear();
     a.clear();
     b.clear();
-    for (std::size_t i : live)
+    // The live rays step PacketWidth at a time through the packet engine.
+    for (std::size_t first = 0; first < live.size(); first += PacketWidth)
     {
-      if (marchers[i].Advance(metric))
+      const int count = static_cast<int>(std::min<std::size_t>(PacketWidth, live.size() - first));
+      RayMarcher* packet[PacketWidth];
+      bool advanced[PacketWidth];
+      for (int l = 0; l < count; ++l)
       {
-        stepped.push_back(i);
-        a.push_back(marchers[i].SegmentStart());
-        b.push_back(marchers[i].SegmentEnd());
+        packet[l] = &marchers[live[first + l]];
+      }
+      AdvanceRayPacket(metric, packet, count, advanced);
+      for (int l = 0; l < count; ++l)
+      {
+        if (advanced[l])
+        {
+          const std::size_t i = live[first + l];
+          stepped.push_back(i);
+          a.push_back(marchers[i].SegmentStart());
+          b.push_back(marchers[i].SegmentEnd());
+        }
       }
     }
     steps += static_cast<long long>(stepped.size());

@@ -80,15 +80,19 @@ std::vector<riemann::RayPath> TraceRays(const riemann::Metric& metric, const rie
   const riemann::EmbreeMeshIntersector* meshes)
 {
   std::vector<riemann::RayPath> paths(pixels.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()),
+  // Ranges of at least 64 pixels, traced PacketWidth rays at a time (TBB's
+  // automatic partitioner would hand out single pixels).
+  vtkSMPTools::For(0, static_cast<vtkIdType>(pixels.size()), 8 * riemann::PacketWidth,
     [&](vtkIdType first, vtkIdType last)
     {
+      std::vector<riemann::Vec3> velocities;
       for (vtkIdType k = first; k < last; ++k)
       {
-        const riemann::Vec3 v =
-          camera.PixelDirection(pixels[k].first, pixels[k].second, width, height);
-        riemann::TraceRay(metric, scene, eye, v, rays, paths[k], true, meshes);
+        velocities.push_back(
+          camera.PixelDirection(pixels[k].first, pixels[k].second, width, height));
       }
+      riemann::TraceRays(metric, scene, eye, velocities.data(), static_cast<int>(last - first),
+        rays, paths.data() + first, true, meshes);
     });
   return paths;
 }

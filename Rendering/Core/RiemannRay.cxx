@@ -4,9 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace riemann
 {
+namespace
+{
+void FinishPath(const RayMarcher& ray, bool recordPath, RayPath& path);
+}
+
 RayMarcher::RayMarcher(const RaySettings& settings)
   : Settings(settings)
   , Stepper(settings.Integrator, settings.Step, settings.Tolerance,
@@ -32,11 +38,23 @@ void RayMarcher::Start(const Vec3& p, const Vec3& v)
 
 bool RayMarcher::Advance(const Metric& metric)
 {
+  double remaining = 0.0;
+  if (!this->BeginStep(remaining))
+  {
+    return false;
+  }
+  double taken = 0.0;
+  const auto status = this->Stepper.Advance(metric, this->State, remaining, taken);
+  return this->EndStep(status, taken);
+}
+
+bool RayMarcher::BeginStep(double& remaining)
+{
   if (this->Done)
   {
     return false;
   }
-  const double remaining = this->Settings.MaximumLength - this->ArcLength;
+  remaining = this->Settings.MaximumLength - this->ArcLength;
   if (remaining <= 1e-12 * std::max(1.0, this->Settings.MaximumLength))
   {
     this->Termination = OutOfLength;
@@ -51,7 +69,12 @@ bool RayMarcher::Advance(const Metric& metric)
   }
   this->Previous = this->State;
   this->Taken = 0.0;
-  const auto status = this->Stepper.Advance(metric, this->State, remaining, this->Taken);
+  return true;
+}
+
+bool RayMarcher::EndStep(IntegrationStep::Status status, double taken)
+{
+  this->Taken = taken;
   if (status != DormandPrince45::Accepted)
   {
     this->Termination = status == DormandPrince45::StepTooSmall ? Stagnation : DegenerateMetric;
@@ -68,6 +91,67 @@ bool RayMarcher::Advance(const Metric& metric)
   }
   ++this->StepCount;
   return true;
+}
+
+void AdvanceRayPacket(const Metric& metric, RayMarcher* const* rays, int count, bool* advanced)
+{
+  // Step 1: dp45 keeps its step control in each ray's stepper: one by one.
+  if (count <= 0)
+  {
+    return;
+  }
+  if (rays[0]->Settings.Integrator == IntegratorType::DormandPrince45)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      advanced[i] = rays[i]->Advance(metric);
+    }
+    return;
+  }
+  // Step 2: each ray's checks, and its state into a lane.
+  PacketState y;
+  alignas(64) double h[PacketWidth] = {};
+  LaneMask lanes = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    double remaining = 0.0;
+    const bool stepping = l < count && rays[l]->BeginStep(remaining);
+    if (l < count)
+    {
+      advanced[l] = stepping;
+    }
+    for (int i = 0; i < 6; ++i)
+    {
+      // Lanes without a ray hold a finite filler (their copy of lane 0's state is never read).
+      y.Component(i)[l] = stepping ? rays[l]->State[i] : 0.0;
+    }
+    if (stepping)
+    {
+      h[l] = std::min(rays[l]->Settings.Step, remaining);
+      lanes |= LaneMask{ 1 } << l;
+    }
+  }
+  if (lanes == 0)
+  {
+    return;
+  }
+  // Step 3: one step of every lane, then each ray's state and checks back.
+  const LaneMask stepped = rays[0]->Settings.Integrator == IntegratorType::Euler
+    ? EulerPacketStep(metric, y, h, lanes)
+    : RungeKutta4PacketStep(metric, y, h, lanes);
+  for (int l = 0; l < count; ++l)
+  {
+    if (!HasLane(lanes, l))
+    {
+      continue;
+    }
+    for (int i = 0; i < 6; ++i)
+    {
+      rays[l]->State[i] = y.Component(i)[l];
+    }
+    advanced[l] = rays[l]->EndStep(
+      HasLane(stepped, l) ? IntegrationStep::Accepted : IntegrationStep::Degenerate, h[l]);
+  }
 }
 
 void RayMarcher::Hit(const SceneHit& hit)
@@ -125,6 +209,14 @@ void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec
       path.ArcLength.push_back(ray.Length());
     }
   }
+  FinishPath(ray, recordPath, path);
+}
+
+namespace
+{
+/// TraceRay's path from a ray that has ended (the points recorded as it went).
+void FinishPath(const RayMarcher& ray, bool recordPath, RayPath& path)
+{
   path.Hit = ray.IsHit();
   path.HitInfo = ray.HitInfo();
   path.Reason = ray.Reason();
@@ -135,6 +227,72 @@ void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec
   {
     path.Points.push_back(path.HitInfo.Position);
     path.ArcLength.push_back(path.Length);
+  }
+}
+} // namespace
+
+void TraceRays(const Metric& metric, const Scene& scene, const Vec3& p, const Vec3* v, int count,
+  const RaySettings& settings, RayPath* paths, bool recordPath, const MeshIntersector* meshes)
+{
+  for (int first = 0; first < count; first += PacketWidth)
+  {
+    // Step 1: a packet of rays started at p.
+    const int n = std::min(PacketWidth, count - first);
+    std::vector<RayMarcher> rays(static_cast<size_t>(n), RayMarcher(settings));
+    RayMarcher* live[PacketWidth];
+    int liveIndex[PacketWidth];
+    int liveCount = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      RayPath& path = paths[first + i];
+      path.Points.clear();
+      path.ArcLength.clear();
+      if (recordPath)
+      {
+        path.Points.push_back(p);
+        path.ArcLength.push_back(0.0);
+      }
+      rays[static_cast<size_t>(i)].Start(p, v[first + i]);
+      live[liveCount] = &rays[static_cast<size_t>(i)];
+      liveIndex[liveCount++] = i;
+    }
+    // Step 2: step the live rays together, intersect each segment, keep
+    // those that missed (TraceRay's loop, one lane per ray).
+    while (liveCount > 0)
+    {
+      bool advanced[PacketWidth];
+      AdvanceRayPacket(metric, live, liveCount, advanced);
+      int kept = 0;
+      for (int k = 0; k < liveCount; ++k)
+      {
+        RayMarcher& ray = *live[k];
+        RayPath& path = paths[first + liveIndex[k]];
+        if (!advanced[k])
+        {
+          continue;
+        }
+        SceneHit hit;
+        if (IntersectSceneSegment(scene, meshes, ray.SegmentStart(), ray.SegmentEnd(), hit))
+        {
+          ray.Hit(hit);
+          continue;
+        }
+        ray.Miss();
+        if (recordPath)
+        {
+          path.Points.push_back(ray.SegmentEnd());
+          path.ArcLength.push_back(ray.Length());
+        }
+        live[kept] = live[k];
+        liveIndex[kept++] = liveIndex[k];
+      }
+      liveCount = kept;
+    }
+    // Step 3: the ends.
+    for (int i = 0; i < n; ++i)
+    {
+      FinishPath(rays[static_cast<size_t>(i)], recordPath, paths[first + i]);
+    }
   }
 }
 } // namespace riemann

@@ -21,6 +21,7 @@
 #include "GeodesicTrace.h" // For TerminationReason
 #include "Integrators.h" // For GeodesicStepper
 #include "Metric.h"
+#include "PacketKernels.h" // For AdvanceRayPacket
 
 #include <vector>
 
@@ -41,6 +42,18 @@ struct RayPath
   int Reason = NotInitialized;
   int Steps = 0;
 };
+
+class RayMarcher;
+
+/**
+ * RayMarcher::Advance for up to PacketWidth rays at once through the packet
+ * engine (PacketKernels.h): the same rules, each ray's step in a SIMD lane;
+ * advanced[i] is what rays[i]->Advance(metric) would return. The rays'
+ * settings must be alike (one integrator and step); with dp45 (whose step
+ * control lives in each ray's stepper) every ray advances alone.
+ */
+RIEMANNRENDERINGCORE_EXPORT void AdvanceRayPacket(
+  const Metric& metric, RayMarcher* const* rays, int count, bool* advanced);
 
 /**
  * The rules of one ray, one step at a time, so that a tracer can advance many
@@ -93,6 +106,13 @@ public:
   const SceneHit& HitInfo() const { return this->LastHit; }
 
 private:
+  friend void AdvanceRayPacket(
+    const Metric& metric, RayMarcher* const* rays, int count, bool* advanced);
+  /// Advance's checks before a step: false (and Done) when the ray ends.
+  bool BeginStep(double& remaining);
+  /// Advance's checks after a step taken with `status`.
+  bool EndStep(IntegrationStep::Status status, double taken);
+
   RaySettings Settings;
   GeodesicStepper Stepper;
   Vec6 State;
@@ -117,6 +137,15 @@ class MeshIntersector;
 RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& scene,
   const Vec3& p, const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
   const MeshIntersector* meshes = nullptr);
+
+/**
+ * TraceRay for `count` rays from p with unit-speed velocities v[i] into
+ * paths[i], PacketWidth at a time through the packet engine
+ * (AdvanceRayPacket): the same paths, to rounding. Single-threaded.
+ */
+RIEMANNRENDERINGCORE_EXPORT void TraceRays(const Metric& metric, const Scene& scene,
+  const Vec3& p, const Vec3* v, int count, const RaySettings& settings, RayPath* paths,
+  bool recordPath = true, const MeshIntersector* meshes = nullptr);
 } // namespace riemann
 
 #endif

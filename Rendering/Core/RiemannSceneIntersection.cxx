@@ -13,7 +13,9 @@ namespace
 //------------------------------------------------------------------------------
 // Intersection kernels. Each tests the segment p(t) = a + t d, t in [0, 1],
 // and on a hit sets the fraction t and the normal. They are written to be
-// mirrored line by line in GLSL: no allocation, fixed small loops.
+// mirrored line by line in GLSL: no allocation, fixed small loops (the CPU
+// multiplies by 1 / d and 1 / spacing computed once per segment where the
+// shader divides: the same tests, cheaper).
 //------------------------------------------------------------------------------
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
@@ -32,9 +34,27 @@ Vec3 FacingNormal(const Vec3& d)
  * An axis with d == 0 constrains nothing if a is within its slab and rejects
  * otherwise (no division by zero).
  */
-bool SlabTest(const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi, double& enter,
-  double& exit, int& axis)
+/// The segment p(t) = A + t D with 1 / D precomputed: every slab test of a
+/// segment (the grid tests many bars) multiplies instead of dividing.
+struct Segment
 {
+  Vec3 A;
+  Vec3 D;
+  Vec3 InverseD;
+
+  Segment(const Vec3& a, const Vec3& d)
+    : A(a)
+    , D(d)
+    , InverseD(d.cwiseInverse())
+  {
+  }
+};
+
+bool SlabTest(const Segment& segment, const Vec3& lo, const Vec3& hi, double& enter, double& exit,
+  int& axis)
+{
+  const Vec3& a = segment.A;
+  const Vec3& d = segment.D;
   enter = -Infinity;
   exit = Infinity;
   axis = -1;
@@ -48,8 +68,8 @@ bool SlabTest(const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi, doub
       }
       continue;
     }
-    const double t0 = (lo[i] - a[i]) / d[i];
-    const double t1 = (hi[i] - a[i]) / d[i];
+    const double t0 = (lo[i] - a[i]) * segment.InverseD[i];
+    const double t1 = (hi[i] - a[i]) * segment.InverseD[i];
     const double tNear = std::min(t0, t1);
     const double tFar = std::max(t0, t1);
     if (tNear > enter)
@@ -67,12 +87,13 @@ bool SlabTest(const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi, doub
  * normal; otherwise the hit is the entry face, normal -sign(d_axis) e_axis.
  */
 bool IntersectBox(
-  const Vec3& a, const Vec3& d, const Vec3& lo, const Vec3& hi, double& fraction, Vec3& normal)
+  const Segment& segment, const Vec3& lo, const Vec3& hi, double& fraction, Vec3& normal)
 {
+  const Vec3& d = segment.D;
   double enter;
   double exit;
   int axis;
-  if (!SlabTest(a, d, lo, hi, enter, exit, axis))
+  if (!SlabTest(segment, lo, hi, enter, exit, axis))
   {
     return false;
   }
@@ -144,6 +165,27 @@ bool IntersectPlane(const Vec3& a, const Vec3& d, const Vec3& point, const Vec3&
 }
 
 /**
+ * False when no bar of a grid (spacing 1 / inverseS, half thickness h) can
+ * meet the segment: a bar along axis k lies at lattice coordinates in the
+ * two other axes, so the segment's bounding box grown by h must hold a
+ * lattice coordinate in two axes at least. Most ray-marching segments
+ * (much shorter than the spacing, between the bars) stop here. The test is
+ * IntersectGrid's candidate enumeration over the whole segment before any
+ * clipping, so it never rejects a hit.
+ */
+bool NearTwoLatticeLines(const Vec3& a, const Vec3& d, double h, double inverseS, double slack)
+{
+  int near = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double lo = std::min(a[axis], a[axis] + d[axis]);
+    const double hi = std::max(a[axis], a[axis] + d[axis]);
+    near += std::floor((hi + h) * inverseS + slack) >= std::ceil((lo - h) * inverseS - slack) ? 1 : 0;
+  }
+  return near >= 2;
+}
+
+/**
  * The grid of bars (the geometry is in RiemannScene.h). The segment is first
  * clipped to the grid's bounding box (the extent grown by h = thickness / 2)
  * and cut into pieces no longer than the spacing. For each piece in order and
@@ -159,10 +201,20 @@ bool IntersectPlane(const Vec3& a, const Vec3& d, const Vec3& point, const Vec3&
  * piece, 0 to 2 candidates per axis and direction.
  */
 bool IntersectGrid(
-  const SceneObject& grid, const Vec3& a, const Vec3& d, double& fraction, Vec3& normal)
+  const SceneObject& grid, const Segment& segment, double& fraction, Vec3& normal)
 {
+  const Vec3& a = segment.A;
+  const Vec3& d = segment.D;
   const double s = grid.Spacing;
+  // Lattice coordinates by multiplication: the 1e-9 slack below is far
+  // wider than the rounding this changes.
+  const double inverseS = 1.0 / s;
   const double h = 0.5 * grid.Thickness;
+  constexpr double slack = 1e-9;
+  if (!(s > 0) || !NearTwoLatticeLines(a, d, h, inverseS, slack))
+  {
+    return false;
+  }
   const Vec3 extentLo(grid.Extent[0], grid.Extent[2], grid.Extent[4]);
   const Vec3 extentHi(grid.Extent[1], grid.Extent[3], grid.Extent[5]);
   const Vec3 outerLo = extentLo - Vec3::Constant(h);
@@ -170,7 +222,7 @@ bool IntersectGrid(
   double enter;
   double exit;
   int enterAxis;
-  if (!(s > 0) || !SlabTest(a, d, outerLo, outerHi, enter, exit, enterAxis))
+  if (!SlabTest(segment, outerLo, outerHi, enter, exit, enterAxis))
   {
     return false;
   }
@@ -178,17 +230,16 @@ bool IntersectGrid(
   const double t1 = std::min(exit, 1.0);
 
   // Lattice lines inside the extent (as doubles: no integer overflow).
-  constexpr double slack = 1e-9;
   double firstLine[3];
   double lastLine[3];
   for (int axis = 0; axis < 3; ++axis)
   {
-    firstLine[axis] = std::ceil(extentLo[axis] / s - slack);
-    lastLine[axis] = std::floor(extentHi[axis] / s + slack);
+    firstLine[axis] = std::ceil(extentLo[axis] * inverseS - slack);
+    lastLine[axis] = std::floor(extentHi[axis] * inverseS + slack);
   }
 
   const double length = d.norm() * (t1 - t0);
-  const int pieces = static_cast<int>(std::clamp(std::ceil(length / s), 1.0, 65536.0));
+  const int pieces = static_cast<int>(std::clamp(std::ceil(length * inverseS), 1.0, 65536.0));
   bool found = false;
   double best = Infinity;
   for (int piece = 0; piece < pieces; ++piece)
@@ -203,10 +254,10 @@ bool IntersectGrid(
     {
       const int u = (k + 1) % 3;
       const int v = (k + 2) % 3;
-      const double i0 = std::max(firstLine[u], std::ceil((boxLo[u] - h) / s - slack));
-      const double i1 = std::min(lastLine[u], std::floor((boxHi[u] + h) / s + slack));
-      const double j0 = std::max(firstLine[v], std::ceil((boxLo[v] - h) / s - slack));
-      const double j1 = std::min(lastLine[v], std::floor((boxHi[v] + h) / s + slack));
+      const double i0 = std::max(firstLine[u], std::ceil((boxLo[u] - h) * inverseS - slack));
+      const double i1 = std::min(lastLine[u], std::floor((boxHi[u] + h) * inverseS + slack));
+      const double j0 = std::max(firstLine[v], std::ceil((boxLo[v] - h) * inverseS - slack));
+      const double j1 = std::min(lastLine[v], std::floor((boxHi[v] + h) * inverseS + slack));
       for (double i = i0; i <= i1; ++i)
       {
         for (double j = j0; j <= j1; ++j)
@@ -221,7 +272,7 @@ bool IntersectGrid(
           barHi[v] = j * s + h;
           double t;
           Vec3 n;
-          if (IntersectBox(a, d, barLo, barHi, t, n) && t < best)
+          if (IntersectBox(segment, barLo, barHi, t, n) && t < best)
           {
             found = true;
             best = t;
@@ -243,6 +294,7 @@ bool IntersectGrid(
 bool IntersectSegment(const Scene& scene, const Vec3& a, const Vec3& b, SceneHit& hit)
 {
   const Vec3 d = b - a;
+  const Segment segment(a, d);
   bool found = false;
   double best = Infinity;
   for (size_t index = 0; index < scene.Objects.size(); ++index)
@@ -254,7 +306,7 @@ bool IntersectSegment(const Scene& scene, const Vec3& a, const Vec3& b, SceneHit
     switch (object.Type)
     {
       case ObjectType::Grid:
-        hits = IntersectGrid(object, a, d, t, normal);
+        hits = IntersectGrid(object, segment, t, normal);
         break;
       case ObjectType::Sphere:
         hits = IntersectSphere(a, d, object.A, object.Radius, t, normal);
@@ -263,7 +315,7 @@ bool IntersectSegment(const Scene& scene, const Vec3& a, const Vec3& b, SceneHit
         hits = IntersectPlane(a, d, object.A, object.B, t, normal);
         break;
       case ObjectType::Box:
-        hits = IntersectBox(a, d, object.A, object.B, t, normal);
+        hits = IntersectBox(segment, object.A, object.B, t, normal);
         break;
       case ObjectType::Mesh:
         // Intersected by the CPU tracer (Embree), not here.
