@@ -50,16 +50,6 @@ bool UnitSpeedVelocity(const Metric& metric, const Vec3& p, const Vec3& directio
   return true;
 }
 
-namespace
-{
-bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
-{
-  return !options.UseBounds ||
-    (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
-      x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
-}
-}
-
 void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
   const GeodesicOptions& options, GeodesicPath& path, bool backward)
 {

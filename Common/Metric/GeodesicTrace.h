@@ -51,6 +51,14 @@ struct GeodesicOptions
   bool RecordSpeedDrift = true;
 };
 
+/// x within options.Bounds, or true when !options.UseBounds.
+inline bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
+{
+  return !options.UseBounds ||
+    (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
+      x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
+}
+
 /**
  * The sampled geodesic. ArcLength is the signed Riemannian arc length from
  * the seed (negative for a backward geodesic, as vtkStreamTracer's

@@ -178,13 +178,6 @@ LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
 
 namespace
 {
-bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
-{
-  return !options.UseBounds ||
-    (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
-      x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
-}
-
 /// One lane's geodesic: TraceGeodesic's local variables.
 struct LaneTrace
 {

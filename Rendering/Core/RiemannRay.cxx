@@ -10,6 +10,7 @@ namespace riemann
 {
 namespace
 {
+void StartPath(const Vec3& p, bool recordPath, RayPath& path);
 void FinishPath(const RayMarcher& ray, bool recordPath, RayPath& path);
 }
 
@@ -185,13 +186,7 @@ Vec3 RayMarcher::Velocity() const
 void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec3& v,
   const RaySettings& settings, RayPath& path, bool recordPath, const MeshIntersector* meshes)
 {
-  path.Points.clear();
-  path.ArcLength.clear();
-  if (recordPath)
-  {
-    path.Points.push_back(p);
-    path.ArcLength.push_back(0.0);
-  }
+  StartPath(p, recordPath, path);
   RayMarcher ray(settings);
   ray.Start(p, v);
   while (ray.Advance(metric))
@@ -214,6 +209,18 @@ void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p, const Vec
 
 namespace
 {
+/// An empty path, or the start point alone when the path is recorded.
+void StartPath(const Vec3& p, bool recordPath, RayPath& path)
+{
+  path.Points.clear();
+  path.ArcLength.clear();
+  if (recordPath)
+  {
+    path.Points.push_back(p);
+    path.ArcLength.push_back(0.0);
+  }
+}
+
 /// TraceRay's path from a ray that has ended (the points recorded as it went).
 void FinishPath(const RayMarcher& ray, bool recordPath, RayPath& path)
 {
@@ -244,14 +251,7 @@ void TraceRays(const Metric& metric, const Scene& scene, const Vec3& p, const Ve
     int liveCount = 0;
     for (int i = 0; i < n; ++i)
     {
-      RayPath& path = paths[first + i];
-      path.Points.clear();
-      path.ArcLength.clear();
-      if (recordPath)
-      {
-        path.Points.push_back(p);
-        path.ArcLength.push_back(0.0);
-      }
+      StartPath(p, recordPath, paths[first + i]);
       rays[static_cast<size_t>(i)].Start(p, v[first + i]);
       live[liveCount] = &rays[static_cast<size_t>(i)];
       liveIndex[liveCount++] = i;

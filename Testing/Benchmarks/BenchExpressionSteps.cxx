@@ -54,15 +54,22 @@ std::string Definition(bool typed)
   return s.str() + "]}";
 }
 
-/// 16 geodesics of 1000 RK4 steps each (step 0.01) through the bumps.
-void TraceBundle(benchmark::State& state, bool typed)
+/// RK4, step 0.01, length 10, no drift: 1000 steps per geodesic.
+riemann::GeodesicOptions BundleOptions()
 {
-  const auto metric = riemann::ParseMetricDefinition(Definition(typed));
   riemann::GeodesicOptions options;
   options.Integrator = riemann::IntegratorType::RungeKutta4;
   options.Step = 0.01;
   options.MaximumLength = 10.0;
   options.RecordSpeedDrift = false;
+  return options;
+}
+
+/// 16 geodesics of 1000 RK4 steps each (step 0.01) through the bumps.
+void TraceBundle(benchmark::State& state, bool typed)
+{
+  const auto metric = riemann::ParseMetricDefinition(Definition(typed));
+  const riemann::GeodesicOptions options = BundleOptions();
   riemann::GeodesicPath path;
   path.Points.reserve(1100);
   path.Velocities.reserve(1100);
@@ -99,11 +106,7 @@ BENCHMARK(BM_EightGaussiansTyped)->Unit(benchmark::kMillisecond);
 void TracePacketBundle(benchmark::State& state, bool typed)
 {
   const auto metric = riemann::ParseMetricDefinition(Definition(typed));
-  riemann::GeodesicOptions options;
-  options.Integrator = riemann::IntegratorType::RungeKutta4;
-  options.Step = 0.01;
-  options.MaximumLength = 10.0;
-  options.RecordSpeedDrift = false;
+  const riemann::GeodesicOptions options = BundleOptions();
   std::vector<riemann::GeodesicSeed> seeds(16);
   for (int k = 0; k < 16; ++k)
   {
