@@ -180,8 +180,9 @@ class StartupTests(unittest.TestCase):
         names = "\n".join(libraries)
         for heavy in ("libOpenImageIO", "libvtkRenderingOpenGL2", "libembree", "libRiemannRendering"):
             self.assertNotIn(heavy, names)
-        # About 35 today (310 when render was linked in): a margin, not a timing.
-        self.assertLess(len(libraries), 60, names)
+        # 35 in the GCC build, 84 in the Clang sanitizer build (no --as-needed
+        # by default), 310 when render was linked in: a margin, not a timing.
+        self.assertLess(len(libraries), 150, names)
 
     def test_render_help_comes_from_riemann_render(self):
         status, out, err = run("render", "--help")
