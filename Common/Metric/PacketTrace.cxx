@@ -184,6 +184,8 @@ struct LaneTrace
   GeodesicPath* Path = nullptr;
   double Sign = 1.0;
   double Speed = 1.0;
+  /// Sign / Speed: dx/ds of the forward parametrisation from the state's v.
+  double VelocityScale = 1.0;
   double InitialSquaredSpeed = 1.0;
   double ParameterEnd = 0.0;
   double Arrival = 0.0;
@@ -193,7 +195,7 @@ struct LaneTrace
   void Record(const Vec6& y, double drift) const
   {
     this->Path->Points.push_back(y.head<3>());
-    this->Path->Velocities.push_back(y.tail<3>() * (this->Sign / this->Speed));
+    this->Path->Velocities.push_back(y.tail<3>() * this->VelocityScale);
     this->Path->ArcLength.push_back(this->Sign * this->Speed * this->Tau);
     this->Path->SpeedDrift.push_back(drift);
   }
@@ -274,6 +276,7 @@ private:
     lane.Path = &path;
     lane.Sign = seed.Backward ? -1.0 : 1.0;
     lane.Speed = std::sqrt(initialSquaredSpeed);
+    lane.VelocityScale = lane.Sign / lane.Speed;
     lane.InitialSquaredSpeed = initialSquaredSpeed;
     // Work in the curve parameter tau (arc length = speed * tau).
     lane.ParameterEnd = this->Options.MaximumLength / lane.Speed;
@@ -352,12 +355,14 @@ private:
       {
         this->EndLane(l, status[l] == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric);
       }
-      else if (!StateLane(this->State, l).allFinite())
-      {
-        this->EndLane(l, UnexpectedValue);
-      }
       else
       {
+        this->Stepped[l] = StateLane(this->State, l);
+        if (!this->Stepped[l].allFinite())
+        {
+          this->EndLane(l, UnexpectedValue);
+          continue;
+        }
         this->Lanes[l].Tau += taken[l];
         ++this->Lanes[l].Steps;
         stepped |= Bit(l);
@@ -382,7 +387,7 @@ private:
       {
         continue;
       }
-      const Vec6 y = StateLane(this->State, l);
+      const Vec6& y = this->Stepped[l];
       double drift = 0.0;
       if (this->Options.RecordSpeedDrift)
       {
@@ -414,6 +419,8 @@ private:
   PacketStepper Stepper;
   PacketState State;
   LaneTrace Lanes[PacketWidth];
+  /// The state of each lane after its last step (StepAndRecord -> RecordStepped).
+  Vec6 Stepped[PacketWidth];
   alignas(64) double Remaining[PacketWidth] = {};
   LaneMask Active = 0;
   std::size_t Next = 0;

@@ -211,7 +211,7 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
       riemann::TraceGeodesics(
         metric, packetSeeds.data(), packetSeeds.size(), options, traces.Paths.data() + first);
     },
-    jacobian ? 0 : 8 * riemann::PacketWidth);
+    jacobian ? 0 : 4 * riemann::PacketWidth);
   return traces;
 }
 
