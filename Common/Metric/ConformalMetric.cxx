@@ -101,6 +101,14 @@ LaneMask ConformalMetric::AccelerationPacket(
   return ConformalAccelerationFromJet(n, v, a) & lanes;
 }
 
+LaneMask ConformalMetric::JacobiAccelerationPacket(
+  const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const
+{
+  PacketScalarJet n;
+  this->Index->EvaluatePacket(y.X, SecondDerivatives, n, lanes);
+  return ConformalJacobiAccelerationsFromJet(n, y, dy) & lanes;
+}
+
 LaneMask ConformalMetric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
 {
   // g = n^2 I.

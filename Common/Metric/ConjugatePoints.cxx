@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace riemann
 {
@@ -312,6 +313,52 @@ private:
   /// Every phase crossing found, in order of arc length.
   std::vector<JacobiSample> Crossings;
 };
+
+/// One ConjugateSearch per lane of the packet Jacobi trace.
+class PacketSearch : public JacobiVisitor
+{
+public:
+  PacketSearch(const Metric& metric, double tolerance, int maximumCount,
+    std::vector<ConjugatePoint>* found)
+    : M(metric)
+    , Tolerance(tolerance)
+    , MaximumCount(maximumCount)
+    , Found(found)
+  {
+  }
+  void Start(int lane, std::size_t) override
+  {
+    this->Searches[lane].emplace(this->M, this->Tolerance, this->MaximumCount);
+  }
+  bool Visit(int lane, std::size_t, const JacobiSample& sample) override
+  {
+    return this->Searches[lane]->Visit(sample);
+  }
+  void End(int lane, std::size_t trace, int) override
+  {
+    this->Found[trace] = this->Searches[lane]->Points();
+    this->Searches[lane].reset();
+  }
+
+private:
+  const Metric& M;
+  double Tolerance;
+  int MaximumCount;
+  std::vector<ConjugatePoint>* Found;
+  std::optional<ConjugateSearch> Searches[PacketWidth];
+};
+
+/// The options the search integrates with: dp45's tolerance follows the search's.
+GeodesicOptions SearchOptions(const GeodesicOptions& options, double tolerance)
+{
+  GeodesicOptions searchOptions = options;
+  if (searchOptions.Integrator == IntegratorType::DormandPrince45)
+  {
+    searchOptions.Tolerance =
+      std::min(searchOptions.Tolerance, ConjugateIntegrationTolerance(tolerance));
+  }
+  return searchOptions;
+}
 } // namespace
 
 double ConjugateIntegrationTolerance(double tolerance)
@@ -323,16 +370,27 @@ std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3
   const Vec3& direction, const GeodesicOptions& options, double tolerance, int maximumCount)
 {
   tolerance = std::max(tolerance, 1e-14);
-  GeodesicOptions searchOptions = options;
-  if (searchOptions.Integrator == IntegratorType::DormandPrince45)
-  {
-    searchOptions.Tolerance =
-      std::min(searchOptions.Tolerance, ConjugateIntegrationTolerance(tolerance));
-  }
   ConjugateSearch search(metric, tolerance, maximumCount);
-  TraceJacobiFields(metric, p, direction, searchOptions, false, {}, true,
+  TraceJacobiFields(metric, p, direction, SearchOptions(options, tolerance), false, {}, true,
     [&search](const JacobiSample& sample) { return search.Visit(sample); });
   return search.Points();
+}
+
+void FindConjugatePoints(const Metric& metric, const Vec3& p, const Vec3* directions,
+  std::size_t count, const GeodesicOptions& options, double tolerance, int maximumCount,
+  std::vector<ConjugatePoint>* found)
+{
+  tolerance = std::max(tolerance, 1e-14);
+  std::vector<JacobiSeed> seeds(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    seeds[i].Point = p;
+    seeds[i].Direction = directions[i];
+    found[i].clear();
+  }
+  PacketSearch search(metric, tolerance, maximumCount, found);
+  TraceJacobiFields(
+    metric, seeds.data(), count, SearchOptions(options, tolerance), {}, true, search);
 }
 
 std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric, const Vec3& p,

@@ -37,6 +37,7 @@
 
 #include "JacobiField.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace riemann
@@ -81,6 +82,17 @@ RIEMANNCOMMONMETRIC_EXPORT double ConjugateIntegrationTolerance(double tolerance
 RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
   const Vec3& p, const Vec3& direction, const GeodesicOptions& options, double tolerance,
   int maximumCount);
+
+/**
+ * FindConjugatePoints from p in each of directions[0, count) into
+ * found[0, count), on the packet engine (the packet TraceJacobiFields of
+ * JacobiField.h, PacketWidth directions in lock step): the same points as
+ * the one-direction form, to rounding. Single-threaded; callers split the
+ * directions across threads.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void FindConjugatePoints(const Metric& metric, const Vec3& p,
+  const Vec3* directions, std::size_t count, const GeodesicOptions& options, double tolerance,
+  int maximumCount, std::vector<ConjugatePoint>* found);
 
 /// FindConjugatePoints with fixed-step RK4 of `step` up to `length`.
 RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,

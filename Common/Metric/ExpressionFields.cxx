@@ -147,23 +147,28 @@ void ExpressionScalarField::Accumulate(const Vec3& p, int order, ScalarJet& jet)
 }
 
 void ExpressionScalarField::AccumulatePacket(
-  const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask /*lanes*/) const
+  const PacketVec3& p, int order, PacketScalarJet& jet, LaneMask lanes) const
 {
   const CompiledExpressions& c = *this->Compiled;
-  order = std::min(order, static_cast<int>(SecondDerivatives));
+  if (order > c.GetOrder())
+  {
+    // Not compiled that far: the scalar path (which says what it can do).
+    ScalarField::AccumulatePacket(p, order, jet, lanes);
+    return;
+  }
   // One source compiled to third order: 20 outputs (OutputsPerSource(3)),
   // of which those up to `order` are written.
   alignas(64) double out[20 * PacketWidth];
   c.EvaluatePacket(p, this->Inputs.Time, this->Inputs.ParameterValues.data(), out,
     std::min(order, c.GetOrder()));
-  auto lanes = [&](int index) { return out + index * PacketWidth; };
+  auto outputLanes = [&](int index) { return out + index * PacketWidth; };
   for (int l = 0; l < PacketWidth; ++l)
   {
-    jet.Value[l] += lanes(c.OutputIndex(0, 0))[l];
+    jet.Value[l] += outputLanes(c.OutputIndex(0, 0))[l];
   }
   for (int i = 0; i < 3 && order >= FirstDerivatives; ++i)
   {
-    const double* gradient = lanes(c.OutputIndex(0, 1, i));
+    const double* gradient = outputLanes(c.OutputIndex(0, 1, i));
     for (int l = 0; l < PacketWidth; ++l)
     {
       jet.Gradient[i][l] += gradient[l];
@@ -175,10 +180,22 @@ void ExpressionScalarField::AccumulatePacket(
     const int columns[6] = { 0, 1, 2, 1, 2, 2 }; // XX YY ZZ XY XZ YZ
     for (int e = 0; e < 6; ++e)
     {
-      const double* entry = lanes(c.OutputIndex(0, 2, rows[e], columns[e]));
+      const double* entry = outputLanes(c.OutputIndex(0, 2, rows[e], columns[e]));
       for (int l = 0; l < PacketWidth; ++l)
       {
         jet.Hessian.C[e][l] += entry[l];
+      }
+    }
+  }
+  if (order >= ThirdDerivatives)
+  {
+    for (int e = 0; e < 10; ++e)
+    {
+      const int(&i)[3] = ThirdEntryIndices[e];
+      const double* entry = outputLanes(c.OutputIndex(0, 3, i[0], i[1], i[2]));
+      for (int l = 0; l < PacketWidth; ++l)
+      {
+        jet.Third[e][l] += entry[l];
       }
     }
   }

@@ -96,6 +96,14 @@ LaneMask GraphMetric::AccelerationPacket(
   return GraphAccelerationFromJet(f, v, a) & lanes;
 }
 
+LaneMask GraphMetric::JacobiAccelerationPacket(
+  const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const
+{
+  PacketScalarJet f;
+  this->Field->EvaluatePacket(y.X, ThirdDerivatives, f, lanes);
+  return GraphJacobiAccelerationsFromJet(f, y, dy) & lanes;
+}
+
 LaneMask GraphMetric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
 {
   // g = I + grad f grad f^T.

@@ -1,4 +1,5 @@
 #include "JacobiField.h"
+#include "JacobiFieldInternals.h"
 
 #include "Curvature.h"
 #include "RungeKutta.h"
@@ -18,39 +19,19 @@ namespace riemann
 {
 namespace
 {
-/// (x, v, X_0, V_0, X_1, V_1).
-using Vec18 = Eigen::Matrix<double, 18, 1>;
-
 /// The geodesic flow and its linearisation at y.
 bool JacobiFlow(const Metric& metric, const Vec18& y, Vec18& dy)
 {
-  Mat3 g;
-  Mat3 ginv;
-  Mat3Stack gamma;
-  std::array<Mat3Stack, 3> dGamma;
-  const Vec3 x = y.segment<3>(0);
-  const Vec3 v = y.segment<3>(3);
-  if (!ChristoffelAndDerivatives(metric, x, g, ginv, gamma, dGamma))
+  const Vec3 fields[2] = { y.segment<3>(6), y.segment<3>(12) };
+  const Vec3 derivatives[2] = { y.segment<3>(9), y.segment<3>(15) };
+  Vec3 a;
+  Vec3 variations[2];
+  if (!JacobiAccelerations(metric, y.segment<3>(0), y.segment<3>(3), fields, derivatives, a,
+        variations))
   {
     return false;
   }
-  dy.segment<3>(0) = v;
-  for (int m = 0; m < 3; ++m)
-  {
-    dy[3 + m] = -v.dot(gamma[m] * v);
-  }
-  for (int a = 0; a < 2; ++a)
-  {
-    const Vec3 bigX = y.segment<3>(6 + 6 * a);
-    const Vec3 bigV = y.segment<3>(9 + 6 * a);
-    dy.segment<3>(6 + 6 * a) = bigV;
-    for (int m = 0; m < 3; ++m)
-    {
-      // (d_X Gamma)^m_ij v^i v^j + 2 Gamma^m_ij v^i V^j (Gamma symmetric).
-      const Mat3 dX = bigX[0] * dGamma[0][m] + bigX[1] * dGamma[1][m] + bigX[2] * dGamma[2][m];
-      dy[9 + 6 * a + m] = -v.dot(dX * v) - 2.0 * v.dot(gamma[m] * bigV);
-    }
-  }
+  dy << y.segment<3>(3), a, derivatives[0], variations[0], derivatives[1], variations[1];
   return dy.allFinite();
 }
 
@@ -153,6 +134,17 @@ bool MaslovPhases(
   return std::isfinite(sample.Phases[0]) && std::isfinite(sample.Phases[1]);
 }
 
+Vec18 StateOf(const JacobiSample& sample)
+{
+  Vec18 y;
+  y << sample.Point, sample.Velocity, sample.J[0], sample.DJ[0], sample.J[1], sample.DJ[1];
+  return y;
+}
+
+} // namespace
+
+namespace jacobi_detail
+{
 /// The sample of state y at arc length s; with `withPhases`, its Maslov phases too.
 bool FillSample(
   const Metric& metric, double s, const Vec18& y, JacobiSample& sample, bool withPhases)
@@ -200,18 +192,12 @@ bool FillSample(
     (!withPhases || MaslovPhases(metric, g, e0, e1, sample));
 }
 
-Vec18 StateOf(const JacobiSample& sample)
-{
-  Vec18 y;
-  y << sample.Point, sample.Velocity, sample.J[0], sample.DJ[0], sample.J[1], sample.DJ[1];
-  return y;
-}
-
 /// TraceJacobiFields' first step: the state (x, v, J0, J0', J1, J1') at the
 /// seed: v the unit-speed direction, J = 0 and J' an orthonormal transverse
 /// frame. False, with `reason` DegenerateMetric, where g is not a metric
 /// (`reason` unchanged for a zero direction).
-bool InitialState(const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
+bool InitialState(
+  const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
 {
   Mat3 g;
   if (!metric.Tensor(p, g))
@@ -249,7 +235,34 @@ std::vector<double> LandingStops(const std::vector<double>& landings, double len
   std::sort(stops.begin(), stops.end());
   return stops;
 }
-} // namespace
+} // namespace jacobi_detail
+
+bool JacobiAccelerations(const Metric& metric, const Vec3& x, const Vec3& v, const Vec3 (&j)[2],
+  const Vec3 (&dj)[2], Vec3& a, Vec3 (&variations)[2])
+{
+  Mat3 g;
+  Mat3 ginv;
+  Mat3Stack gamma;
+  std::array<Mat3Stack, 3> dGamma;
+  if (!ChristoffelAndDerivatives(metric, x, g, ginv, gamma, dGamma))
+  {
+    return false;
+  }
+  for (int m = 0; m < 3; ++m)
+  {
+    a[m] = -v.dot(gamma[m] * v);
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int m = 0; m < 3; ++m)
+    {
+      // (d_X Gamma)^m_ij v^i v^j + 2 Gamma^m_ij v^i V^j (Gamma symmetric).
+      const Mat3 dX = j[k][0] * dGamma[0][m] + j[k][1] * dGamma[1][m] + j[k][2] * dGamma[2][m];
+      variations[k][m] = -v.dot(dX * v) - 2.0 * v.dot(gamma[m] * dj[k]);
+    }
+  }
+  return a.allFinite() && variations[0].allFinite() && variations[1].allFinite();
+}
 
 int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
   const GeodesicOptions& options, bool backward, const std::vector<double>& landings,
@@ -262,7 +275,7 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   }
   Vec18 y;
   int reason = NotInitialized;
-  if (!InitialState(metric, p, backward ? Vec3(-direction) : direction, y, reason))
+  if (!jacobi_detail::InitialState(metric, p, backward ? Vec3(-direction) : direction, y, reason))
   {
     return reason;
   }
@@ -271,7 +284,7 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   double s = 0.0;
   constexpr int stoppedByVisitor = 0;
   // The sample at s; false when g is degenerate there.
-  const auto fill = [&]() -> bool { return FillSample(metric, sign * s, y, sample, withPhases); };
+  const auto fill = [&]() -> bool { return jacobi_detail::FillSample(metric, sign * s, y, sample, withPhases); };
   if (fill() && !visit(sample))
   {
     return stoppedByVisitor;
@@ -287,7 +300,7 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
     return OutOfDomain;
   }
 
-  const std::vector<double> stops = LandingStops(landings, options.MaximumLength);
+  const std::vector<double> stops = jacobi_detail::LandingStops(landings, options.MaximumLength);
   std::size_t nextStop = 0;
 
   FlowStepper<Vec18> stepper(options.Integrator, options.Step, options.Tolerance,
@@ -373,7 +386,7 @@ bool ContinueJacobiFields(const Metric& metric, const JacobiSample& from, double
       }
     }
   }
-  return FillSample(metric, s, y, sample, withPhases);
+  return jacobi_detail::FillSample(metric, s, y, sample, withPhases);
 }
 
 bool TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction, double step,

@@ -53,6 +53,7 @@
 #include "GeodesicTrace.h"
 #include "Metric.h"
 
+#include <cstddef>
 #include <functional>
 #include <vector>
 
@@ -81,6 +82,15 @@ struct JacobiSample
   /// g(v, v) - 1 (the seed velocity is g-unit): monitors the integration error.
   double SpeedDrift = 0.0;
 };
+
+/**
+ * The Jacobi system's accelerations at x with velocity v and the variations
+ * (j[k], dj[k]): a = -Gamma(v, v) and variations[k] = -(d_{j[k]} Gamma)(v, v)
+ * - 2 Gamma(v, dj[k]), from ChristoffelAndDerivatives. False where the metric
+ * refuses second derivatives, is degenerate, or a value is not finite.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool JacobiAccelerations(const Metric& metric, const Vec3& x,
+  const Vec3& v, const Vec3 (&j)[2], const Vec3 (&dj)[2], Vec3& a, Vec3 (&variations)[2]);
 
 /// A geodesic with its Jacobi fields, sampled at every step (and at s = 0).
 struct JacobiTrace
@@ -128,6 +138,59 @@ RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec
 RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(const Metric& metric,
   const JacobiSample& from, double s, int subSteps, JacobiSample& sample,
   bool withPhases = false);
+
+/// Where a trace of TraceJacobiFields' packet form starts: its p, direction and backward.
+struct JacobiSeed
+{
+  Vec3 Point = Vec3::Zero();
+  Vec3 Direction = Vec3::Zero();
+  bool Backward = false;
+};
+
+/**
+ * @class JacobiVisitor
+ * @brief What the packet form of TraceJacobiFields hands its samples to.
+ * Each trace runs on one lane of the packet from Start to End; lanes are
+ * reused, so a visitor that keeps state per trace may keep it per lane.
+ * Calls come from the thread that runs TraceJacobiFields.
+ */
+class RIEMANNCOMMONMETRIC_EXPORT JacobiVisitor
+{
+public:
+  virtual ~JacobiVisitor() = default;
+  /// Trace `trace` (seeds[trace]) starts on lane `lane`.
+  virtual void Start(int lane, std::size_t trace)
+  {
+    (void)lane;
+    (void)trace;
+  }
+  /// Its next sample (s = 0 first); false stops it.
+  virtual bool Visit(int lane, std::size_t trace, const JacobiSample& sample) = 0;
+  /// It ended: its TerminationReason, or 0 when Visit stopped it.
+  virtual void End(int lane, std::size_t trace, int reason)
+  {
+    (void)lane;
+    (void)trace;
+    (void)reason;
+  }
+};
+
+/**
+ * TraceJacobiFields (the visitor form above) for seeds[0, count),
+ * PacketWidth at a time on the packet engine (PacketTrace.h): the Jacobi
+ * system of every lane steps in lock step, each lane with its own step
+ * control and stopping rules, and a finished lane takes the next seed. The
+ * samples and reasons equal the scalar form's to rounding. Single-threaded;
+ * callers split their seeds across threads.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
+  std::size_t count, const GeodesicOptions& options, const std::vector<double>& landings,
+  bool withPhases, JacobiVisitor& visitor);
+
+/// The packet form into traces[0, count) (every sample kept, no phases).
+RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
+  std::size_t count, const GeodesicOptions& options, JacobiTrace* traces,
+  const std::vector<double>& landings = {});
 
 /**
  * The fixed-step RK4 shorthand: trace with step `step` up to `length` (the

@@ -1,6 +1,7 @@
 #include "Metric.h"
 
 #include "Christoffel.h"
+#include "JacobiField.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -35,6 +36,34 @@ LaneMask Metric::AccelerationPacket(
       defined |= LaneMask{ 1 } << l;
     }
     a.SetLane(l, lane);
+  }
+  return defined;
+}
+
+LaneMask Metric::JacobiAccelerationPacket(
+  const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const
+{
+  LaneMask defined = 0;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    Vec3 a = Vec3::Zero();
+    Vec3 variations[2] = { Vec3::Zero(), Vec3::Zero() };
+    const Vec3 j[2] = { y.J[0].Lane(l), y.J[1].Lane(l) };
+    const Vec3 dj[2] = { y.DJ[0].Lane(l), y.DJ[1].Lane(l) };
+    if (HasLane(lanes, l) &&
+      JacobiAccelerations(*this, y.X.Lane(l), y.V.Lane(l), j, dj, a, variations))
+    {
+      defined |= LaneMask{ 1 } << l;
+    }
+    else
+    {
+      a.setZero();
+      variations[0].setZero();
+      variations[1].setZero();
+    }
+    dy.V.SetLane(l, a);
+    dy.DJ[0].SetLane(l, variations[0]);
+    dy.DJ[1].SetLane(l, variations[1]);
   }
   return defined;
 }

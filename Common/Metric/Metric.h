@@ -64,6 +64,18 @@ public:
    */
   virtual LaneMask AccelerationPacket(
     const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const;
+  /**
+   * The Jacobi system's accelerations of PacketWidth geodesics with their
+   * two variations (JacobiField.h): dy.V = a = -Gamma(v, v) and, for each
+   * variation (y.J[k], y.DJ[k]), dy.DJ[k] = -(d_J Gamma)(v, v)
+   * - 2 Gamma(v, DJ), the linearisation of a. Only dy.V and dy.DJ are
+   * written. Returns the lanes of `lanes` where all are defined and finite.
+   * The default computes them lane by lane from ChristoffelAndDerivatives
+   * (Curvature.h); the graph and conformal families override it with SIMD
+   * kernels on their providers' packet jets.
+   */
+  virtual LaneMask JacobiAccelerationPacket(
+    const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const;
   /// g at PacketWidth points; the default calls Tensor() lane by lane.
   virtual LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const;
   /// g^ij at p. The default inverts Tensor() by Cholesky.

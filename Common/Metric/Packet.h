@@ -81,30 +81,94 @@ struct alignas(64) PacketSym3
   }
 };
 
+/// The 10 distinct third derivatives d_i d_j d_k f, indices sorted.
+enum ThirdEntry : int
+{
+  XXX = 0,
+  YYY = 1,
+  ZZZ = 2,
+  XXY = 3,
+  XXZ = 4,
+  XYY = 5,
+  XYZ = 6,
+  XZZ = 7,
+  YYZ = 8,
+  YZZ = 9
+};
+
 /**
- * Value, gradient and Hessian of a scalar field at W points (what the
- * geodesic flow needs: no third derivatives, which only curvature reads and
- * the scalar ScalarJet keeps).
+ * Value and derivatives of a scalar field at W points. The geodesic flow
+ * reads up to the Hessian; the Jacobi system of the graph family also reads
+ * the third derivatives (Third[e][l], e a ThirdEntry), which are filled only
+ * when ThirdDerivatives is asked for.
  */
 struct alignas(64) PacketScalarJet
 {
   double Value[PacketWidth];
   double Gradient[3][PacketWidth];
   PacketSym3 Hessian;
+  double Third[10][PacketWidth];
 
-  /// Zero every entry up to and including `order` (at most SecondDerivatives).
+  /// Zero every entry up to and including `order`.
   void SetZero(int order);
 };
+
+/// The indices (i, j, k) of each ThirdEntry, i <= j <= k.
+constexpr int ThirdEntryIndices[10][3] = { { 0, 0, 0 }, { 1, 1, 1 }, { 2, 2, 2 }, { 0, 0, 1 },
+  { 0, 0, 2 }, { 0, 1, 1 }, { 0, 1, 2 }, { 0, 2, 2 }, { 1, 1, 2 }, { 1, 2, 2 } };
 
 /// The geodesic flow's state (x, v) of W geodesics.
 struct alignas(64) PacketState
 {
+  /// Components per lane.
+  static constexpr int Size = 6;
   PacketVec3 X;
   PacketVec3 V;
 
   /// Component i of (x, v), i in [0, 6): the integrators' view.
   double* Component(int i) { return i < 3 ? this->X.C[i] : this->V.C[i - 3]; }
   const double* Component(int i) const { return i < 3 ? this->X.C[i] : this->V.C[i - 3]; }
+};
+
+/**
+ * The Jacobi system's state of W geodesics (JacobiField.h): x, v and the
+ * two variations (J_a, DJ_a), in the order of the scalar 18-vector
+ * (x, v, J_0, DJ_0, J_1, DJ_1).
+ */
+struct alignas(64) PacketJacobiState
+{
+  static constexpr int Size = 18;
+  PacketVec3 X;
+  PacketVec3 V;
+  PacketVec3 J[2];
+  PacketVec3 DJ[2];
+
+  /// Component i in [0, 18) of (x, v, J_0, DJ_0, J_1, DJ_1).
+  double* Component(int i) { return this->Vector(i / 3).C[i % 3]; }
+  const double* Component(int i) const
+  {
+    return const_cast<PacketJacobiState*>(this)->Vector(i / 3).C[i % 3];
+  }
+
+private:
+  PacketVec3& Vector(int block)
+  {
+    switch (block)
+    {
+      case 0:
+        return this->X;
+      case 1:
+        return this->V;
+      case 2:
+        return this->J[0];
+      case 3:
+        return this->DJ[0];
+      case 4:
+        return this->J[1];
+      default:
+        return this->DJ[1];
+    }
+  }
 };
 
 inline void PacketScalarJet::SetZero(int order)
@@ -126,6 +190,16 @@ inline void PacketScalarJet::SetZero(int order)
   if (order >= SecondDerivatives)
   {
     for (auto& entry : this->Hessian.C)
+    {
+      for (double& value : entry)
+      {
+        value = 0.0;
+      }
+    }
+  }
+  if (order >= ThirdDerivatives)
+  {
+    for (auto& entry : this->Third)
     {
       for (double& value : entry)
       {

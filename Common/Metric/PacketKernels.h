@@ -43,8 +43,8 @@ struct RIEMANNCOMMONMETRIC_EXPORT GaussianTerms
 RIEMANNCOMMONMETRIC_EXPORT std::string PacketTargetName();
 
 /**
- * Add the value, and the derivatives up to `order` (at most
- * SecondDerivatives), of the sum of `terms` at the W points `p` to `jet`:
+ * Add the value, and the derivatives up to `order` (up to
+ * ThirdDerivatives), of the sum of `terms` at the W points `p` to `jet`:
  * the formulas of GaussianField::Accumulate, every lane at once.
  */
 RIEMANNCOMMONMETRIC_EXPORT void AccumulateGaussianTerms(
@@ -99,17 +99,57 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask RungeKutta4PacketStep(
  * shrink at most 5x, safety 0.9) and on rejection. Returns the lanes where
  * every stage was defined; error is +inf on the others.
  */
-struct PacketAttempt
+template <class State>
+struct BasicPacketAttempt
 {
-  PacketState Next;
-  PacketState Derivative;
+  State Next;
+  State Derivative;
   alignas(64) double Error[PacketWidth];
   alignas(64) double AcceptFactor[PacketWidth];
   alignas(64) double RejectFactor[PacketWidth];
 };
+using PacketAttempt = BasicPacketAttempt<PacketState>;
+using PacketJacobiAttempt = BasicPacketAttempt<PacketJacobiState>;
 RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& metric,
   const PacketState& y, const PacketState& k1, const double* step, double tolerance,
   LaneMask lanes, PacketAttempt& attempt);
+
+// --- The Jacobi system (JacobiField.h) on packets ----------------------------
+
+/**
+ * The graph family's Jacobi accelerations from the jet of f to third order:
+ * dy.V = a = -grad f (v^T H v) / (1 + |grad f|^2) and dy.DJ[k] = its
+ * linearisation along (J_k, DJ_k) of y, i.e.
+ * -(d_{J_k} Gamma)(v, v) - 2 Gamma(v, DJ_k). Returns the lanes where all
+ * are finite.
+ */
+RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphJacobiAccelerationsFromJet(
+  const PacketScalarJet& f, const PacketJacobiState& y, PacketJacobiState& dy);
+
+/// The conformal family's, from the jet of n to second order; the lanes where n > 0 and all are finite.
+RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalJacobiAccelerationsFromJet(
+  const PacketScalarJet& n, const PacketJacobiState& y, PacketJacobiState& dy);
+
+/**
+ * The Jacobi system of W geodesics: dy = (v, a, DJ_0, A_0, DJ_1, A_1) on the
+ * lanes of `lanes` (Metric::JacobiAccelerationPacket); returns those where
+ * it is defined.
+ */
+RIEMANNCOMMONMETRIC_EXPORT LaneMask JacobiFlowPacket(
+  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes);
+
+/// EulerPacketStep of the Jacobi system.
+RIEMANNCOMMONMETRIC_EXPORT LaneMask EulerPacketStep(
+  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
+
+/// RungeKutta4PacketStep of the Jacobi system.
+RIEMANNCOMMONMETRIC_EXPORT LaneMask RungeKutta4PacketStep(
+  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
+
+/// DormandPrince45PacketAttempt of the Jacobi system (error RMS over the 18 components).
+RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& metric,
+  const PacketJacobiState& y, const PacketJacobiState& k1, const double* step, double tolerance,
+  LaneMask lanes, PacketJacobiAttempt& attempt);
 } // namespace riemann
 
 #endif

@@ -31,18 +31,32 @@ void SetStateLane(PacketState& y, int l, const Vec6& lane)
   }
 }
 
-void CopyStateLane(const PacketState& from, int l, PacketState& to)
+template <class State>
+void CopyStateLane(const State& from, int l, State& to)
 {
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < State::Size; ++i)
   {
     to.Component(i)[l] = from.Component(i)[l];
   }
+}
+
+/// The flow of each state type.
+LaneMask FlowPacket(const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+{
+  return GeodesicFlowPacket(metric, y, dy, lanes);
+}
+
+LaneMask FlowPacket(
+  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
+{
+  return JacobiFlowPacket(metric, y, dy, lanes);
 }
 } // namespace
 
 // --- PacketStepper -------------------------------------------------------------
 
-PacketStepper::PacketStepper(IntegratorType type, double tolerance)
+template <class State>
+BasicPacketStepper<State>::BasicPacketStepper(IntegratorType type, double tolerance)
   : Type(type)
   , Tolerance(tolerance)
 {
@@ -52,7 +66,8 @@ PacketStepper::PacketStepper(IntegratorType type, double tolerance)
   }
 }
 
-void PacketStepper::StartLane(int l, double step, double minimumStep, double maximumStep)
+template <class State>
+void BasicPacketStepper<State>::StartLane(int l, double step, double minimumStep, double maximumStep)
 {
   this->Step[l] = step;
   this->MinimumStep[l] = minimumStep;
@@ -60,7 +75,8 @@ void PacketStepper::StartLane(int l, double step, double minimumStep, double max
   this->HaveDerivative &= ~Bit(l);
 }
 
-LaneMask PacketStepper::Advance(const Metric& metric, PacketState& y, const double* limit,
+template <class State>
+LaneMask BasicPacketStepper<State>::Advance(const Metric& metric, State& y, const double* limit,
   LaneMask lanes, double* taken, IntegrationStep::Status* status)
 {
   if (this->Type == IntegratorType::DormandPrince45)
@@ -86,7 +102,8 @@ LaneMask PacketStepper::Advance(const Metric& metric, PacketState& y, const doub
   return 0;
 }
 
-LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
+template <class State>
+LaneMask BasicPacketStepper<State>::AdvanceAdaptive(const Metric& metric, State& y,
   const double* limit, LaneMask lanes, double* taken, IntegrationStep::Status* status)
 {
   // Step 1: the first-same-as-last derivative of lanes that start a curve.
@@ -94,8 +111,8 @@ LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
   const LaneMask fresh = lanes & ~this->HaveDerivative;
   if (fresh != 0)
   {
-    PacketState derivative;
-    const LaneMask defined = GeodesicFlowPacket(metric, y, derivative, fresh);
+    State derivative;
+    const LaneMask defined = FlowPacket(metric, y, derivative, fresh);
     for (int l = 0; l < PacketWidth; ++l)
     {
       if (!HasLane(fresh, l))
@@ -133,7 +150,7 @@ LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
       step[l] = lastStep[l] ? limit[l] : this->Step[l];
     }
   }
-  PacketAttempt attempt;
+  BasicPacketAttempt<State> attempt;
   const LaneMask defined =
     DormandPrince45PacketAttempt(metric, y, this->Derivative, step, this->Tolerance, pending, attempt);
 
@@ -173,6 +190,9 @@ LaneMask PacketStepper::AdvanceAdaptive(const Metric& metric, PacketState& y,
   }
   return retry;
 }
+
+template class BasicPacketStepper<PacketState>;
+template class BasicPacketStepper<PacketJacobiState>;
 
 // --- TraceGeodesics --------------------------------------------------------------
 

@@ -22,16 +22,19 @@
 namespace riemann
 {
 /**
- * @class PacketStepper
- * @brief GeodesicStepper for a packet: fixed-step Euler or RK4, or adaptive
+ * @class BasicPacketStepper
+ * @brief FlowStepper for a packet: fixed-step Euler or RK4, or adaptive
  * Dormand-Prince 5(4) with per-lane step control and first-same-as-last
- * cache, in the parameter of each lane's curve.
+ * cache, in the parameter of each lane's curve. State is PacketState (the
+ * geodesic flow: PacketStepper) or PacketJacobiState (the Jacobi system:
+ * PacketJacobiStepper); both are instantiated in PacketTrace.cxx.
  */
-class RIEMANNCOMMONMETRIC_EXPORT PacketStepper
+template <class State>
+class RIEMANNCOMMONMETRIC_EXPORT BasicPacketStepper
 {
 public:
   /// `tolerance` is dp45's mixed absolute/relative error per step.
-  PacketStepper(IntegratorType type, double tolerance);
+  BasicPacketStepper(IntegratorType type, double tolerance);
 
   /**
    * Start lane l on a new curve: `step` is its fixed step (the initial one
@@ -47,11 +50,11 @@ public:
    * outcome (IntegrationStep::Status); a lane that does not succeed keeps
    * its state.
    */
-  LaneMask Advance(const Metric& metric, PacketState& y, const double* limit, LaneMask lanes,
+  LaneMask Advance(const Metric& metric, State& y, const double* limit, LaneMask lanes,
     double* taken, IntegrationStep::Status* status);
 
 private:
-  LaneMask AdvanceAdaptive(const Metric& metric, PacketState& y, const double* limit,
+  LaneMask AdvanceAdaptive(const Metric& metric, State& y, const double* limit,
     LaneMask lanes, double* taken, IntegrationStep::Status* status);
 
   IntegratorType Type;
@@ -60,9 +63,14 @@ private:
   alignas(64) double MinimumStep[PacketWidth];
   alignas(64) double MaximumStep[PacketWidth];
   /// dp45's first-same-as-last derivative, valid on the lanes of HaveDerivative.
-  PacketState Derivative;
+  State Derivative;
   LaneMask HaveDerivative = 0;
 };
+
+extern template class BasicPacketStepper<PacketState>;
+extern template class BasicPacketStepper<PacketJacobiState>;
+using PacketStepper = BasicPacketStepper<PacketState>;
+using PacketJacobiStepper = BasicPacketStepper<PacketJacobiState>;
 
 /// Where a geodesic starts: TraceGeodesic's p, v and backward.
 struct GeodesicSeed

@@ -42,7 +42,7 @@ public:
   virtual void Accumulate(const Vec3& p, int order, ScalarJet& jet) const = 0;
 
   /**
-   * Add the value and derivatives up to `order` (at most SecondDerivatives)
+   * Add the value and derivatives up to `order` (any DerivativeOrder)
    * at the PacketWidth points of `p` to `jet`, for the packet engine. Lanes
    * outside `lanes` may be left as they are. The default calls Accumulate()
    * lane by lane; the built-in providers override it with SIMD loops
@@ -77,6 +77,10 @@ public:
           jet.Hessian.C[e][l] += h.C[e][l];
         }
       }
+      if (order >= ThirdDerivatives)
+      {
+        AddThirdLane(lane, l, jet);
+      }
     }
   }
 
@@ -96,6 +100,16 @@ public:
   {
     jet.SetZero(order);
     this->AccumulatePacket(p, order, jet, lanes);
+  }
+
+  /// Add the third derivatives of `lane` to lane l of `jet`.
+  static void AddThirdLane(const ScalarJet& lane, int l, PacketScalarJet& jet)
+  {
+    for (int e = 0; e < 10; ++e)
+    {
+      const int(&i)[3] = ThirdEntryIndices[e];
+      jet.Third[e][l] += lane.Third[i[0]](i[1], i[2]);
+    }
   }
 
   /// One line saying what the field is, for `riemann info` and error messages.

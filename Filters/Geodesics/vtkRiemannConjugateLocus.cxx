@@ -74,7 +74,8 @@ int vtkRiemannConjugateLocus::RequestData(
   }
   const riemann::GeodesicOptions options = this->MakeGeodesicOptions();
 
-  // Search in parallel (progress and abort between batches).
+  // Search in parallel (progress and abort between batches), PacketWidth
+  // directions in lock step on the packet engine.
   const vtkIdType count = static_cast<vtkIdType>(directions.size());
   std::vector<std::vector<riemann::ConjugatePoint>> found(directions.size());
   const double tolerance = this->Tolerance;
@@ -82,12 +83,11 @@ int vtkRiemannConjugateLocus::RequestData(
   const vtkIdType done = vtkRiemannForInBatches(this, count, 64,
     [&](vtkIdType first, vtkIdType last)
     {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        found[i] = riemann::FindConjugatePoints(
-          *metric, observer, directions[i], options, tolerance, maximumCount);
-      }
-    });
+      riemann::FindConjugatePoints(*metric, observer, directions.data() + first,
+        static_cast<size_t>(last - first), options, tolerance, maximumCount,
+        found.data() + first);
+    },
+    4 * riemann::PacketWidth);
 
   vtkIdType pointCount = 0;
   for (vtkIdType i = 0; i < done; ++i)

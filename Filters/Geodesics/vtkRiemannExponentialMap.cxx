@@ -76,7 +76,8 @@ long SampleAtRadius(const std::vector<riemann::JacobiSample>& samples, double r)
 
 /// Step 2 of RequestData: every direction of the grid traced with its Jacobi
 /// fields from the observer, landing on each radius, in parallel (progress
-/// and abort between batches of 64). False when aborted.
+/// and abort between batches of 64) on the packet engine (PacketWidth
+/// directions in lock step). False when aborted.
 bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   const riemann::Vec3& observer, vtkPolyData* grid, const riemann::GeodesicOptions& options,
   const std::vector<double>& radii, std::vector<riemann::JacobiTrace>& traces)
@@ -86,14 +87,17 @@ bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   const vtkIdType done = vtkRiemannForInBatches(self, count, 64,
     [&](vtkIdType first, vtkIdType last)
     {
+      std::vector<riemann::JacobiSeed> seeds(static_cast<size_t>(last - first));
       for (vtkIdType i = first; i < last; ++i)
       {
-        double d[3];
-        grid->GetPoint(i, d);
-        riemann::TraceJacobiFields(
-          metric, observer, riemann::Vec3(d[0], d[1], d[2]), options, traces[i], false, radii);
+        riemann::JacobiSeed& seed = seeds[static_cast<size_t>(i - first)];
+        seed.Point = observer;
+        grid->GetPoint(i, seed.Direction.data());
       }
-    });
+      riemann::TraceJacobiFields(
+        metric, seeds.data(), seeds.size(), options, traces.data() + first, radii);
+    },
+    4 * riemann::PacketWidth);
   return done == count;
 }
 

@@ -81,27 +81,72 @@ struct Traces
   vtkIdType Traced = 0;
 };
 
-/// The geodesic with its Jacobi fields, as a GeodesicPath plus the
-/// transverse Jacobian (determinant, singular values) at every point.
-void TraceWithJacobian(const riemann::Metric& metric, const Seed& seed,
-  const riemann::GeodesicOptions& options, riemann::GeodesicPath& path, JacobianSamples& jacobian)
+/**
+ * The packet Jacobi trace's samples as GeodesicPaths plus the transverse
+ * Jacobian (determinant, singular values) at every point; packet trace k is
+ * seed Index[k].
+ */
+class PathWithJacobian : public riemann::JacobiVisitor
 {
-  riemann::JacobiTrace trace;
-  riemann::TraceJacobiFields(metric, seed.Position, seed.Direction, options, trace, seed.Backward);
-  path.Clear();
-  jacobian.clear();
-  path.Reason = trace.Reason;
-  const double sign = seed.Backward ? -1.0 : 1.0;
-  for (const riemann::JacobiSample& sample : trace.Samples)
+public:
+  PathWithJacobian(
+    const std::vector<Seed>& seeds, const std::vector<vtkIdType>& index, Traces& traces)
+    : Seeds(seeds)
+    , Index(index)
+    , Out(traces)
   {
+  }
+  void Start(int, std::size_t trace) override
+  {
+    this->Out.Paths[this->Index[trace]].Clear();
+    this->Out.Jacobians[this->Index[trace]].clear();
+  }
+  bool Visit(int, std::size_t trace, const riemann::JacobiSample& sample) override
+  {
+    const vtkIdType i = this->Index[trace];
+    riemann::GeodesicPath& path = this->Out.Paths[i];
     path.Points.push_back(sample.Point);
     // Velocity is dx/ds of the forward parametrisation, as TraceGeodesic's.
-    path.Velocities.push_back(sign * sample.Velocity);
+    path.Velocities.push_back((this->Seeds[i].Backward ? -1.0 : 1.0) * sample.Velocity);
     path.ArcLength.push_back(sample.ArcLength);
     path.SpeedDrift.push_back(sample.SpeedDrift);
-    jacobian.push_back(
+    this->Out.Jacobians[i].push_back(
       { sample.Determinant, sample.SingularValues[0], sample.SingularValues[1] });
+    return true;
   }
+  void End(int, std::size_t trace, int reason) override
+  {
+    this->Out.Paths[this->Index[trace]].Reason = reason;
+  }
+
+private:
+  const std::vector<Seed>& Seeds;
+  const std::vector<vtkIdType>& Index;
+  Traces& Out;
+};
+
+/// Seeds [first, last) with their Jacobi fields on the packet engine; a seed
+/// whose direction cannot be normalised gets an empty path.
+void TraceWithJacobian(const riemann::Metric& metric, const std::vector<Seed>& seeds,
+  vtkIdType first, vtkIdType last, const riemann::GeodesicOptions& options, Traces& traces)
+{
+  std::vector<riemann::JacobiSeed> packetSeeds;
+  std::vector<vtkIdType> index;
+  for (vtkIdType i = first; i < last; ++i)
+  {
+    const Seed& seed = seeds[i];
+    riemann::Vec3 velocity;
+    if (!riemann::UnitSpeedVelocity(metric, seed.Position, seed.Direction, velocity))
+    {
+      traces.Paths[i].Clear();
+      continue;
+    }
+    packetSeeds.push_back({ seed.Position, seed.Direction, seed.Backward });
+    index.push_back(i);
+  }
+  PathWithJacobian visitor(seeds, index, traces);
+  riemann::TraceJacobiFields(
+    metric, packetSeeds.data(), packetSeeds.size(), options, {}, false, visitor);
 }
 
 /// Step 1 of RequestData: the seeds, in start order, one per start and
@@ -166,7 +211,8 @@ std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input, std::
 
 /// Step 2: every seed's geodesic, in parallel, with progress and abort
 /// between batches of 256 seeds; packets of seeds through the packet engine
-/// (TraceGeodesics), or one by one with the Jacobi fields. A seed whose
+/// (TraceGeodesics, or the packet TraceJacobiFields with the Jacobi
+/// fields). A seed whose
 /// direction cannot be normalised gets an empty path.
 Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   const std::vector<Seed>& seeds, const riemann::GeodesicOptions& options, bool jacobian)
@@ -180,17 +226,7 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
     {
       if (jacobian)
       {
-        for (vtkIdType i = first; i < last; ++i)
-        {
-          const Seed& seed = seeds[i];
-          riemann::Vec3 velocity;
-          if (!riemann::UnitSpeedVelocity(metric, seed.Position, seed.Direction, velocity))
-          {
-            traces.Paths[i].Clear();
-            continue;
-          }
-          TraceWithJacobian(metric, seed, options, traces.Paths[i], traces.Jacobians[i]);
-        }
+        TraceWithJacobian(metric, seeds, first, last, options, traces);
         return;
       }
       // The packet engine, PacketWidth geodesics at a time. A seed whose
@@ -211,7 +247,7 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
       riemann::TraceGeodesics(
         metric, packetSeeds.data(), packetSeeds.size(), options, traces.Paths.data() + first);
     },
-    jacobian ? 0 : 4 * riemann::PacketWidth);
+    4 * riemann::PacketWidth);
   return traces;
 }
 
