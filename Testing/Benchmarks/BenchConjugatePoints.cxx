@@ -7,7 +7,9 @@
  * both measured in the same run so that their ratio means something.
  *
  * Every benchmark is named BM_ConjugatePoints/<case>_<integrator>_<search>,
- * <search> = new or legacy. The metrics are conformal, typed as expressions
+ * <search> = new, legacy, or packet: the new search on the packet engine
+ * (the many-direction FindConjugatePoints, 8 directions in lock step, in
+ * chunks of 32 per thread), with the new search's settings. The metrics are conformal, typed as expressions
  * as a user would; the directions are the Fibonacci lattice of the sphere
  * (as `riemann conjugate --directions 10000`). The adaptive integrator
  * (dp45, Dormand-Prince 5(4)) runs with vtkRiemannConjugateLocus's settings,
@@ -71,6 +73,8 @@ using Search = std::vector<riemann::ConjugatePoint> (*)(
 // The cast picks the GeodesicOptions overload of riemann::FindConjugatePoints.
 const Search NewSearch = static_cast<Search>(&riemann::FindConjugatePoints);
 const Search LegacySearch = &riemann::bench::LegacyFindConjugatePoints;
+/// The many-direction FindConjugatePoints on the packet engine (SearchAllPackets).
+const Search PacketSearch = nullptr;
 
 /// One workload of the file comment, with the settings of one of the searches.
 struct Workload
@@ -221,6 +225,47 @@ Outcome SearchAll(const riemann::Metric& metric, const Workload& workload,
   return total;
 }
 
+/// All directions on all threads through the many-direction (packet)
+/// FindConjugatePoints, in chunks of 32 directions taken one at a time.
+Outcome SearchAllPackets(const riemann::Metric& metric, const Workload& workload,
+  const riemann::GeodesicOptions& options, const std::vector<Vec3>& directions,
+  unsigned threadCount)
+{
+  constexpr int Chunk = 4 * riemann::PacketWidth;
+  std::atomic<int> next(0);
+  std::vector<Outcome> outcomes(threadCount);
+  std::vector<std::thread> threads;
+  for (unsigned t = 0; t < threadCount; ++t)
+  {
+    threads.emplace_back(
+      [&, t]
+      {
+        std::vector<std::vector<riemann::ConjugatePoint>> found(Chunk);
+        const int count = static_cast<int>(directions.size());
+        for (int first = Chunk * next++; first < count; first = Chunk * next++)
+        {
+          const int n = std::min(Chunk, count - first);
+          riemann::FindConjugatePoints(metric, workload.Observer, directions.data() + first,
+            static_cast<size_t>(n), options, workload.Tolerance, workload.Wanted, found.data());
+          for (int i = 0; i < n; ++i)
+          {
+            outcomes[t].Add(found[static_cast<size_t>(i)], workload.Wanted);
+          }
+        }
+      });
+  }
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  Outcome total;
+  for (const Outcome& outcome : outcomes)
+  {
+    total.Merge(outcome);
+  }
+  return total;
+}
+
 void BM_ConjugatePoints(benchmark::State& state, const Workload& workload, Search search)
 {
   const auto metric = riemann::ParseMetricDefinition(
@@ -233,7 +278,8 @@ void BM_ConjugatePoints(benchmark::State& state, const Workload& workload, Searc
   Outcome total;
   for (auto _ : state)
   {
-    total = SearchAll(*metric, workload, options, directions, search, threadCount);
+    total = search ? SearchAll(*metric, workload, options, directions, search, threadCount)
+                   : SearchAllPackets(*metric, workload, options, directions, threadCount);
   }
   state.counters["directions_per_second"] = benchmark::Counter(
     static_cast<double>(DirectionCount) * state.iterations(), benchmark::Counter::kIsRate);
@@ -263,11 +309,15 @@ void BM_ConjugatePoints(benchmark::State& state, const Workload& workload, Searc
     ->UseRealTime()                                                                                \
     ->Iterations(1)
 
+RIEMANN_CONJUGATE_BENCHMARK(sphere_dp45_packet, SphereDp45New, PacketSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere_dp45_new, SphereDp45New, NewSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere_dp45_legacy, SphereDp45Legacy, LegacySearch);
+RIEMANN_CONJUGATE_BENCHMARK(sphere_rk4_packet, SphereRk4New, PacketSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere_rk4_new, SphereRk4New, NewSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere_rk4_legacy, SphereRk4Legacy, LegacySearch);
+RIEMANN_CONJUGATE_BENCHMARK(sphere10_dp45_packet, Sphere10Dp45New, PacketSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere10_dp45_new, Sphere10Dp45New, NewSearch);
 RIEMANN_CONJUGATE_BENCHMARK(sphere10_dp45_legacy, Sphere10Dp45Legacy, LegacySearch);
+RIEMANN_CONJUGATE_BENCHMARK(squashed_dp45_packet, SquashedDp45New, PacketSearch);
 RIEMANN_CONJUGATE_BENCHMARK(squashed_dp45_new, SquashedDp45New, NewSearch);
 RIEMANN_CONJUGATE_BENCHMARK(squashed_dp45_legacy, SquashedDp45Legacy, LegacySearch);
