@@ -1,5 +1,6 @@
 #include "ConformalMetric.h"
 
+#include "PacketCurvature.h"
 #include "PacketKernels.h"
 
 #include <cmath>
@@ -99,6 +100,29 @@ LaneMask ConformalMetric::AccelerationPacket(
   PacketScalarJet n;
   this->Index->EvaluatePacket(x, FirstDerivatives, n, lanes);
   return ConformalAccelerationFromJet(n, v, a) & lanes;
+}
+
+void ConformalMetric::VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const
+{
+  // VolumeForm()'s formula on the provider's packet jet.
+  PacketScalarJet n;
+  this->Index->EvaluatePacket(x, ValueOnly, n, lanes);
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    if (HasLane(lanes, l))
+    {
+      const double value = n.Value[l];
+      volume[l] = value > 0 ? value * value * value : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+}
+
+LaneMask ConformalMetric::TensorSecondDerivativesPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  PacketScalarJet n;
+  this->Index->EvaluatePacket(x, SecondDerivatives, n, lanes);
+  return ConformalTensorJetFromJet(n, jet) & lanes;
 }
 
 LaneMask ConformalMetric::JacobiAccelerationPacket(

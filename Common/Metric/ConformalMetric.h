@@ -33,6 +33,9 @@ public:
   LaneMask AccelerationPacket(
     const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const override;
   LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const override;
+  void VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const override;
+  LaneMask TensorSecondDerivativesPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const override;
   LaneMask JacobiAccelerationPacket(
     const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const override;
   bool InverseTensor(const Vec3& p, Mat3& inverse) const override;

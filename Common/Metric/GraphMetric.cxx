@@ -1,5 +1,6 @@
 #include "GraphMetric.h"
 
+#include "PacketCurvature.h"
 #include "PacketKernels.h"
 
 #include <cmath>
@@ -94,6 +95,29 @@ LaneMask GraphMetric::AccelerationPacket(
   PacketScalarJet f;
   this->Field->EvaluatePacket(x, SecondDerivatives, f, lanes);
   return GraphAccelerationFromJet(f, v, a) & lanes;
+}
+
+void GraphMetric::VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const
+{
+  // VolumeForm()'s formula on the provider's packet jet.
+  PacketScalarJet f;
+  this->Field->EvaluatePacket(x, FirstDerivatives, f, lanes);
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    if (HasLane(lanes, l))
+    {
+      const double fx = f.Gradient[0][l], fy = f.Gradient[1][l], fz = f.Gradient[2][l];
+      volume[l] = std::sqrt(1.0 + fx * fx + fy * fy + fz * fz);
+    }
+  }
+}
+
+LaneMask GraphMetric::TensorSecondDerivativesPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  PacketScalarJet f;
+  this->Field->EvaluatePacket(x, ThirdDerivatives, f, lanes);
+  return GraphTensorJetFromJet(f, jet) & lanes;
 }
 
 LaneMask GraphMetric::JacobiAccelerationPacket(

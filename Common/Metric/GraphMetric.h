@@ -33,6 +33,9 @@ public:
   LaneMask AccelerationPacket(
     const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const override;
   LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const override;
+  void VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const override;
+  LaneMask TensorSecondDerivativesPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const override;
   LaneMask JacobiAccelerationPacket(
     const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const override;
   /// Sherman-Morrison: g^ij = delta_ij - f_i f_j / (1 + |grad f|^2).

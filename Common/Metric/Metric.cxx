@@ -68,6 +68,53 @@ LaneMask Metric::JacobiAccelerationPacket(
   return defined;
 }
 
+void Metric::VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const
+{
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    if (HasLane(lanes, l))
+    {
+      volume[l] = this->VolumeForm(x.Lane(l));
+    }
+  }
+}
+
+LaneMask Metric::TensorSecondDerivativesPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  LaneMask defined = 0;
+  Mat3 g;
+  Mat3Stack dg;
+  std::array<Mat3Stack, 3> d2g;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    const bool ok = HasLane(lanes, l) && this->TensorSecondDerivatives(x.Lane(l), g, dg, d2g);
+    if (!ok)
+    {
+      g.setIdentity();
+      for (int k = 0; k < 3; ++k)
+      {
+        dg[k].setZero();
+        for (Mat3& m : d2g[k])
+        {
+          m.setZero();
+        }
+      }
+    }
+    defined |= ok ? LaneMask{ 1 } << l : 0;
+    jet.G.SetLane(l, g);
+    for (int k = 0; k < 3; ++k)
+    {
+      jet.D[k].SetLane(l, dg[k]);
+      for (int m = k; m < 3; ++m)
+      {
+        jet.DD[SymmetricEntryOf[k][m]].SetLane(l, d2g[k][m]);
+      }
+    }
+  }
+  return defined;
+}
+
 LaneMask Metric::TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const
 {
   LaneMask defined = 0;

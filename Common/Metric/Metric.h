@@ -47,6 +47,15 @@ public:
    */
   virtual bool TensorSecondDerivatives(
     const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const;
+  /**
+   * TensorSecondDerivatives at PacketWidth points (Packet.h's
+   * PacketTensorJet), on the lanes of `lanes`; returns those where it
+   * succeeds. The default calls TensorSecondDerivatives() lane by lane; the
+   * graph and conformal families override it with SIMD kernels on their
+   * providers' packet jets (PacketCurvature.h).
+   */
+  virtual LaneMask TensorSecondDerivativesPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const;
   /// gamma[m](i, j) = Gamma^m_ij at p, by the family's specialised formula.
   virtual bool Christoffel(const Vec3& p, Mat3Stack& gamma) const = 0;
   /**
@@ -82,6 +91,13 @@ public:
   virtual bool InverseTensor(const Vec3& p, Mat3& inverse) const;
   /// sqrt(det g) at p; NaN where the metric is degenerate.
   virtual double VolumeForm(const Vec3& p) const;
+  /**
+   * VolumeForm() at PacketWidth points into volume[0, PacketWidth) (lanes
+   * outside `lanes` are left as they are). The default calls VolumeForm()
+   * lane by lane; the graph and conformal families evaluate their
+   * providers on the packet.
+   */
+  virtual void VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const;
 
   /// g_p(u, w); NaN where the metric is degenerate.
   double InnerProduct(const Vec3& p, const Vec3& u, const Vec3& w) const;

@@ -81,6 +81,21 @@ struct alignas(64) PacketSym3
   }
 };
 
+/**
+ * g and its exact first and second derivatives at W points (what curvature
+ * needs): D[k] = d_k g and DD[e] = d_k d_l g for the pair (k, l) of the
+ * SymmetricEntry e (XX = (0, 0), XY = (0, 1), ...).
+ */
+struct alignas(64) PacketTensorJet
+{
+  PacketSym3 G;
+  PacketSym3 D[3];
+  PacketSym3 DD[6];
+};
+
+/// The SymmetricEntry of (i, j), any order.
+constexpr int SymmetricEntryOf[3][3] = { { XX, XY, XZ }, { XY, YY, YZ }, { XZ, YZ, ZZ } };
+
 /// The 10 distinct third derivatives d_i d_j d_k f, indices sorted.
 enum ThirdEntry : int
 {

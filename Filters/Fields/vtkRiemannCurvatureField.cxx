@@ -1,11 +1,12 @@
 #include "vtkRiemannCurvatureField.h"
 
-#include "Curvature.h"
+#include "PacketCurvature.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkRiemannPointPackets.h"
 
 #include <atomic>
 #include <limits>
@@ -36,36 +37,41 @@ bool vtkRiemannCurvatureField::ComputeFields(const riemann::Metric& metric, vtkD
   const bool completed = this->ForEachPointInBatches(count,
     [&](vtkIdType first, vtkIdType last)
     {
+      // PacketWidth points at a time (the packet curvature, PacketCurvature.h).
       constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-      riemann::CurvatureSample sample;
       vtkIdType bad = 0;
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        double x[3];
-        output->GetPoint(i, x);
-        if (!riemann::ComputeCurvature(metric, riemann::Vec3(x[0], x[1], x[2]), sample))
+      vtkRiemannForEachPointPacket(output, first, last,
+        [&](vtkIdType start, int count, const riemann::PacketVec3& x, riemann::LaneMask lanes)
         {
-          ++bad;
-          s[i] = kxy[i] = kxz[i] = kyz[i] = kmin[i] = kmax[i] = rn[i] = nan;
-          std::fill(ric + 6 * i, ric + 6 * i + 6, nan);
-          continue;
-        }
-        const riemann::Mat3& r = sample.Ricci;
-        s[i] = sample.Scalar;
-        double* t = ric + 6 * i;
-        t[0] = r(0, 0);
-        t[1] = r(1, 1);
-        t[2] = r(2, 2);
-        t[3] = r(0, 1);
-        t[4] = r(1, 2);
-        t[5] = r(0, 2);
-        kxy[i] = sample.SectionalXY;
-        kxz[i] = sample.SectionalXZ;
-        kyz[i] = sample.SectionalYZ;
-        kmin[i] = sample.SectionalMin;
-        kmax[i] = sample.SectionalMax;
-        rn[i] = sample.RiemannNorm;
-      }
+          riemann::PacketCurvature c;
+          const riemann::LaneMask defined = riemann::ComputeCurvature(metric, x, lanes, c);
+          for (int l = 0; l < count; ++l)
+          {
+            const vtkIdType i = start + l;
+            if (!riemann::HasLane(defined, l))
+            {
+              ++bad;
+              s[i] = kxy[i] = kxz[i] = kyz[i] = kmin[i] = kmax[i] = rn[i] = nan;
+              std::fill(ric + 6 * i, ric + 6 * i + 6, nan);
+              continue;
+            }
+            s[i] = c.Scalar[l];
+            // VTK's symmetric tensor order: XX YY ZZ XY YZ XZ.
+            double* t = ric + 6 * i;
+            t[0] = c.Ricci.C[riemann::XX][l];
+            t[1] = c.Ricci.C[riemann::YY][l];
+            t[2] = c.Ricci.C[riemann::ZZ][l];
+            t[3] = c.Ricci.C[riemann::XY][l];
+            t[4] = c.Ricci.C[riemann::YZ][l];
+            t[5] = c.Ricci.C[riemann::XZ][l];
+            kxy[i] = c.SectionalXY[l];
+            kxz[i] = c.SectionalXZ[l];
+            kyz[i] = c.SectionalYZ[l];
+            kmin[i] = c.SectionalMin[l];
+            kmax[i] = c.SectionalMax[l];
+            rn[i] = c.RiemannNorm[l];
+          }
+        });
       undefined += bad;
     });
   if (!completed)

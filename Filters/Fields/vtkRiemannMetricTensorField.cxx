@@ -1,14 +1,13 @@
 #include "vtkRiemannMetricTensorField.h"
 
 #include "Metric.h"
+#include "PacketCurvature.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
+#include "vtkRiemannPointPackets.h"
 
 #include <algorithm>
 #include <atomic>
@@ -42,40 +41,46 @@ bool vtkRiemannMetricTensorField::ComputeFields(const riemann::Metric& metric, v
   const bool completed = this->ForEachPointInBatches(count,
     [&](vtkIdType first, vtkIdType last)
     {
+      // PacketWidth points at a time: g (TensorPacket), its eigenvalues and
+      // inverse on the packet (PacketCurvature.h).
       constexpr double nan = std::numeric_limits<double>::quiet_NaN();
       vtkIdType bad = 0;
-      riemann::Mat3 g;
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        double x[3];
-        output->GetPoint(i, x);
-        if (!metric.Tensor(riemann::Vec3(x[0], x[1], x[2]), g) || !g.allFinite())
+      vtkRiemannForEachPointPacket(output, first, last,
+        [&](vtkIdType start, int count, const riemann::PacketVec3& x, riemann::LaneMask lanes)
         {
-          ++bad;
-          std::fill(gt + 6 * i, gt + 6 * i + 6, nan);
-          std::fill(it + 6 * i, it + 6 * i + 6, nan);
-          std::fill(ev + 3 * i, ev + 3 * i + 3, nan);
-          continue;
-        }
-        // Symmetrise against rounding so that the stored tensor is what VTK reads.
-        g = 0.5 * (g + g.transpose()).eval();
-        StoreSymmetric(g, gt + 6 * i);
-        const Eigen::SelfAdjointEigenSolver<riemann::Mat3> eigen(g, Eigen::EigenvaluesOnly);
-        const riemann::Vec3 lambda = eigen.eigenvalues(); // ascending
-        std::copy(lambda.data(), lambda.data() + 3, ev + 3 * i);
-        const Eigen::LLT<riemann::Mat3> llt(g);
-        riemann::Mat3 ginv;
-        if (llt.info() == Eigen::Success &&
-          (ginv = llt.solve(riemann::Mat3::Identity())).allFinite())
-        {
-          StoreSymmetric(0.5 * (ginv + ginv.transpose()), it + 6 * i);
-        }
-        else
-        {
-          ++bad;
-          std::fill(it + 6 * i, it + 6 * i + 6, nan);
-        }
-      }
+          riemann::PacketSym3 g;
+          const riemann::LaneMask defined = metric.TensorPacket(x, g, lanes);
+          double lambda[3][riemann::PacketWidth];
+          riemann::SymmetricEigenvalues(g, lambda); // ascending
+          riemann::PacketSym3 ginv;
+          const riemann::LaneMask invertible = riemann::InverseTensor(g, ginv);
+          for (int l = 0; l < count; ++l)
+          {
+            const vtkIdType i = start + l;
+            if (!riemann::HasLane(defined, l))
+            {
+              ++bad;
+              std::fill(gt + 6 * i, gt + 6 * i + 6, nan);
+              std::fill(it + 6 * i, it + 6 * i + 6, nan);
+              std::fill(ev + 3 * i, ev + 3 * i + 3, nan);
+              continue;
+            }
+            StoreSymmetric(g.Lane(l), gt + 6 * i);
+            for (int k = 0; k < 3; ++k)
+            {
+              ev[3 * i + k] = lambda[k][l];
+            }
+            if (riemann::HasLane(invertible, l))
+            {
+              StoreSymmetric(ginv.Lane(l), it + 6 * i);
+            }
+            else
+            {
+              ++bad;
+              std::fill(it + 6 * i, it + 6 * i + 6, nan);
+            }
+          }
+        });
       undefined += bad;
     });
   if (!completed)

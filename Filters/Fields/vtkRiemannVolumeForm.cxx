@@ -9,6 +9,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkRiemannPointPackets.h"
 
 #include <cmath>
 #include <vector>
@@ -27,16 +28,17 @@ bool vtkRiemannVolumeForm::ComputeFields(const riemann::Metric& metric, vtkDataS
   const bool completed = this->ForEachPointInBatches(count,
     [&](vtkIdType first, vtkIdType last)
     {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        double x[3];
-        output->GetPoint(i, x);
-        v[i] = metric.VolumeForm(riemann::Vec3(x[0], x[1], x[2]));
-        if (!std::isfinite(v[i]))
+      // PacketWidth points at a time (Metric::VolumeFormPacket).
+      vtkRiemannForEachPointPacket(output, first, last,
+        [&](vtkIdType start, int count, const riemann::PacketVec3& x, riemann::LaneMask lanes)
         {
-          v[i] = vtkMath::Nan();
-        }
-      }
+          double packet[riemann::PacketWidth];
+          metric.VolumeFormPacket(x, packet, lanes);
+          for (int l = 0; l < count; ++l)
+          {
+            v[start + l] = std::isfinite(packet[l]) ? packet[l] : vtkMath::Nan();
+          }
+        });
     });
   if (!completed)
   {
