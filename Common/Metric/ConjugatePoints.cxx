@@ -318,8 +318,8 @@ private:
 class PacketSearch : public JacobiVisitor
 {
 public:
-  PacketSearch(const Metric& metric, double tolerance, int maximumCount,
-    std::vector<ConjugatePoint>* found)
+  PacketSearch(
+    const Metric& metric, double tolerance, int maximumCount, std::vector<ConjugatePoint>* found)
     : M(metric)
     , Tolerance(tolerance)
     , MaximumCount(maximumCount)

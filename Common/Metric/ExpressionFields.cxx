@@ -159,8 +159,8 @@ void ExpressionScalarField::AccumulatePacket(
   // One source compiled to third order: 20 outputs (OutputsPerSource(3)),
   // of which those up to `order` are written.
   alignas(64) double out[20 * PacketWidth];
-  c.EvaluatePacket(p, this->Inputs.Time, this->Inputs.ParameterValues.data(), out,
-    std::min(order, c.GetOrder()));
+  c.EvaluatePacket(
+    p, this->Inputs.Time, this->Inputs.ParameterValues.data(), out, std::min(order, c.GetOrder()));
   auto outputLanes = [&](int index) { return out + index * PacketWidth; };
   for (int l = 0; l < PacketWidth; ++l)
   {

@@ -49,7 +49,8 @@ protected:
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
 
 private:
-  std::shared_ptr<const ScalarField> Field;  // The field's bumps when it is a sum of Gaussians (the fused packet kernel).
+  std::shared_ptr<const ScalarField>
+    Field; // The field's bumps when it is a sum of Gaussians (the fused packet kernel).
   const GaussianTerms* Bumps = nullptr;
   double BumpsConstant = 0.0;
 };

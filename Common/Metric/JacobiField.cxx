@@ -26,8 +26,8 @@ bool JacobiFlow(const Metric& metric, const Vec18& y, Vec18& dy)
   const Vec3 derivatives[2] = { y.segment<3>(9), y.segment<3>(15) };
   Vec3 a;
   Vec3 variations[2];
-  if (!JacobiAccelerations(metric, y.segment<3>(0), y.segment<3>(3), fields, derivatives, a,
-        variations))
+  if (!JacobiAccelerations(
+        metric, y.segment<3>(0), y.segment<3>(3), fields, derivatives, a, variations))
   {
     return false;
   }
@@ -110,8 +110,7 @@ bool MaslovPhases(
     frame(3, a) = covariant.dot(g * e1);
   }
   const Eigen::HouseholderQR<Eigen::Matrix<double, 4, 2>> qr(frame);
-  const Eigen::Matrix<double, 4, 2> q =
-    qr.householderQ() * Eigen::Matrix<double, 4, 2>::Identity();
+  const Eigen::Matrix<double, 4, 2> q = qr.householderQ() * Eigen::Matrix<double, 4, 2>::Identity();
   using Complex = std::complex<double>;
   Eigen::Matrix2cd plus, minus;
   for (int r = 0; r < 2; ++r)
@@ -196,8 +195,7 @@ bool FillSample(
 /// seed: v the unit-speed direction, J = 0 and J' an orthonormal transverse
 /// frame. False, with `reason` DegenerateMetric, where g is not a metric
 /// (`reason` unchanged for a zero direction).
-bool InitialState(
-  const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
+bool InitialState(const Metric& metric, const Vec3& p, const Vec3& direction, Vec18& y, int& reason)
 {
   Mat3 g;
   if (!metric.Tensor(p, g))
@@ -284,7 +282,8 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   double s = 0.0;
   constexpr int stoppedByVisitor = 0;
   // The sample at s; false when g is degenerate there.
-  const auto fill = [&]() -> bool { return jacobi_detail::FillSample(metric, sign * s, y, sample, withPhases); };
+  const auto fill = [&]() -> bool
+  { return jacobi_detail::FillSample(metric, sign * s, y, sample, withPhases); };
   if (fill() && !visit(sample))
   {
     return stoppedByVisitor;
@@ -303,8 +302,8 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   const std::vector<double> stops = jacobi_detail::LandingStops(landings, options.MaximumLength);
   std::size_t nextStop = 0;
 
-  FlowStepper<Vec18> stepper(options.Integrator, options.Step, options.Tolerance,
-    options.MinimumStep, options.MaximumStep);
+  FlowStepper<Vec18> stepper(
+    options.Integrator, options.Step, options.Tolerance, options.MinimumStep, options.MaximumStep);
   const JacobiSystem system{ metric };
   // Steps shorter than this (relative to the length) count as arriving
   // (TraceGeodesic's rule).
@@ -352,7 +351,6 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
     }
   }
 }
-
 
 void TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction,
   const GeodesicOptions& options, JacobiTrace& trace, bool backward,

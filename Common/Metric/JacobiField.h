@@ -135,9 +135,8 @@ RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec
  * Maslov phases when `withPhases`. False where the metric is degenerate on
  * the way.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(const Metric& metric,
-  const JacobiSample& from, double s, int subSteps, JacobiSample& sample,
-  bool withPhases = false);
+RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(const Metric& metric, const JacobiSample& from,
+  double s, int subSteps, JacobiSample& sample, bool withPhases = false);
 
 /// Where a trace of TraceJacobiFields' packet form starts: its p, direction and backward.
 struct JacobiSeed

@@ -173,13 +173,13 @@ private:
         continue;
       }
       LaneTrace& lane = this->Lanes[l];
-      while (lane.NextStop < this->Stops.size() &&
-        this->Stops[lane.NextStop] - lane.S <= this->Arrival)
+      while (
+        lane.NextStop < this->Stops.size() && this->Stops[lane.NextStop] - lane.S <= this->Arrival)
       {
         ++lane.NextStop;
       }
       this->Target[l] = lane.NextStop < this->Stops.size() ? this->Stops[lane.NextStop]
-                                                          : this->Options.MaximumLength;
+                                                           : this->Options.MaximumLength;
       this->Remaining[l] = this->Target[l] - lane.S;
       if (this->Options.MaximumLength - lane.S <= this->Arrival)
       {
@@ -217,7 +217,8 @@ private:
       ++lane.Steps;
       if (status[l] != IntegrationStep::Accepted)
       {
-        this->EndLane(l, status[l] == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric);
+        this->EndLane(
+          l, status[l] == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric);
         continue;
       }
       const Vec18 y = StateLane(this->State, l);

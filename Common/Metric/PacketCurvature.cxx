@@ -225,8 +225,8 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
     {
       for (int j = 0; j < 3; ++j)
       {
-        lowered[k][i][j] = hn::Mul(hn::Set(d, 0.5),
-          hn::Sub(hn::Add(dg[i].m[j][k], dg[j].m[i][k]), dg[k].m[i][j]));
+        lowered[k][i][j] =
+          hn::Mul(hn::Set(d, 0.5), hn::Sub(hn::Add(dg[i].m[j][k], dg[j].m[i][k]), dg[k].m[i][j]));
       }
     }
   }
@@ -280,8 +280,8 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
           V value = hn::Zero(d);
           for (int b = 0; b < 3; ++b)
           {
-            value = hn::MulAdd(ginv.m[m][b], first[b][i][j],
-              hn::NegMulAdd(a[m][b], gamma[b][i][j], value));
+            value = hn::MulAdd(
+              ginv.m[m][b], first[b][i][j], hn::NegMulAdd(a[m][b], gamma[b][i][j], value));
           }
           dGamma[l][m][i][j] = dGamma[l][m][j][i] = value;
         }
@@ -307,8 +307,8 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
   {
     for (int k = i; k < 3; ++k)
     {
-      const V value = hn::Add(
-        hn::Add(riemannComponent(0, i, 0, k), riemannComponent(1, i, 1, k)), riemannComponent(2, i, 2, k));
+      const V value = hn::Add(hn::Add(riemannComponent(0, i, 0, k), riemannComponent(1, i, 1, k)),
+        riemannComponent(2, i, 2, k));
       ricci.m[i][k] = ricci.m[k][i] = value;
     }
   }

@@ -339,14 +339,14 @@ LaneMask ConformalAccelerationFromJetImpl(
     jet.Gx = hn::Load(d, index.Gradient[0] + o);
     jet.Gy = hn::Load(d, index.Gradient[1] + o);
     jet.Gz = hn::Load(d, index.Gradient[2] + o);
-    defined |= StoreConformalAcceleration(jet, hn::Load(d, v.C[0] + o),
-      hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
+    defined |= StoreConformalAcceleration(
+      jet, hn::Load(d, v.C[0] + o), hn::Load(d, v.C[1] + o), hn::Load(d, v.C[2] + o), a, o);
   }
   return defined;
 }
 
-LaneMask GraphAccelerationOfGaussiansImpl(const GaussianTerms& terms, const PacketVec3& x,
-  const PacketVec3& v, PacketVec3& a)
+LaneMask GraphAccelerationOfGaussiansImpl(
+  const GaussianTerms& terms, const PacketVec3& x, const PacketVec3& v, PacketVec3& a)
 {
   const D d;
   const int n = static_cast<int>(hn::Lanes(d));
@@ -379,7 +379,6 @@ LaneMask ConformalAccelerationOfGaussiansImpl(const GaussianTerms& terms, double
   }
   return defined;
 }
-
 
 // --- The Jacobi system's accelerations from the providers' jets -------------
 
@@ -906,7 +905,8 @@ LaneMask JacobiFlowPacket(
   return HWY_DYNAMIC_DISPATCH(JacobiFlowPacketImpl)(metric, y, dy, lanes);
 }
 
-LaneMask EulerPacketStep(const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
+LaneMask EulerPacketStep(
+  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(EulerJacobiPacketStepImpl)(metric, y, h, lanes);
 }
@@ -936,7 +936,8 @@ LaneMask EulerPacketStep(const Metric& metric, PacketState& y, const double* h, 
   return HWY_DYNAMIC_DISPATCH(EulerPacketStepImpl)(metric, y, h, lanes);
 }
 
-LaneMask RungeKutta4PacketStep(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+LaneMask RungeKutta4PacketStep(
+  const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(RungeKutta4PacketStepImpl)(metric, y, h, lanes);
 }

@@ -87,7 +87,8 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask GeodesicFlowPacket(
 RIEMANNCOMMONMETRIC_EXPORT LaneMask EulerPacketStep(
   const Metric& metric, PacketState& y, const double* h, LaneMask lanes);
 
-/// Classical RK4 per lane (step h[l]); lanes where F is undefined keep y. Returns the lanes stepped.
+/// Classical RK4 per lane (step h[l]); lanes where F is undefined keep y. Returns the lanes
+/// stepped.
 RIEMANNCOMMONMETRIC_EXPORT LaneMask RungeKutta4PacketStep(
   const Metric& metric, PacketState& y, const double* h, LaneMask lanes);
 
@@ -111,8 +112,8 @@ struct BasicPacketAttempt
 using PacketAttempt = BasicPacketAttempt<PacketState>;
 using PacketJacobiAttempt = BasicPacketAttempt<PacketJacobiState>;
 RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& metric,
-  const PacketState& y, const PacketState& k1, const double* step, double tolerance,
-  LaneMask lanes, PacketAttempt& attempt);
+  const PacketState& y, const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
+  PacketAttempt& attempt);
 
 // --- The Jacobi system (JacobiField.h) on packets ----------------------------
 
@@ -126,7 +127,8 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& m
 RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphJacobiAccelerationsFromJet(
   const PacketScalarJet& f, const PacketJacobiState& y, PacketJacobiState& dy);
 
-/// The conformal family's, from the jet of n to second order; the lanes where n > 0 and all are finite.
+/// The conformal family's, from the jet of n to second order; the lanes where n > 0 and all are
+/// finite.
 RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalJacobiAccelerationsFromJet(
   const PacketScalarJet& n, const PacketJacobiState& y, PacketJacobiState& dy);
 

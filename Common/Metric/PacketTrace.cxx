@@ -67,7 +67,8 @@ BasicPacketStepper<State>::BasicPacketStepper(IntegratorType type, double tolera
 }
 
 template <class State>
-void BasicPacketStepper<State>::StartLane(int l, double step, double minimumStep, double maximumStep)
+void BasicPacketStepper<State>::StartLane(
+  int l, double step, double minimumStep, double maximumStep)
 {
   this->Step[l] = step;
   this->MinimumStep[l] = minimumStep;
@@ -151,8 +152,8 @@ LaneMask BasicPacketStepper<State>::AdvanceAdaptive(const Metric& metric, State&
     }
   }
   BasicPacketAttempt<State> attempt;
-  const LaneMask defined =
-    DormandPrince45PacketAttempt(metric, y, this->Derivative, step, this->Tolerance, pending, attempt);
+  const LaneMask defined = DormandPrince45PacketAttempt(
+    metric, y, this->Derivative, step, this->Tolerance, pending, attempt);
 
   // Step 3: each lane's controller, as DormandPrince45Of::Step; a rejected
   // lane keeps its state and retries with the smaller step.
@@ -373,7 +374,8 @@ private:
       }
       if (status[l] != IntegrationStep::Accepted)
       {
-        this->EndLane(l, status[l] == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric);
+        this->EndLane(
+          l, status[l] == IntegrationStep::StepTooSmall ? Stagnation : DegenerateMetric);
       }
       else
       {

@@ -54,8 +54,8 @@ public:
     double* taken, IntegrationStep::Status* status);
 
 private:
-  LaneMask AdvanceAdaptive(const Metric& metric, State& y, const double* limit,
-    LaneMask lanes, double* taken, IntegrationStep::Status* status);
+  LaneMask AdvanceAdaptive(const Metric& metric, State& y, const double* limit, LaneMask lanes,
+    double* taken, IntegrationStep::Status* status);
 
   IntegratorType Type;
   double Tolerance;

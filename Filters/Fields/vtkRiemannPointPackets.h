@@ -19,7 +19,8 @@
  * repeat its last point, so every lane holds a finite point.
  */
 template <class Work>
-void vtkRiemannForEachPointPacket(vtkDataSet* points, vtkIdType first, vtkIdType last, const Work& work)
+void vtkRiemannForEachPointPacket(
+  vtkDataSet* points, vtkIdType first, vtkIdType last, const Work& work)
 {
   riemann::PacketVec3 x;
   for (vtkIdType start = first; start < last; start += riemann::PacketWidth)

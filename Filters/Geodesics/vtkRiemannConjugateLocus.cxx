@@ -6,9 +6,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -80,12 +80,12 @@ int vtkRiemannConjugateLocus::RequestData(
   std::vector<std::vector<riemann::ConjugatePoint>> found(directions.size());
   const double tolerance = this->Tolerance;
   const int maximumCount = this->MaximumNumberOfConjugatePoints;
-  const vtkIdType done = vtkRiemannForInBatches(this, count, 64,
+  const vtkIdType done = vtkRiemannForInBatches(
+    this, count, 64,
     [&](vtkIdType first, vtkIdType last)
     {
       riemann::FindConjugatePoints(*metric, observer, directions.data() + first,
-        static_cast<size_t>(last - first), options, tolerance, maximumCount,
-        found.data() + first);
+        static_cast<size_t>(last - first), options, tolerance, maximumCount, found.data() + first);
     },
     4 * riemann::PacketWidth);
 

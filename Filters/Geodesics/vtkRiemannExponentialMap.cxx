@@ -84,7 +84,8 @@ bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
 {
   const vtkIdType count = grid->GetNumberOfPoints();
   traces.resize(static_cast<size_t>(count));
-  const vtkIdType done = vtkRiemannForInBatches(self, count, 64,
+  const vtkIdType done = vtkRiemannForInBatches(
+    self, count, 64,
     [&](vtkIdType first, vtkIdType last)
     {
       std::vector<riemann::JacobiSeed> seeds(static_cast<size_t>(last - first));

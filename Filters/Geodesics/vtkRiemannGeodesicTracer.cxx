@@ -221,7 +221,8 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   traces.Paths.resize(seeds.size());
   traces.Jacobians.resize(jacobian ? seeds.size() : 0);
   const vtkIdType count = static_cast<vtkIdType>(seeds.size());
-  traces.Traced = vtkRiemannForInBatches(self, count, 256,
+  traces.Traced = vtkRiemannForInBatches(
+    self, count, 256,
     [&](vtkIdType first, vtkIdType last)
     {
       if (jacobian)

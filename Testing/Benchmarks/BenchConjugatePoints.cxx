@@ -9,18 +9,15 @@
  * Every benchmark is named BM_ConjugatePoints/<case>_<integrator>_<search>,
  * <search> = new, legacy, or packet: the new search on the packet engine
  * (the many-direction FindConjugatePoints, 8 directions in lock step, in
- * chunks of 32 per thread), with the new search's settings. The metrics are conformal, typed as expressions
- * as a user would; the directions are the Fibonacci lattice of the sphere
- * (as `riemann conjugate --directions 10000`). The adaptive integrator
- * (dp45, Dormand-Prince 5(4)) runs with vtkRiemannConjugateLocus's settings,
- * first step 0.01, steps of at most 0.1; options.Tolerance is the old
- * default 1e-9 for the legacy search and the filter's default cap 1e-6 for
- * the new one, which lowers it itself to tolerance / 100 = 1e-10
- * (ConjugateIntegrationTolerance). rk4 is fixed-step RK4 at step 0.01 (the
- * CLI default); there the new search's root tolerance is 1e-5, its merge
- * resolution (the step, not the tolerance, decides the accuracy: RK4 splits
- * the round sphere's double point by up to ~3e-6, TestJacobiField.cxx).
- * Cases:
+ * chunks of 32 per thread), with the new search's settings. The metrics are conformal, typed as
+ * expressions as a user would; the directions are the Fibonacci lattice of the sphere (as `riemann
+ * conjugate --directions 10000`). The adaptive integrator (dp45, Dormand-Prince 5(4)) runs with
+ * vtkRiemannConjugateLocus's settings, first step 0.01, steps of at most 0.1; options.Tolerance is
+ * the old default 1e-9 for the legacy search and the filter's default cap 1e-6 for the new one,
+ * which lowers it itself to tolerance / 100 = 1e-10 (ConjugateIntegrationTolerance). rk4 is
+ * fixed-step RK4 at step 0.01 (the CLI default); there the new search's root tolerance is 1e-5, its
+ * merge resolution (the step, not the tolerance, decides the accuracy: RK4 splits the round
+ * sphere's double point by up to ~3e-6, TestJacobiField.cxx). Cases:
  * - sphere_dp45, sphere_rk4: the unit 3-sphere in stereographic
  *   coordinates (Data/metrics/round-sphere.json, n = 2 / (1 + x^2 + y^2 +
  *   z^2)) seen from (0.2, 0.1, -0.3), up to arc length 4, the first

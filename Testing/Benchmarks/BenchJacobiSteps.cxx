@@ -99,7 +99,8 @@ std::vector<riemann::JacobiSeed> Seeds()
   return seeds;
 }
 
-void BM_JacobiTrace(benchmark::State& state, const std::string& metricName, bool adaptive, bool packet)
+void BM_JacobiTrace(
+  benchmark::State& state, const std::string& metricName, bool adaptive, bool packet)
 {
   const auto metric = MetricNamed(metricName);
   const riemann::GeodesicOptions options = OptionsFor(adaptive);

@@ -44,16 +44,15 @@ std::vector<std::pair<std::string, std::shared_ptr<const Metric>>> JacobiMetrics
   auto metrics = Metrics();
   metrics.emplace_back("graph of 3 bumps", std::make_shared<GraphMetric>(ThreeBumps()));
   metrics.emplace_back("conformal 1.5 + 3 bumps",
-    std::make_shared<ConformalMetric>(std::make_shared<ScalarFieldSum>(1.5,
-      std::vector<std::shared_ptr<const ScalarField>>{ ThreeBumps() })));
+    std::make_shared<ConformalMetric>(std::make_shared<ScalarFieldSum>(
+      1.5, std::vector<std::shared_ptr<const ScalarField>>{ ThreeBumps() })));
   return metrics;
 }
 
 /// The unit round sphere in stereographic coordinates: n = 2 / (1 + |x|^2).
 std::shared_ptr<const Metric> RoundSphere()
 {
-  return ParseMetricDefinition(
-    R"json({"type": "conformal", "n": "2/(1 + x^2 + y^2 + z^2)"})json");
+  return ParseMetricDefinition(R"json({"type": "conformal", "n": "2/(1 + x^2 + y^2 + z^2)"})json");
 }
 
 TEST(JacobiPackets, GaussianTableThirdDerivativesEqualTheScalarField)
@@ -129,7 +128,8 @@ TEST(JacobiPackets, EveryFamilyJacobiAccelerationsEqualTheScalarOnes)
         }
         // The SIMD families use their own closed forms: equal to rounding
         // of the terms (the scalar path goes through g^-1 and d Gamma).
-        const double scale = std::max({ 1.0, a.norm(), variations[0].norm(), variations[1].norm() });
+        const double scale =
+          std::max({ 1.0, a.norm(), variations[0].norm(), variations[1].norm() });
         EXPECT_LT((dy.V.Lane(l) - a).norm(), 1e-11 * scale) << "lane " << l;
         EXPECT_LT((dy.DJ[0].Lane(l) - variations[0]).norm(), 1e-11 * scale) << "lane " << l;
         EXPECT_LT((dy.DJ[1].Lane(l) - variations[1]).norm(), 1e-11 * scale) << "lane " << l;
@@ -309,8 +309,7 @@ TEST(JacobiPackets, RoundSphereFieldsAndConjugatePointsAreExact)
     EXPECT_NEAR(found[i][0].ArcLength, Pi, 1e-7) << "direction " << i;
     EXPECT_EQ(found[i][0].Multiplicity, 2) << "direction " << i;
     // The one-direction search gives the same point.
-    const auto scalar =
-      FindConjugatePoints(*sphere, observer, directions[i], options, 1e-8, 2);
+    const auto scalar = FindConjugatePoints(*sphere, observer, directions[i], options, 1e-8, 2);
     ASSERT_EQ(scalar.size(), 1u);
     EXPECT_NEAR(found[i][0].ArcLength, scalar[0].ArcLength, 1e-9) << "direction " << i;
     EXPECT_LT((found[i][0].Point - scalar[0].Point).norm(), 1e-8) << "direction " << i;

@@ -170,8 +170,8 @@ TEST(PacketCurvature, EigenvaluesAndInverseEqualEigen)
         // As the scalar path computes it (Eigen::LLT), to rounding times
         // the condition number (1e6 at most here).
         const Mat3 expected = Eigen::LLT<Mat3>(a).solve(Mat3::Identity());
-        EXPECT_LT((inverse.Lane(l) - expected).cwiseAbs().maxCoeff(),
-          1e-9 * expected.cwiseAbs().maxCoeff())
+        EXPECT_LT(
+          (inverse.Lane(l) - expected).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff())
           << a;
       }
       else
