@@ -387,6 +387,36 @@ bool ExpressionTensorField::EvaluateSecond(
   return true;
 }
 
+LaneMask ExpressionTensorField::EvaluateSecondPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  const CompiledExpressions& c = *this->Compiled;
+  // 6 sources compiled to second order: 6 x 10 outputs of PacketWidth lanes.
+  alignas(64) double out[6 * 10 * PacketWidth];
+  c.EvaluatePacket(
+    x, this->Inputs.Time, this->Inputs.ParameterValues.data(), out, SecondDerivatives);
+  auto outputLanes = [&](int index) { return out + index * PacketWidth; };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = i; j < 3; ++j)
+    {
+      const int source = Upper(i, j);
+      const int e = SymmetricEntryOf[i][j];
+      std::copy_n(outputLanes(c.OutputIndex(source, 0)), PacketWidth, jet.G.C[e]);
+      for (int k = 0; k < 3; ++k)
+      {
+        std::copy_n(outputLanes(c.OutputIndex(source, 1, k)), PacketWidth, jet.D[k].C[e]);
+        for (int l = k; l < 3; ++l)
+        {
+          std::copy_n(outputLanes(c.OutputIndex(source, 2, k, l)), PacketWidth,
+            jet.DD[SymmetricEntryOf[k][l]].C[e]);
+        }
+      }
+    }
+  }
+  return lanes;
+}
+
 std::string ExpressionTensorField::Describe() const
 {
   return "g(" + Joined(this->Components) + ")";

@@ -86,6 +86,9 @@ public:
   /// The full tape (compiled to second order): g, dg and d2g.
   bool EvaluateSecond(
     const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
+  /// The tape on the packet (ExpressionPacketInterpreter.cxx).
+  LaneMask EvaluateSecondPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const override;
   std::string Describe() const override;
   std::string EmitGlsl(GlslBuilder& builder) const override;
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

@@ -1,7 +1,7 @@
 #include "Metric.h"
 
 #include "Christoffel.h"
-#include "JacobiField.h"
+#include "PacketCurvature.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -43,29 +43,11 @@ LaneMask Metric::AccelerationPacket(
 LaneMask Metric::JacobiAccelerationPacket(
   const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const
 {
-  LaneMask defined = 0;
-  for (int l = 0; l < PacketWidth; ++l)
-  {
-    Vec3 a = Vec3::Zero();
-    Vec3 variations[2] = { Vec3::Zero(), Vec3::Zero() };
-    const Vec3 j[2] = { y.J[0].Lane(l), y.J[1].Lane(l) };
-    const Vec3 dj[2] = { y.DJ[0].Lane(l), y.DJ[1].Lane(l) };
-    if (HasLane(lanes, l) &&
-      JacobiAccelerations(*this, y.X.Lane(l), y.V.Lane(l), j, dj, a, variations))
-    {
-      defined |= LaneMask{ 1 } << l;
-    }
-    else
-    {
-      a.setZero();
-      variations[0].setZero();
-      variations[1].setZero();
-    }
-    dy.V.SetLane(l, a);
-    dy.DJ[0].SetLane(l, variations[0]);
-    dy.DJ[1].SetLane(l, variations[1]);
-  }
-  return defined;
+  // g and its derivatives from the family (lane by lane unless it has a
+  // packet form), then the connection and the contraction on the packet.
+  PacketTensorJet jet;
+  const LaneMask derived = this->TensorSecondDerivativesPacket(y.X, jet, lanes);
+  return JacobiAccelerationsFromTensorJet(jet, y, dy) & derived & lanes;
 }
 
 void Metric::VolumeFormPacket(const PacketVec3& x, double* volume, LaneMask lanes) const

@@ -79,9 +79,10 @@ public:
    * variation (y.J[k], y.DJ[k]), dy.DJ[k] = -(d_J Gamma)(v, v)
    * - 2 Gamma(v, DJ), the linearisation of a. Only dy.V and dy.DJ are
    * written. Returns the lanes of `lanes` where all are defined and finite.
-   * The default computes them lane by lane from ChristoffelAndDerivatives
-   * (Curvature.h); the graph and conformal families override it with SIMD
-   * kernels on their providers' packet jets.
+   * The default takes TensorSecondDerivativesPacket() and computes the
+   * Christoffel symbols, their derivatives and the contractions on the
+   * packet (PacketCurvature.h); the graph and conformal families override
+   * it with the derivatives of their closed-form accelerations.
    */
   virtual LaneMask JacobiAccelerationPacket(
     const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const;

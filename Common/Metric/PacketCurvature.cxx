@@ -193,16 +193,23 @@ HWY_INLINE void Eigenvalues(Matrix a, V (&eigenvalues)[3])
   eigenvalues[1] = hn::Max(hn::Min(x, y), hn::Min(hn::Max(x, y), z));
 }
 
-/**
- * Curvature.cxx's steps on lanes [o, o + N): Christoffel symbols and their
- * derivatives, Ricci (as the contraction R^j_ijk of the Riemann tensor),
- * the coordinate sectional curvatures, then the identities of dimension 3
- * (PacketCurvature.h) for the sectional extremes and |Rm|.
- */
-HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out, int o)
+/// g, its Cholesky factor and inverse, the Christoffel symbols and their
+/// derivatives on lanes [o, o + N): ChristoffelAndDerivatives of Curvature.h.
+struct Connection
+{
+  Matrix G;
+  Cholesky Factors;
+  Matrix Inverse;
+  /// Gamma[m][i][j] = Gamma^m_ij.
+  V Gamma[3][3][3];
+  /// DGamma[l][m][i][j] = d_l Gamma^m_ij.
+  V DGamma[3][3][3][3];
+};
+
+HWY_INLINE void ConnectionAt(const PacketTensorJet& jet, int o, Connection& c)
 {
   const D d;
-  const Matrix g = LoadSymmetric(jet.G, o);
+  c.G = LoadSymmetric(jet.G, o);
   Matrix dg[3];
   Matrix d2g[3][3];
   for (int k = 0; k < 3; ++k)
@@ -213,10 +220,11 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
       d2g[k][l] = LoadSymmetric(jet.DD[SymmetricEntryOf[k][l]], o);
     }
   }
-  const Cholesky cholesky = Factor(g);
-  const Matrix ginv = InverseOf(cholesky);
+  c.Factors = Factor(c.G);
+  c.Inverse = InverseOf(c.Factors);
+  const Matrix& ginv = c.Inverse;
 
-  // Step 1: gamma[m][i][j] = Gamma^m_ij = g^mk Gamma_kij, with
+  // Step 1: Gamma^m_ij = g^mk Gamma_kij, with
   // Gamma_kij = 1/2 (d_i g_jk + d_j g_ik - d_k g_ij).
   V lowered[3][3][3];
   for (int k = 0; k < 3; ++k)
@@ -230,7 +238,6 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
       }
     }
   }
-  V gamma[3][3][3];
   for (int m = 0; m < 3; ++m)
   {
     for (int i = 0; i < 3; ++i)
@@ -239,14 +246,13 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
       {
         V sum = hn::Mul(ginv.m[m][0], lowered[0][i][j]);
         sum = hn::MulAdd(ginv.m[m][1], lowered[1][i][j], sum);
-        gamma[m][i][j] = hn::MulAdd(ginv.m[m][2], lowered[2][i][j], sum);
+        c.Gamma[m][i][j] = hn::MulAdd(ginv.m[m][2], lowered[2][i][j], sum);
       }
     }
   }
 
-  // Step 2: dGamma[l][m][i][j] = d_l Gamma^m_ij
+  // Step 2: d_l Gamma^m_ij
   //   = -g^ma (d_l g_ab) Gamma^b_ij + g^mb 1/2 (d_l d_i g_jb + d_l d_j g_ib - d_l d_b g_ij).
-  V dGamma[3][3][3][3];
   for (int l = 0; l < 3; ++l)
   {
     V first[3][3][3];
@@ -281,13 +287,31 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
           for (int b = 0; b < 3; ++b)
           {
             value = hn::MulAdd(
-              ginv.m[m][b], first[b][i][j], hn::NegMulAdd(a[m][b], gamma[b][i][j], value));
+              ginv.m[m][b], first[b][i][j], hn::NegMulAdd(a[m][b], c.Gamma[b][i][j], value));
           }
-          dGamma[l][m][i][j] = dGamma[l][m][j][i] = value;
+          c.DGamma[l][m][i][j] = c.DGamma[l][m][j][i] = value;
         }
       }
     }
   }
+}
+
+/**
+ * Curvature.cxx's steps on lanes [o, o + N): the connection (ConnectionAt),
+ * Ricci (as the contraction R^j_ijk of the Riemann tensor), the coordinate
+ * sectional curvatures, then the identities of dimension 3
+ * (PacketCurvature.h) for the sectional extremes and |Rm|.
+ */
+HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out, int o)
+{
+  const D d;
+  Connection connection;
+  ConnectionAt(jet, o, connection);
+  const Matrix& g = connection.G;
+  const Matrix& ginv = connection.Inverse;
+  const Cholesky& cholesky = connection.Factors;
+  const auto& gamma = connection.Gamma;
+  const auto& dGamma = connection.DGamma;
 
   // Step 3: R^l_ijk = d_j Gamma^l_ik - d_k Gamma^l_ij + Gamma^l_jm Gamma^m_ik
   // - Gamma^l_km Gamma^m_ij, only the components Ricci and the coordinate
@@ -378,6 +402,76 @@ HWY_INLINE LaneMask CurvatureAt(const PacketTensorJet& jet, PacketCurvature& out
     }
   }
   return BitsAt(d, defined, o);
+}
+
+/**
+ * The Jacobi system's accelerations on lanes [o, o + N) from the
+ * connection: a^m = -Gamma^m_ij v^i v^j and, per variation (X, V),
+ * A^m = -X^l d_l Gamma^m_ij v^i v^j - 2 Gamma^m_ij v^i V^j (JacobiField.h).
+ */
+HWY_INLINE LaneMask JacobiAt(
+  const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy, int o)
+{
+  const D d;
+  Connection c;
+  ConnectionAt(jet, o, c);
+  V v[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    v[i] = hn::Load(d, y.V.C[i] + o);
+  }
+  // contract(t, u, w) = t_ij u^i w^j for a symmetric t.
+  const auto contract = [&](const V(&t)[3][3], const V(&u)[3], const V(&w)[3])
+  {
+    V sum = hn::Zero(d);
+    for (int i = 0; i < 3; ++i)
+    {
+      const V row = hn::MulAdd(t[i][2], w[2], hn::MulAdd(t[i][1], w[1], hn::Mul(t[i][0], w[0])));
+      sum = hn::MulAdd(u[i], row, sum);
+    }
+    return sum;
+  };
+  M ok = c.Factors.Positive;
+  for (int m = 0; m < 3; ++m)
+  {
+    const V a = hn::Neg(contract(c.Gamma[m], v, v));
+    hn::Store(a, d, dy.V.C[m] + o);
+    ok = hn::And(ok, hn::IsFinite(a));
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    V x[3];
+    V w[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      x[i] = hn::Load(d, y.J[k].C[i] + o);
+      w[i] = hn::Load(d, y.DJ[k].C[i] + o);
+    }
+    for (int m = 0; m < 3; ++m)
+    {
+      V value = hn::Mul(hn::Set(d, -2.0), contract(c.Gamma[m], v, w));
+      for (int l = 0; l < 3; ++l)
+      {
+        value = hn::NegMulAdd(x[l], contract(c.DGamma[l][m], v, v), value);
+      }
+      hn::Store(value, d, dy.DJ[k].C[m] + o);
+      ok = hn::And(ok, hn::IsFinite(value));
+    }
+  }
+  return BitsAt(d, ok, o);
+}
+
+LaneMask JacobiAccelerationsFromTensorJetImpl(
+  const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy)
+{
+  const D d;
+  const int n = static_cast<int>(hn::Lanes(d));
+  LaneMask defined = 0;
+  for (int o = 0; o < PacketWidth; o += n)
+  {
+    defined |= JacobiAt(jet, y, dy, o);
+  }
+  return defined;
 }
 
 LaneMask CurvatureFromTensorJetImpl(const PacketTensorJet& jet, PacketCurvature& curvature)
@@ -554,6 +648,7 @@ HWY_AFTER_NAMESPACE();
 namespace riemann
 {
 HWY_EXPORT(CurvatureFromTensorJetImpl);
+HWY_EXPORT(JacobiAccelerationsFromTensorJetImpl);
 HWY_EXPORT(SymmetricEigenvaluesImpl);
 HWY_EXPORT(InverseTensorImpl);
 HWY_EXPORT(GraphTensorJetFromJetImpl);
@@ -570,6 +665,12 @@ LaneMask ComputeCurvature(
   PacketTensorJet jet;
   const LaneMask derived = metric.TensorSecondDerivativesPacket(x, jet, lanes);
   return CurvatureFromTensorJet(jet, curvature) & derived & lanes;
+}
+
+LaneMask JacobiAccelerationsFromTensorJet(
+  const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy)
+{
+  return HWY_DYNAMIC_DISPATCH(JacobiAccelerationsFromTensorJetImpl)(jet, y, dy);
 }
 
 void SymmetricEigenvalues(const PacketSym3& a, double (&eigenvalues)[3][PacketWidth])

@@ -57,6 +57,16 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask CurvatureFromTensorJet(
   const PacketTensorJet& jet, PacketCurvature& curvature);
 
 /**
+ * The Jacobi system's accelerations (Metric::JacobiAccelerationPacket) from
+ * g and its first and second derivatives, through the Christoffel symbols
+ * and their derivatives on the packet: what every family without a closed
+ * form of its own runs. Returns the lanes where g is positive definite and
+ * all are finite.
+ */
+RIEMANNCOMMONMETRIC_EXPORT LaneMask JacobiAccelerationsFromTensorJet(
+  const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy);
+
+/**
  * The eigenvalues of a symmetric matrix per lane, ascending:
  * eigenvalues[0] <= eigenvalues[1] <= eigenvalues[2].
  */

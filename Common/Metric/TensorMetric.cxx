@@ -1,9 +1,12 @@
 #include "TensorMetric.h"
 
+#include "PacketCurvature.h"
+
 #include "Christoffel.h"
 
 #include <Eigen/Cholesky>
 
+#include <cmath>
 #include <sstream>
 
 namespace riemann
@@ -89,6 +92,75 @@ bool TensorMetric::TensorSecondDerivatives(
     }
   }
   return finite && Eigen::LLT<Mat3>(g).info() == Eigen::Success;
+}
+
+LaneMask TensorField::EvaluateSecondPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  LaneMask done = 0;
+  Mat3 g;
+  Mat3Stack dg;
+  std::array<Mat3Stack, 3> d2g;
+  for (int l = 0; l < PacketWidth; ++l)
+  {
+    const bool ok = HasLane(lanes, l) && this->EvaluateSecond(x.Lane(l), g, dg, d2g);
+    if (!ok)
+    {
+      g.setIdentity();
+      for (int k = 0; k < 3; ++k)
+      {
+        dg[k].setZero();
+        for (Mat3& m : d2g[k])
+        {
+          m.setZero();
+        }
+      }
+    }
+    done |= ok ? LaneMask{ 1 } << l : 0;
+    jet.G.SetLane(l, g);
+    for (int k = 0; k < 3; ++k)
+    {
+      jet.D[k].SetLane(l, dg[k]);
+      for (int m = k; m < 3; ++m)
+      {
+        jet.DD[SymmetricEntryOf[k][m]].SetLane(l, d2g[k][m]);
+      }
+    }
+  }
+  return done;
+}
+
+LaneMask TensorMetric::TensorSecondDerivativesPacket(
+  const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const
+{
+  // As TensorSecondDerivatives: every entry finite and g positive definite
+  // (the Cholesky of InverseTensor).
+  LaneMask defined = this->Field->EvaluateSecondPacket(x, jet, lanes);
+  PacketSym3 inverse;
+  defined &= riemann::InverseTensor(jet.G, inverse);
+  const auto finite = [&defined](const PacketSym3& m)
+  {
+    for (int e = 0; e < 6; ++e)
+    {
+      for (int l = 0; l < PacketWidth; ++l)
+      {
+        if (!std::isfinite(m.C[e][l]))
+        {
+          defined &= ~(LaneMask{ 1 } << l);
+        }
+      }
+    }
+  };
+  finite(jet.G);
+  for (int k = 0; k < 3; ++k)
+  {
+    finite(jet.D[k]);
+  }
+  for (const PacketSym3& m : jet.DD)
+  {
+    finite(m);
+  }
+  return defined;
 }
 
 bool TensorMetric::Christoffel(const Vec3& p, Mat3Stack& gamma) const

@@ -37,6 +37,13 @@ public:
     (void)d2g;
     return false;
   }
+  /**
+   * EvaluateSecond at PacketWidth points into `jet` (Packet.h); returns the
+   * lanes of `lanes` where it succeeds. The default calls EvaluateSecond()
+   * lane by lane; typed fields run their tape on the packet.
+   */
+  virtual LaneMask EvaluateSecondPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const;
   virtual std::string Describe() const = 0;
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
   /**
@@ -79,6 +86,8 @@ public:
   /// False where the field has no second derivatives (TensorField::EvaluateSecond refuses).
   bool TensorSecondDerivatives(
     const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
+  LaneMask TensorSecondDerivativesPacket(
+    const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
   void EmitGlsl(GlslBuilder& builder) const override;
 
