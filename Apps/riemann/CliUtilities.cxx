@@ -264,19 +264,46 @@ void WriteAtomically(const std::string& path, const std::function<bool(const std
   }
 }
 
-bool WritePolyDataFile(vtkPolyData* data, const std::string& path)
+void SetCompressor(vtkXMLWriter* writer, const std::string& compress)
+{
+  if (compress == "none")
+  {
+    writer->SetCompressorTypeToNone();
+  }
+  else if (compress == "zlib")
+  {
+    writer->SetCompressorTypeToZLib();
+  }
+  else
+  {
+    writer->SetCompressorTypeToLZ4();
+  }
+}
+
+void AddCompressOption(CLI::App* command, std::string& compress)
+{
+  command
+    ->add_option("--compress", compress,
+      "Compression of .vti/.vtp output: lz4 (default, fast), zlib (smallest, slow) or none")
+    ->check(CLI::IsMember({ "lz4", "zlib", "none" }));
+}
+
+bool WritePolyDataFile(vtkPolyData* data, const std::string& path, const std::string& compress)
 {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
   writer->SetDataModeToAppended();
+  SetCompressor(writer, compress);
   return writer->Write() == 1 && writer->GetErrorCode() == 0;
 }
 
-void WritePolyDataAtomically(vtkPolyData* data, const std::string& path)
+void WritePolyDataAtomically(
+  vtkPolyData* data, const std::string& path, const std::string& compress)
 {
-  WriteAtomically(
-    path, [data](const std::string& temporary) { return WritePolyDataFile(data, temporary); });
+  WriteAtomically(path,
+    [data, &compress](const std::string& temporary)
+    { return WritePolyDataFile(data, temporary, compress); });
 }
 
 IntegratorType ParseIntegratorOption(const std::string& name)

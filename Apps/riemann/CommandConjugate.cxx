@@ -3,8 +3,8 @@
 // .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet); with
 // --surface, the caustic as sheets over the direction grid (.vtp).
 #include "CliUtilities.h"
-#include "CsvWriter.h"
 #include "Commands.h"
+#include "CsvWriter.h"
 #include "ProgressBar.h"
 
 #include "vtkCellData.h"
@@ -12,8 +12,8 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannConjugateLocus.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
@@ -45,6 +45,7 @@ struct ConjugateArguments
   double Tolerance = 1e-8;
   long long Count = 1;
   std::string Integrator = "dp45";
+  std::string Compress = "lz4";
   std::string Output;
   std::string Surface;
 };
@@ -127,8 +128,8 @@ void RunConjugate(const ConjugateArguments& args)
   const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
   if (integrator == IntegratorType::DormandPrince45 && args.MaximumStep < args.Step)
   {
-    throw Failure("--max-step " + FormatNumber(args.MaximumStep) +
-        ": must be at least --step " + FormatNumber(args.Step) + " (the initial step of dp45)",
+    throw Failure("--max-step " + FormatNumber(args.MaximumStep) + ": must be at least --step " +
+        FormatNumber(args.Step) + " (the initial step of dp45)",
       2);
   }
 
@@ -161,12 +162,12 @@ void RunConjugate(const ConjugateArguments& args)
       {
         return WriteCsv(points, temporary);
       }
-      return WritePolyDataFile(points, temporary);
+      return WritePolyDataFile(points, temporary, args.Compress);
     });
 
   if (!args.Surface.empty())
   {
-    WritePolyDataAtomically(locus->GetOutput(1), args.Surface);
+    WritePolyDataAtomically(locus->GetOutput(1), args.Surface, args.Compress);
   }
 
   std::set<long long> withPoints;
@@ -222,8 +223,7 @@ void RegisterConjugateCommand(CLI::App& app)
       "--tolerance: tolerance / 100). With euler and rk4 the step decides the accuracy")
     ->check(IntegratorName());
   command
-    ->add_option(
-      "--tolerance", args->Tolerance,
+    ->add_option("--tolerance", args->Tolerance,
       "Accuracy of the conjugate points in arc length, and their resolution: two closer than "
       "this are one point of multiplicity 2 (default 1e-8)")
     ->check(FiniteNumber(1e-15, 1.0));
@@ -231,6 +231,7 @@ void RegisterConjugateCommand(CLI::App& app)
     ->add_option("--count,-k", args->Count,
       "Conjugate points kept per direction, first ones first (default 1)")
     ->check(WholeNumber(1, 1000000));
+  AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->add_option("--surface", args->Surface,
     "Also write the caustic as sheets over the direction grid (.vtp; cell data Sheet and "

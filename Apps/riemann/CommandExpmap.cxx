@@ -7,8 +7,8 @@
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannExponentialMap.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
@@ -37,6 +37,7 @@ struct ExpmapArguments
   std::string Integrator = "rk4";
   double Step = 0.01;
   double Tolerance = 1e-8;
+  std::string Compress = "lz4";
   std::string Output;
   std::string Wavefronts;
 };
@@ -148,18 +149,17 @@ void RunExpmap(const ExpmapArguments& args)
   progress->Finish();
   errors->ThrowIfAny("exponential map failed:");
 
-  WritePolyDataAtomically(expmap->GetOutput(0), args.Output);
+  WritePolyDataAtomically(expmap->GetOutput(0), args.Output, args.Compress);
   if (!args.Wavefronts.empty())
   {
-    WritePolyDataAtomically(expmap->GetOutput(1), args.Wavefronts);
+    WritePolyDataAtomically(expmap->GetOutput(1), args.Wavefronts, args.Compress);
   }
   std::cerr << "riemann expmap: " << expmap->GetOutput(0)->GetNumberOfLines()
             << " geodesic(s) up to arc length " << args.Length << " -> " << args.Output;
   if (!args.Wavefronts.empty())
   {
     std::cerr << ", " << radii.size() << " wavefront(s) ("
-              << expmap->GetOutput(1)->GetNumberOfPolys() << " triangles) -> "
-              << args.Wavefronts;
+              << expmap->GetOutput(1)->GetNumberOfPolys() << " triangles) -> " << args.Wavefronts;
   }
   std::cerr << "\n";
 }
@@ -203,6 +203,7 @@ void RegisterExpmapCommand(CLI::App& app)
     ->check(PositiveNumber());
   command->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
     ->check(FiniteNumber(1e-15, 1.0));
+  AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Ray bundle (.vtp)")->required();
   command->add_option(
     "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (.vtp triangles)");

@@ -2,8 +2,8 @@
 // regular grid, written as .vti (VTK XML image) or .csv (x,y,z, then one
 // column per point-data component, one row per grid point).
 #include "CliUtilities.h"
-#include "CsvWriter.h"
 #include "Commands.h"
+#include "CsvWriter.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -40,26 +40,6 @@ struct FieldsArguments
   std::string Compress = "lz4";
   std::string Output;
 };
-
-/// The .vti compression: LZ4 by default (at 80^3, zlib took 2.75 s of a
-/// 3.2 s run for an 11 % smaller file; LZ4 is several times faster), zlib for
-/// the smallest file, none for the fastest write. ParaView and VTK's readers
-/// read all three.
-void SetCompressor(vtkXMLImageDataWriter* writer, const std::string& name)
-{
-  if (name == "none")
-  {
-    writer->SetCompressorTypeToNone();
-  }
-  else if (name == "zlib")
-  {
-    writer->SetCompressorTypeToZLib();
-  }
-  else
-  {
-    writer->SetCompressorTypeToLZ4();
-  }
-}
 
 constexpr long long MaximumPerAxis = 512;
 constexpr long long MaximumPoints = 20000000;
@@ -268,10 +248,7 @@ void RegisterFieldsCommand(CLI::App& app)
         return CheckDimensions(text, dims);
       },
       "NX,NY,NZ"));
-  command
-    ->add_option("--compress", args->Compress,
-      "Compression of .vti output: lz4 (default, fast), zlib (smallest, slow) or none")
-    ->check(CLI::IsMember({ "lz4", "zlib", "none" }));
+  AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Output file: .vti or .csv")->required();
   command->callback([args]() { RunFields(*args); });
 }

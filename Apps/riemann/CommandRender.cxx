@@ -26,8 +26,8 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannCPURayTracer.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayBundle.h"
 #include "vtkRiemannRayTracePass.h"
@@ -467,8 +467,8 @@ void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetu
     args.MaximumLength > 0 ? args.MaximumLength : scene.Rays.MaximumLength);
   settings->SetMaximumError(scene.Rays.Tolerance);
   rays.UseSceneSettings = !overrides && !args.Equirectangular;
-  rays.Projection = args.Equirectangular || (scene.HasCamera &&
-                                              scene.Camera.Mode == riemann::Projection::Equirectangular)
+  rays.Projection = args.Equirectangular ||
+      (scene.HasCamera && scene.Camera.Mode == riemann::Projection::Equirectangular)
     ? vtkRiemannRayTracePass::EQUIRECTANGULAR
     : vtkRiemannRayTracePass::PERSPECTIVE;
 }
@@ -575,7 +575,8 @@ public:
   }
 
 private:
-  void ReportHitError(const std::vector<riemann::PixelResult>& pixels, const std::string& picturePath)
+  void ReportHitError(
+    const std::vector<riemann::PixelResult>& pixels, const std::string& picturePath)
   {
     const riemann::HitErrorSummary summary = riemann::SummarizeHitError(pixels);
     std::cerr << "riemann render: hit error against the exact geodesic: max " << summary.Maximum
@@ -612,9 +613,8 @@ void CompareWithReference(const Image& picture, const RenderArguments& args)
   if (difference < 0)
   {
     throw Failure("the picture (" + std::to_string(picture.Width) + "x" +
-        std::to_string(picture.Height) + ") and the reference (" +
-        std::to_string(reference.Width) + "x" + std::to_string(reference.Height) +
-        ") differ in size",
+        std::to_string(picture.Height) + ") and the reference (" + std::to_string(reference.Width) +
+        "x" + std::to_string(reference.Height) + ") differ in size",
       3);
   }
   std::cerr << "riemann render: difference to " << args.Reference << ": " << difference
@@ -725,8 +725,7 @@ void RegisterRenderCommand(CLI::App& app)
       "scene's)")
     ->check(PositiveNumber(179.0));
   command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
-  command
-    ->add_option("--integrator", args->Integrator, "euler, rk4 or dp45 (default: the scene's)")
+  command->add_option("--integrator", args->Integrator, "euler, rk4 or dp45 (default: the scene's)")
     ->check(IntegratorName());
   command->add_option("--step", args->Step, "Step in arc length (default: the scene's)")
     ->check(FiniteNumber(1e-6, 100.0));

@@ -1,8 +1,8 @@
 // riemann trace: geodesics of a metric from one seed or a CSV of seeds, written
 // as .vtp (VTK XML polylines) or .csv (seed_id,step,t,x,y,z,vx,vy,vz).
 #include "CliUtilities.h"
-#include "CsvWriter.h"
 #include "Commands.h"
+#include "CsvWriter.h"
 #include "GeodesicTrace.h"
 
 #include "vtkCellArray.h"
@@ -15,8 +15,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannGeodesicTracer.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
@@ -48,6 +48,7 @@ struct TraceArguments
   double Tolerance = 1e-8;
   long long MaximumSteps = 100000;
   bool TransverseJacobian = false;
+  std::string Compress = "lz4";
   std::string Output;
 };
 
@@ -248,7 +249,7 @@ void RunTrace(const TraceArguments& args)
       {
         return WriteCsv(lines, temporary);
       }
-      return WritePolyDataFile(lines, temporary);
+      return WritePolyDataFile(lines, temporary, args.Compress);
     });
 
   // A one-line summary on stderr: how many lines, and why they stopped.
@@ -306,6 +307,7 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_flag("--transverse-jacobian", args->TransverseJacobian,
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
+  AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->callback([args]() { RunTrace(*args); });
 }

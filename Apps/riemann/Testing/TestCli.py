@@ -615,6 +615,53 @@ class ExpmapTests(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def test_every_vtp_output_takes_compress(self):
+        # trace, expmap (bundle and wavefronts) and conjugate (points and
+        # surface) write LZ4 by default, as fields; --compress zlib|none
+        # change it, and the values read back are the same.
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        def header(path):
+            with open(path, "rb") as f:
+                return f.read(600).decode("latin-1")
+
+        commands = {
+            "trace": (["trace", "--seed", "0.2,0.1,-0.3", "--direction", "1,0.2,0", "--length", "2"],
+                      None),
+            "expmap": (["expmap", "--seed", "0.2,0.1,-0.3", "--directions", "12", "--length", "2",
+                        "--radii", "1"], "--wavefronts"),
+            "conjugate": (["conjugate", "--seed", "0.2,0.1,-0.3", "--directions", "12",
+                           "--length", "4"], "--surface"),
+        }
+        for name, (args, second) in commands.items():
+            points = {}
+            for compress, expected in (("lz4", 'compressor="vtkLZ4DataCompressor"'),
+                                       ("zlib", 'compressor="vtkZLibDataCompressor"'),
+                                       ("none", None)):
+                with self.subTest(command=name, compress=compress):
+                    out = os.path.join(self.dir, "%s-%s.vtp" % (name, compress))
+                    extra = os.path.join(self.dir, "%s-%s-2.vtp" % (name, compress))
+                    call = args + ["--metric", self.metric, "-o", out]
+                    if second:
+                        call += [second, extra]
+                    if compress != "lz4":
+                        call += ["--compress", compress]
+                    status, _, err = run(*call)
+                    self.assertEqual(status, 0, err)
+                    for path in [out] + ([extra] if second else []):
+                        if expected:
+                            self.assertIn(expected, header(path), path)
+                        else:
+                            self.assertNotIn("compressor=", header(path), path)
+                    reader = vtkXMLPolyDataReader()
+                    reader.SetFileName(out)
+                    reader.Update()
+                    points[compress] = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+                    self.assertGreater(len(points[compress]), 0)
+            self.assertTrue((points["lz4"] == points["zlib"]).all(), name)
+            self.assertTrue((points["lz4"] == points["none"]).all(), name)
+
     def test_bundle_and_wavefronts(self):
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
         rays = os.path.join(self.dir, "rays.vtp")
