@@ -70,28 +70,14 @@ LaneMask Metric::TensorSecondDerivativesPacket(
   std::array<Mat3Stack, 3> d2g;
   for (int l = 0; l < PacketWidth; ++l)
   {
-    const bool ok = HasLane(lanes, l) && this->TensorSecondDerivatives(x.Lane(l), g, dg, d2g);
-    if (!ok)
+    if (HasLane(lanes, l) && this->TensorSecondDerivatives(x.Lane(l), g, dg, d2g))
     {
-      g.setIdentity();
-      for (int k = 0; k < 3; ++k)
-      {
-        dg[k].setZero();
-        for (Mat3& m : d2g[k])
-        {
-          m.setZero();
-        }
-      }
+      defined |= LaneMask{ 1 } << l;
+      jet.SetLane(l, g, dg, d2g);
     }
-    defined |= ok ? LaneMask{ 1 } << l : 0;
-    jet.G.SetLane(l, g);
-    for (int k = 0; k < 3; ++k)
+    else
     {
-      jet.D[k].SetLane(l, dg[k]);
-      for (int m = k; m < 3; ++m)
-      {
-        jet.DD[SymmetricEntryOf[k][m]].SetLane(l, d2g[k][m]);
-      }
+      jet.SetFlatLane(l);
     }
   }
   return defined;

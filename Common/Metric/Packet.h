@@ -86,15 +86,38 @@ struct alignas(64) PacketSym3
  * needs): D[k] = d_k g and DD[e] = d_k d_l g for the pair (k, l) of the
  * SymmetricEntry e (XX = (0, 0), XY = (0, 1), ...).
  */
+/// The SymmetricEntry of (i, j), any order.
+constexpr int SymmetricEntryOf[3][3] = { { XX, XY, XZ }, { XY, YY, YZ }, { XZ, YZ, ZZ } };
+
 struct alignas(64) PacketTensorJet
 {
   PacketSym3 G;
   PacketSym3 D[3];
   PacketSym3 DD[6];
-};
 
-/// The SymmetricEntry of (i, j), any order.
-constexpr int SymmetricEntryOf[3][3] = { { XX, XY, XZ }, { XY, YY, YZ }, { XZ, YZ, ZZ } };
+  /// Lane l from the scalar form (Metric::TensorSecondDerivatives').
+  void SetLane(int l, const Mat3& g, const Mat3Stack& dg, const std::array<Mat3Stack, 3>& d2g)
+  {
+    this->G.SetLane(l, g);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->D[k].SetLane(l, dg[k]);
+      for (int m = k; m < 3; ++m)
+      {
+        this->DD[SymmetricEntryOf[k][m]].SetLane(l, d2g[k][m]);
+      }
+    }
+  }
+
+  /// Lane l as flat space (g = I, no derivatives): finite filler for lanes not in use.
+  void SetFlatLane(int l)
+  {
+    const Mat3 zero = Mat3::Zero();
+    this->SetLane(l, Mat3::Identity(), { zero, zero, zero },
+      { Mat3Stack{ zero, zero, zero }, Mat3Stack{ zero, zero, zero },
+        Mat3Stack{ zero, zero, zero } });
+  }
+};
 
 /// The 10 distinct third derivatives d_i d_j d_k f, indices sorted.
 enum ThirdEntry : int

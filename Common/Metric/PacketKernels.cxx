@@ -57,14 +57,24 @@ struct JetVectors
   V Value, Gx, Gy, Gz, Hxx, Hyy, Hzz, Hxy, Hxz, Hyz;
 };
 
+/// The 10 third derivatives of a jet in registers, indexed by ThirdEntry.
+struct ThirdVectors
+{
+  V T[10];
+};
+
 /**
  * Add the bumps' value and derivatives up to Order at the points (x, y, z)
- * to `jet`, the formulas of GaussianField::Accumulate: with u = w (p - c)
- * and f = a exp(-(p - c) . u / 2), d_i f = -u_i f and
- * d_i d_j f = u_i u_j f - delta_ij w_i f.
+ * to `jet` (and, for ThirdDerivatives, to `third`), the formulas of
+ * GaussianField::Accumulate: with u = w (p - c) and
+ * f = a exp(-(p - c) . u / 2), d_i f = -u_i f,
+ * d_i d_j f = u_i u_j f - delta_ij w_i f and
+ * d_i d_j d_k f = f (delta_ij w_i u_k + delta_ik w_i u_j + delta_jk w_j u_i
+ * - u_i u_j u_k).
  */
 template <int Order>
-HWY_INLINE void AddGaussianTerms(const GaussianTerms& terms, V x, V y, V z, JetVectors& jet)
+HWY_INLINE void AddGaussianTerms(
+  const GaussianTerms& terms, V x, V y, V z, JetVectors& jet, ThirdVectors* third = nullptr)
 {
   const D d;
   const V minusHalf = hn::Set(d, -0.5);
@@ -100,69 +110,27 @@ HWY_INLINE void AddGaussianTerms(const GaussianTerms& terms, V x, V y, V z, JetV
         jet.Hxz = hn::MulAdd(fux, uz, jet.Hxz);
         jet.Hyz = hn::MulAdd(fuy, uz, jet.Hyz);
       }
+      if (Order >= ThirdDerivatives)
+      {
+        V(&t)[10] = third->T;
+        // f (w_i - u_i^2) per axis: the factor of d_i d_i d_j for j != i.
+        const V sx = hn::NegMulAdd(ux, ux, wx);
+        const V sy = hn::NegMulAdd(uy, uy, wy);
+        const V sz = hn::NegMulAdd(uz, uz, wz);
+        // d_i^3 f = f u_i (3 w_i - u_i^2).
+        const V three = hn::Set(d, 3.0);
+        t[XXX] = hn::MulAdd(fux, hn::NegMulAdd(ux, ux, hn::Mul(three, wx)), t[XXX]);
+        t[YYY] = hn::MulAdd(fuy, hn::NegMulAdd(uy, uy, hn::Mul(three, wy)), t[YYY]);
+        t[ZZZ] = hn::MulAdd(fuz, hn::NegMulAdd(uz, uz, hn::Mul(three, wz)), t[ZZZ]);
+        t[XXY] = hn::MulAdd(fuy, sx, t[XXY]);
+        t[XXZ] = hn::MulAdd(fuz, sx, t[XXZ]);
+        t[XYY] = hn::MulAdd(fux, sy, t[XYY]);
+        t[YYZ] = hn::MulAdd(fuz, sy, t[YYZ]);
+        t[XZZ] = hn::MulAdd(fux, sz, t[XZZ]);
+        t[YZZ] = hn::MulAdd(fuy, sz, t[YZZ]);
+        t[XYZ] = hn::NegMulAdd(hn::Mul(fux, uy), uz, t[XYZ]);
+      }
     }
-  }
-}
-
-/// The 10 third derivatives of a jet in registers, indexed by ThirdEntry.
-struct ThirdVectors
-{
-  V T[10];
-};
-
-/**
- * AddGaussianTerms to second order, plus the third derivatives:
- * d_i d_j d_k f = f (delta_ij w_i u_k + delta_ik w_i u_j + delta_jk w_j u_i
- * - u_i u_j u_k) (GaussianField::Accumulate's formula).
- */
-HWY_INLINE void AddGaussianTermsWithThird(
-  const GaussianTerms& terms, V x, V y, V z, JetVectors& jet, ThirdVectors& third)
-{
-  const D d;
-  const V minusHalf = hn::Set(d, -0.5);
-  const V three = hn::Set(d, 3.0);
-  const size_t count = terms.Size();
-  for (size_t k = 0; k < count; ++k)
-  {
-    const V dx = hn::Sub(x, hn::Set(d, terms.Center[0][k]));
-    const V dy = hn::Sub(y, hn::Set(d, terms.Center[1][k]));
-    const V dz = hn::Sub(z, hn::Set(d, terms.Center[2][k]));
-    const V wx = hn::Set(d, terms.InverseVariance[0][k]);
-    const V wy = hn::Set(d, terms.InverseVariance[1][k]);
-    const V wz = hn::Set(d, terms.InverseVariance[2][k]);
-    const V ux = hn::Mul(wx, dx);
-    const V uy = hn::Mul(wy, dy);
-    const V uz = hn::Mul(wz, dz);
-    const V q = hn::MulAdd(dz, uz, hn::MulAdd(dy, uy, hn::Mul(dx, ux)));
-    const V f = hn::Mul(hn::Set(d, terms.Amplitude[k]), hn::Exp(d, hn::Mul(minusHalf, q)));
-    jet.Value = hn::Add(jet.Value, f);
-    const V fux = hn::Mul(f, ux);
-    const V fuy = hn::Mul(f, uy);
-    const V fuz = hn::Mul(f, uz);
-    jet.Gx = hn::Sub(jet.Gx, fux);
-    jet.Gy = hn::Sub(jet.Gy, fuy);
-    jet.Gz = hn::Sub(jet.Gz, fuz);
-    jet.Hxx = hn::NegMulAdd(f, wx, hn::MulAdd(fux, ux, jet.Hxx));
-    jet.Hyy = hn::NegMulAdd(f, wy, hn::MulAdd(fuy, uy, jet.Hyy));
-    jet.Hzz = hn::NegMulAdd(f, wz, hn::MulAdd(fuz, uz, jet.Hzz));
-    jet.Hxy = hn::MulAdd(fux, uy, jet.Hxy);
-    jet.Hxz = hn::MulAdd(fux, uz, jet.Hxz);
-    jet.Hyz = hn::MulAdd(fuy, uz, jet.Hyz);
-    // f (w_i - u_i^2) per axis: the factor of d_i d_i d_j for j != i.
-    const V sx = hn::NegMulAdd(ux, ux, wx);
-    const V sy = hn::NegMulAdd(uy, uy, wy);
-    const V sz = hn::NegMulAdd(uz, uz, wz);
-    // d_i^3 f = f u_i (3 w_i - u_i^2).
-    third.T[XXX] = hn::MulAdd(fux, hn::NegMulAdd(ux, ux, hn::Mul(three, wx)), third.T[XXX]);
-    third.T[YYY] = hn::MulAdd(fuy, hn::NegMulAdd(uy, uy, hn::Mul(three, wy)), third.T[YYY]);
-    third.T[ZZZ] = hn::MulAdd(fuz, hn::NegMulAdd(uz, uz, hn::Mul(three, wz)), third.T[ZZZ]);
-    third.T[XXY] = hn::MulAdd(fuy, sx, third.T[XXY]);
-    third.T[XXZ] = hn::MulAdd(fuz, sx, third.T[XXZ]);
-    third.T[XYY] = hn::MulAdd(fux, sy, third.T[XYY]);
-    third.T[YYZ] = hn::MulAdd(fuz, sy, third.T[YYZ]);
-    third.T[XZZ] = hn::MulAdd(fux, sz, third.T[XZZ]);
-    third.T[YZZ] = hn::MulAdd(fuy, sz, third.T[YZZ]);
-    third.T[XYZ] = hn::NegMulAdd(hn::Mul(fux, uy), uz, third.T[XYZ]);
   }
 }
 
@@ -185,23 +153,16 @@ void AccumulateGaussianTermsOfOrder(
     const V x = hn::Load(d, p.C[0] + o);
     const V y = hn::Load(d, p.C[1] + o);
     const V z = hn::Load(d, p.C[2] + o);
-    if (Order >= ThirdDerivatives)
+    ThirdVectors third;
+    for (V& t : third.T)
     {
-      ThirdVectors third;
-      for (V& t : third.T)
-      {
-        t = hn::Zero(d);
-      }
-      AddGaussianTermsWithThird(terms, x, y, z, sum, third);
-      for (int e = 0; e < 10; ++e)
-      {
-        double* entry = jet.Third[e] + o;
-        hn::Store(hn::Add(hn::Load(d, entry), third.T[e]), d, entry);
-      }
+      t = hn::Zero(d);
     }
-    else
+    AddGaussianTerms<Order>(terms, x, y, z, sum, &third);
+    for (int e = 0; Order >= ThirdDerivatives && e < 10; ++e)
     {
-      AddGaussianTerms<Order>(terms, x, y, z, sum);
+      double* entry = jet.Third[e] + o;
+      hn::Store(hn::Add(hn::Load(d, entry), third.T[e]), d, entry);
     }
     hn::Store(hn::Add(hn::Load(d, jet.Value + o), sum.Value), d, jet.Value + o);
     if (Order >= FirstDerivatives)

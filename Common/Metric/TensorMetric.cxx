@@ -103,28 +103,14 @@ LaneMask TensorField::EvaluateSecondPacket(
   std::array<Mat3Stack, 3> d2g;
   for (int l = 0; l < PacketWidth; ++l)
   {
-    const bool ok = HasLane(lanes, l) && this->EvaluateSecond(x.Lane(l), g, dg, d2g);
-    if (!ok)
+    if (HasLane(lanes, l) && this->EvaluateSecond(x.Lane(l), g, dg, d2g))
     {
-      g.setIdentity();
-      for (int k = 0; k < 3; ++k)
-      {
-        dg[k].setZero();
-        for (Mat3& m : d2g[k])
-        {
-          m.setZero();
-        }
-      }
+      done |= LaneMask{ 1 } << l;
+      jet.SetLane(l, g, dg, d2g);
     }
-    done |= ok ? LaneMask{ 1 } << l : 0;
-    jet.G.SetLane(l, g);
-    for (int k = 0; k < 3; ++k)
+    else
     {
-      jet.D[k].SetLane(l, dg[k]);
-      for (int m = k; m < 3; ++m)
-      {
-        jet.DD[SymmetricEntryOf[k][m]].SetLane(l, d2g[k][m]);
-      }
+      jet.SetFlatLane(l);
     }
   }
   return done;

@@ -23,13 +23,11 @@
  * the same geodesics (same endpoints to 1e-10, exactly 1000 steps each) and
  * aborts otherwise: the ratios are only meaningful for equal work.
  */
-#include "GaussianField.h"
+#include "EightBumps.h"
 #include "GeodesicTrace.h"
-#include "GraphMetric.h"
 #include "HandPacketReference.h"
 #include "Integrators.h"
 #include "PacketTrace.h"
-#include "ScalarFieldSum.h"
 
 #include <benchmark/benchmark.h>
 
@@ -46,33 +44,17 @@ namespace
 using riemann::Vec3;
 using riemann::Vec6;
 
-constexpr int BumpCount = 8;
+// The 8 bumps (EightBumps.h).
+using riemann::bench::Bump;
+using riemann::bench::BumpCount;
+using riemann::bench::Bumps;
+
 constexpr int SeedCount = 64;
 constexpr int StepsPerGeodesic = 1000;
 constexpr double Step = 0.01;
 // Endpoints of the library and of the reference may differ by rounding only
 // (different operation order), amplified along 1000 steps.
 constexpr double EndpointTolerance = 1e-10;
-
-struct Bump
-{
-  double Amplitude;
-  double Center[3];
-  double Sigma[3];
-};
-
-// Amplitudes 0.3-1, centers in [-1.5, 1.5]^3, sigmas 0.4-0.8; half of them
-// anisotropic, so the Hessians have off-diagonal structure along geodesics.
-constexpr Bump Bumps[BumpCount] = {
-  { 1.00, { -1.0, -1.0, -0.5 }, { 0.60, 0.60, 0.60 } },
-  { 0.70, { 1.2, -0.8, 0.4 }, { 0.50, 0.80, 0.50 } },
-  { 0.45, { -0.3, 1.1, 1.0 }, { 0.40, 0.40, 0.70 } },
-  { 0.90, { 0.6, 0.5, -1.2 }, { 0.70, 0.50, 0.60 } },
-  { 0.30, { -1.4, 0.3, 0.8 }, { 0.80, 0.80, 0.80 } },
-  { 0.60, { 1.5, 1.4, 1.3 }, { 0.45, 0.60, 0.75 } },
-  { 0.80, { 0.0, -1.5, 1.5 }, { 0.50, 0.50, 0.50 } },
-  { 0.55, { 0.2, 0.1, 0.0 }, { 0.80, 0.40, 0.60 } },
-};
 
 /// The bumps as plain arrays (structure of arrays) for the hand-inlined loop.
 struct PlainBumps
@@ -232,13 +214,9 @@ public:
 private:
   Scene()
   {
-    std::vector<std::shared_ptr<const riemann::ScalarField>> terms;
     for (int k = 0; k < BumpCount; ++k)
     {
       const Bump& bump = Bumps[k];
-      const Vec3 center(bump.Center[0], bump.Center[1], bump.Center[2]);
-      const Vec3 sigma(bump.Sigma[0], bump.Sigma[1], bump.Sigma[2]);
-      terms.push_back(std::make_shared<riemann::GaussianField>(bump.Amplitude, center, sigma));
       this->Plain.Amplitude[k] = bump.Amplitude;
       this->Hand.Amplitude[k] = bump.Amplitude;
       for (int i = 0; i < 3; ++i)
@@ -249,8 +227,7 @@ private:
         this->Hand.InverseVariance[i][k] = this->Plain.InverseVariance[i][k];
       }
     }
-    this->Metric = std::make_shared<riemann::GraphMetric>(
-      std::make_shared<riemann::ScalarFieldSum>(0.0, std::move(terms)));
+    this->Metric = riemann::bench::GraphOfEightBumps();
 
     this->Options.Integrator = riemann::IntegratorType::RungeKutta4;
     this->Options.Step = Step;
@@ -344,7 +321,8 @@ private:
     for (const riemann::GeodesicOptions* options : { &this->Options, &this->AdaptiveOptions })
     {
       const bool adaptive = options == &this->AdaptiveOptions;
-      riemann::TraceGeodesics(*this->Metric, this->PacketSeeds.data(), SeedCount, *options, packet.data());
+      riemann::TraceGeodesics(
+        *this->Metric, this->PacketSeeds.data(), SeedCount, *options, packet.data());
       for (int first = 0; first < SeedCount; first += riemann_bench::HandLanes)
       {
         riemann_bench::HandState y = HandStart(first);
@@ -362,19 +340,24 @@ private:
         }
         else
         {
-          riemann_bench::HandPacketRungeKutta4(this->Hand, y, StepsPerGeodesic, Step, handPoints.data());
+          riemann_bench::HandPacketRungeKutta4(
+            this->Hand, y, StepsPerGeodesic, Step, handPoints.data());
         }
         for (int l = 0; l < riemann_bench::HandLanes; ++l)
         {
           const int i = first + l;
           riemann::GeodesicPath scalar;
-          riemann::TraceGeodesic(*this->Metric, this->Seeds[i].Point, this->Seeds[i].Velocity, *options, scalar);
-          if (packet[i].Reason != riemann::OutOfLength || packet[i].Points.size() != scalar.Points.size())
+          riemann::TraceGeodesic(
+            *this->Metric, this->Seeds[i].Point, this->Seeds[i].Velocity, *options, scalar);
+          if (packet[i].Reason != riemann::OutOfLength ||
+            packet[i].Points.size() != scalar.Points.size())
           {
             Fail("TraceGeodesics and TraceGeodesic took different steps", i,
-              static_cast<double>(packet[i].Points.size()) - static_cast<double>(scalar.Points.size()));
+              static_cast<double>(packet[i].Points.size()) -
+                static_cast<double>(scalar.Points.size()));
           }
-          const double packetDifference = (packet[i].Points.back() - scalar.Points.back()).cwiseAbs().maxCoeff();
+          const double packetDifference =
+            (packet[i].Points.back() - scalar.Points.back()).cwiseAbs().maxCoeff();
           if (!(packetDifference <= EndpointTolerance))
           {
             Fail("TraceGeodesics and TraceGeodesic disagree", i, packetDifference);
@@ -412,8 +395,8 @@ public:
   }
 
   /// The reference's dp45 with AdaptiveOptions.
-  void HandDormandPrince45(riemann_bench::HandState& y, double* const* points,
-    std::size_t capacity, long long* steps) const
+  void HandDormandPrince45(riemann_bench::HandState& y, double* const* points, std::size_t capacity,
+    long long* steps) const
   {
     const riemann::GeodesicOptions& o = this->AdaptiveOptions;
     riemann_bench::HandPacketDormandPrince45(this->Hand, y, o.MaximumLength, o.Step, o.Tolerance,
@@ -656,17 +639,21 @@ void BM_GeodesicPacketTrace(benchmark::State& state, bool adaptive, bool drift)
   const Scene& scene = Scene::Get();
   const riemann::GeodesicOptions options = OptionsFor(scene, adaptive, drift);
   std::vector<riemann::GeodesicPath> paths(SeedCount);
-  riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+  riemann::TraceGeodesics(
+    *scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
   for (auto _ : state)
   {
-    riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+    riemann::TraceGeodesics(
+      *scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
     benchmark::DoNotOptimize(paths.back().Points.back());
   }
   ReportStepsOf(state, scene, adaptive, 1);
 }
 BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, rk4_drift, false, true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, rk4_no_drift, false, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, dp45_no_drift, true, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, rk4_no_drift, false, false)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GeodesicPacketTrace, dp45_no_drift, true, false)
+  ->Unit(benchmark::kMillisecond);
 
 void BM_GeodesicPacketTraceAllCores(benchmark::State& state, bool adaptive, bool drift)
 {
@@ -674,7 +661,8 @@ void BM_GeodesicPacketTraceAllCores(benchmark::State& state, bool adaptive, bool
   const riemann::GeodesicOptions options = OptionsFor(scene, adaptive, drift);
   const unsigned threadCount = ThreadCount();
   std::vector<riemann::GeodesicPath> paths(SeedCount);
-  riemann::TraceGeodesics(*scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
+  riemann::TraceGeodesics(
+    *scene.Metric, scene.PacketSeeds.data(), SeedCount, options, paths.data());
   for (auto _ : state)
   {
     RunOnAllCores(threadCount,
@@ -746,7 +734,8 @@ void BM_GeodesicHandPacketAllCores(benchmark::State& state, bool adaptive)
   for (auto _ : state)
   {
     RunOnAllCores(threadCount,
-      [&](unsigned t, int begin, int end) { HandPackets(scene, adaptive, begin, end, buffers[t]); });
+      [&](unsigned t, int begin, int end)
+      { HandPackets(scene, adaptive, begin, end, buffers[t]); });
   }
   ReportStepsOf(state, scene, adaptive, threadCount);
 }

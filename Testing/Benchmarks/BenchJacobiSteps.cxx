@@ -19,11 +19,9 @@
  * Counter items_per_second = Jacobi steps per second.
  */
 #include "DirectionLattice.h"
-#include "GaussianField.h"
-#include "GraphMetric.h"
+#include "EightBumps.h"
 #include "JacobiField.h"
 #include "MetricDefinition.h"
-#include "ScalarFieldSum.h"
 
 #include <benchmark/benchmark.h>
 
@@ -37,34 +35,11 @@ using riemann::Vec3;
 
 constexpr int DirectionCount = 64;
 
-std::shared_ptr<const riemann::Metric> GraphOfEightBumps()
-{
-  // BenchGeodesicSteps.cxx's bumps: amplitude, center, sigma.
-  const double table[8][7] = {
-    { 1.00, -1.0, -1.0, -0.5, 0.60, 0.60, 0.60 },
-    { 0.70, 1.2, -0.8, 0.4, 0.50, 0.80, 0.50 },
-    { 0.45, -0.3, 1.1, 1.0, 0.40, 0.40, 0.70 },
-    { 0.90, 0.6, 0.5, -1.2, 0.70, 0.50, 0.60 },
-    { 0.30, -1.4, 0.3, 0.8, 0.80, 0.80, 0.80 },
-    { 0.60, 1.5, 1.4, 1.3, 0.45, 0.60, 0.75 },
-    { 0.80, 0.0, -1.5, 1.5, 0.50, 0.50, 0.50 },
-    { 0.55, 0.2, 0.1, 0.0, 0.80, 0.40, 0.60 },
-  };
-  std::vector<std::shared_ptr<const riemann::ScalarField>> bumps;
-  for (const auto& b : table)
-  {
-    bumps.push_back(std::make_shared<riemann::GaussianField>(
-      b[0], Vec3(b[1], b[2], b[3]), Vec3(b[4], b[5], b[6])));
-  }
-  return std::make_shared<riemann::GraphMetric>(
-    std::make_shared<riemann::ScalarFieldSum>(0.0, bumps));
-}
-
 std::shared_ptr<const riemann::Metric> MetricNamed(const std::string& name)
 {
   if (name == "graph8")
   {
-    return GraphOfEightBumps();
+    return riemann::bench::GraphOfEightBumps();
   }
   if (name == "sphere")
   {
