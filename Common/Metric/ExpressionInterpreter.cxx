@@ -24,11 +24,11 @@ namespace
 /// Registers on the stack at most; larger tapes use a thread_local buffer.
 constexpr int StackRegisters = 512;
 
-/// Code::Lin: r[D] = C + sum_i K[B+i] r[O[A+i]]. Four partial sums: one
-/// running sum would wait for each addition (sums of 8 to 16 terms are common
-/// in derivatives of sums).
-RIEMANN_ALWAYS_INLINE void ComputeLin(const Instruction* ip,
-  const std::int32_t* __restrict operands, const double* __restrict k, double* __restrict r)
+/// Code::Lin's C + sum_i K[B+i] r[O[A+i]]. Four partial sums: one running
+/// sum would wait for each addition (sums of 8 to 16 terms are common in
+/// derivatives of sums).
+RIEMANN_ALWAYS_INLINE double Lin(const Instruction* ip, const std::int32_t* __restrict operands,
+  const double* __restrict k, double* __restrict r)
 {
   const std::int32_t* a = operands + ip->A;
   const double* c = k + ip->B;
@@ -49,7 +49,7 @@ RIEMANN_ALWAYS_INLINE void ComputeLin(const Instruction* ip,
   {
     s0 += c[i] * r[a[i]];
   }
-  r[ip->D] = (s0 + s1) + (s2 + s3);
+  return (s0 + s1) + (s2 + s3);
 }
 
 /// c r[a[0]] r[a[1]] (r[a[2]]): a term of Code::LinP2 or Code::LinP3.
@@ -133,7 +133,7 @@ void Run(const Instruction* ip, const Instruction* end, const std::int32_t* __re
   static const void* const labels[] = { &&L_Const, &&L_Lin, &&L_LinP2, &&L_LinP3, &&L_Lin1,
     &&L_AddC, &&L_Add2, &&L_Sub2, &&L_Mul, &&L_Mul2, &&L_Div, &&L_Square, &&L_Recip, &&L_Sqrt,
     &&L_Pow, &&L_Exp, &&L_Log, &&L_Sin, &&L_Cos, &&L_Tan, &&L_Sinh, &&L_Cosh, &&L_Tanh, &&L_Atan,
-    &&L_Atan2, &&L_Abs, &&L_Sign, &&L_Store, &&L_StoreScaled, &&L_StoreConst };
+    &&L_Atan2, &&L_Abs, &&L_Sign, &&L_ExpLin, &&L_Store, &&L_StoreScaled, &&L_StoreConst };
   static_assert(sizeof(labels) / sizeof(labels[0]) == static_cast<int>(Code::StoreConst) + 1,
     "one label per Code");
   if (ip == end)
@@ -156,7 +156,7 @@ void Run(const Instruction* ip, const Instruction* end, const std::int32_t* __re
     RIEMANN_NEXT                                                                                   \
   }
   RIEMANN_HANDLER(Const, r[ip->D] = ip->C)
-  RIEMANN_HANDLER(Lin, ComputeLin(ip, operands, k, r))
+  RIEMANN_HANDLER(Lin, r[ip->D] = Lin(ip, operands, k, r))
   RIEMANN_HANDLER(LinP2, ComputeSumOfProducts<2>(ip, operands, k, r))
   RIEMANN_HANDLER(LinP3, ComputeSumOfProducts<3>(ip, operands, k, r))
   RIEMANN_HANDLER(Lin1, r[ip->D] = ip->C + ip->K * r[ip->A])
@@ -182,6 +182,7 @@ void Run(const Instruction* ip, const Instruction* end, const std::int32_t* __re
   RIEMANN_HANDLER(Atan2, r[ip->D] = std::atan2(r[ip->A], r[ip->B]))
   RIEMANN_HANDLER(Abs, r[ip->D] = std::fabs(r[ip->A]))
   RIEMANN_HANDLER(Sign, r[ip->D] = Sign(r[ip->A]))
+  RIEMANN_HANDLER(ExpLin, r[ip->D] = std::exp(Lin(ip, operands, k, r)))
   RIEMANN_HANDLER(Store, outputs[ip->B] = r[ip->A])
   RIEMANN_HANDLER(StoreScaled, outputs[ip->B] = ip->C * r[ip->A])
   RIEMANN_HANDLER(StoreConst, outputs[ip->B] = ip->C)

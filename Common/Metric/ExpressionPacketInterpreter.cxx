@@ -76,7 +76,51 @@ HWY_INLINE bool AllWithin(D d, V x, double low, double high)
   return hn::AllTrue(d, hn::And(hn::Ge(x, hn::Set(d, low)), hn::Le(x, hn::Set(d, high))));
 }
 
-/// One instruction on the lanes [o, o + N).
+/// Code::Lin's C + sum_i K[B+i] r[O[A+i]] on the lanes [o, o + N).
+HWY_INLINE V Lin(D d, const Instruction& in, const std::int32_t* operands, const double* k,
+  const PacketRegister* r, int o)
+{
+  auto load = [&](std::int32_t reg) { return hn::Load(d, r[reg].Lane + o); };
+  // Four partial sums, as the scalar interpreter: one running sum would
+  // wait for each fused multiply-add (sums of 8 to 16 terms are common).
+  const std::int32_t* f = operands + in.A;
+  const double* c = k + in.B;
+  V s0 = hn::Set(d, in.C), s1 = hn::Zero(d), s2 = hn::Zero(d), s3 = hn::Zero(d);
+  std::int32_t i = 0;
+  for (; i + 4 <= in.N; i += 4)
+  {
+    s0 = hn::MulAdd(hn::Set(d, c[i]), load(f[i]), s0);
+    s1 = hn::MulAdd(hn::Set(d, c[i + 1]), load(f[i + 1]), s1);
+    s2 = hn::MulAdd(hn::Set(d, c[i + 2]), load(f[i + 2]), s2);
+    s3 = hn::MulAdd(hn::Set(d, c[i + 3]), load(f[i + 3]), s3);
+  }
+  for (; i < in.N; ++i)
+  {
+    s0 = hn::MulAdd(hn::Set(d, c[i]), load(f[i]), s0);
+  }
+  return hn::Add(hn::Add(s0, s1), hn::Add(s2, s3));
+}
+
+/// exp(x), with the C library on the lanes of chunks that have one outside
+/// Highway's valid range (or a NaN).
+HWY_INLINE V ExpOf(D d, V x)
+{
+  if (AllWithin(d, x, -HUGE_VAL, 706.0))
+  {
+    return hn::Exp(d, x);
+  }
+  alignas(64) double lanes[PacketWidth];
+  hn::Store(x, d, lanes);
+  for (int l = 0; l < static_cast<int>(hn::Lanes(d)); ++l)
+  {
+    lanes[l] = std::exp(lanes[l]);
+  }
+  return hn::Load(d, lanes);
+}
+
+/// One instruction of code Op on the lanes [o, o + N) (the switch on the
+/// template argument folds away: each handler of RunPacketImpl gets its code).
+template <Code Op>
 HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, const double* k,
   PacketRegister* r, double* outputs, int o)
 {
@@ -84,33 +128,14 @@ HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, con
   auto load = [&](std::int32_t reg) { return hn::Load(d, r[reg].Lane + o); };
   auto store = [&](V x) { hn::Store(x, d, r[in.D].Lane + o); };
   const PacketRegister& a = r[in.A];
-  switch (in.Operation)
+  switch (Op)
   {
     case Code::Const:
       store(hn::Set(d, in.C));
       break;
     case Code::Lin:
-    {
-      // Four partial sums, as the scalar interpreter: one running sum would
-      // wait for each fused multiply-add (sums of 8 to 16 terms are common).
-      const std::int32_t* f = operands + in.A;
-      const double* c = k + in.B;
-      V s0 = hn::Set(d, in.C), s1 = hn::Zero(d), s2 = hn::Zero(d), s3 = hn::Zero(d);
-      std::int32_t i = 0;
-      for (; i + 4 <= in.N; i += 4)
-      {
-        s0 = hn::MulAdd(hn::Set(d, c[i]), load(f[i]), s0);
-        s1 = hn::MulAdd(hn::Set(d, c[i + 1]), load(f[i + 1]), s1);
-        s2 = hn::MulAdd(hn::Set(d, c[i + 2]), load(f[i + 2]), s2);
-        s3 = hn::MulAdd(hn::Set(d, c[i + 3]), load(f[i + 3]), s3);
-      }
-      for (; i < in.N; ++i)
-      {
-        s0 = hn::MulAdd(hn::Set(d, c[i]), load(f[i]), s0);
-      }
-      store(hn::Add(hn::Add(s0, s1), hn::Add(s2, s3)));
+      store(Lin(d, in, operands, k, r, o));
       break;
-    }
     case Code::LinP2:
     {
       const std::int32_t* f = operands + in.A;
@@ -199,17 +224,14 @@ HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, con
       break;
     }
     case Code::Exp:
-    {
-      const V x = load(in.A);
-      store(AllWithin(d, x, -HUGE_VAL, 706.0) ? hn::Exp(d, x)
-                                              : Scalar(d, a, o, [](double v) { return std::exp(v); }));
+      store(ExpOf(d, load(in.A)));
       break;
-    }
     case Code::Log:
     {
       const V x = load(in.A);
-      store(AllWithin(d, x, 1e-300, 1.7e308) ? hn::Log(d, x)
-                                             : Scalar(d, a, o, [](double v) { return std::log(v); }));
+      store(AllWithin(d, x, 1e-300, 1.7e308)
+          ? hn::Log(d, x)
+          : Scalar(d, a, o, [](double v) { return std::log(v); }));
       break;
     }
     case Code::Sin:
@@ -234,8 +256,9 @@ HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, con
     case Code::Sinh:
     {
       const V x = load(in.A);
-      store(AllWithin(d, x, -709.0, 709.0) ? hn::Sinh(d, x)
-                                           : Scalar(d, a, o, [](double v) { return std::sinh(v); }));
+      store(AllWithin(d, x, -709.0, 709.0)
+          ? hn::Sinh(d, x)
+          : Scalar(d, a, o, [](double v) { return std::sinh(v); }));
       break;
     }
     case Code::Cosh:
@@ -273,6 +296,9 @@ HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, con
     case Code::Sign:
       store(Scalar(d, a, o, SignOf));
       break;
+    case Code::ExpLin:
+      store(ExpOf(d, Lin(d, in, operands, k, r, o)));
+      break;
     case Code::Store:
       hn::StoreU(load(in.A), d, outputs + in.B * PacketWidth + o);
       break;
@@ -285,20 +311,103 @@ HWY_INLINE void Execute(const Instruction& in, const std::int32_t* operands, con
   }
 }
 
-void RunPacketImpl(const ExpressionTape& tape, int end, PacketRegister* r, double* outputs)
+/// Every lane chunk of one instruction of code Op.
+template <Code Op>
+HWY_INLINE void ExecuteAllLanes(const Instruction& in, const std::int32_t* operands,
+  const double* k, PacketRegister* r, double* outputs)
 {
   const D d;
-  const int n = static_cast<int>(hn::Lanes(d));
-  const Instruction* instructions = tape.Instructions.data();
+  for (int o = 0; o < PacketWidth; o += static_cast<int>(hn::Lanes(d)))
+  {
+    Execute<Op>(in, operands, k, r, outputs, o);
+  }
+}
+
+/**
+ * One pass over the tape. As in the scalar interpreter
+ * (ExpressionInterpreter.cxx), each handler dispatches the next one itself
+ * with GCC and Clang (computed goto), which the branch predictor follows
+ * better than one shared switch (the 8-bump typed metric's geodesic steps:
+ * Testing/Benchmarks/README.md).
+ */
+void RunPacketImpl(const ExpressionTape& tape, int end, PacketRegister* r, double* outputs)
+{
+  const Instruction* ip = tape.Instructions.data();
+  const Instruction* const last = ip + end;
   const std::int32_t* operands = tape.Operands.data();
   const double* k = tape.Coefficients.data();
-  for (int i = 0; i < end; ++i)
+  if (ip == last)
   {
-    for (int o = 0; o < PacketWidth; o += n)
-    {
-      Execute(instructions[i], operands, k, r, outputs, o);
-    }
+    return;
   }
+#if defined(__GNUC__)
+#define RIEMANN_OP(name) L_##name:
+#define RIEMANN_NEXT                                                                               \
+  if (++ip == last)                                                                                \
+  {                                                                                                \
+    return;                                                                                        \
+  }                                                                                                \
+  goto* labels[static_cast<int>(ip->Operation)];
+  // In the order of Code.
+  static const void* const labels[] = { &&L_Const, &&L_Lin, &&L_LinP2, &&L_LinP3, &&L_Lin1,
+    &&L_AddC, &&L_Add2, &&L_Sub2, &&L_Mul, &&L_Mul2, &&L_Div, &&L_Square, &&L_Recip, &&L_Sqrt,
+    &&L_Pow, &&L_Exp, &&L_Log, &&L_Sin, &&L_Cos, &&L_Tan, &&L_Sinh, &&L_Cosh, &&L_Tanh, &&L_Atan,
+    &&L_Atan2, &&L_Abs, &&L_Sign, &&L_ExpLin, &&L_Store, &&L_StoreScaled, &&L_StoreConst };
+  static_assert(sizeof(labels) / sizeof(labels[0]) == static_cast<int>(Code::StoreConst) + 1,
+    "one label per Code");
+  goto* labels[static_cast<int>(ip->Operation)];
+#else
+#define RIEMANN_OP(name) case Code::name:
+#define RIEMANN_NEXT break;
+  for (; ip != last; ++ip)
+  {
+    switch (ip->Operation)
+    {
+#endif
+#define RIEMANN_HANDLER(name)                                                                      \
+  RIEMANN_OP(name)                                                                                 \
+  {                                                                                                \
+    ExecuteAllLanes<Code::name>(*ip, operands, k, r, outputs);                                     \
+    RIEMANN_NEXT                                                                                   \
+  }
+  RIEMANN_HANDLER(Const)
+  RIEMANN_HANDLER(Lin)
+  RIEMANN_HANDLER(LinP2)
+  RIEMANN_HANDLER(LinP3)
+  RIEMANN_HANDLER(Lin1)
+  RIEMANN_HANDLER(AddC)
+  RIEMANN_HANDLER(Add2)
+  RIEMANN_HANDLER(Sub2)
+  RIEMANN_HANDLER(Mul)
+  RIEMANN_HANDLER(Mul2)
+  RIEMANN_HANDLER(Div)
+  RIEMANN_HANDLER(Square)
+  RIEMANN_HANDLER(Recip)
+  RIEMANN_HANDLER(Sqrt)
+  RIEMANN_HANDLER(Pow)
+  RIEMANN_HANDLER(Exp)
+  RIEMANN_HANDLER(Log)
+  RIEMANN_HANDLER(Sin)
+  RIEMANN_HANDLER(Cos)
+  RIEMANN_HANDLER(Tan)
+  RIEMANN_HANDLER(Sinh)
+  RIEMANN_HANDLER(Cosh)
+  RIEMANN_HANDLER(Tanh)
+  RIEMANN_HANDLER(Atan)
+  RIEMANN_HANDLER(Atan2)
+  RIEMANN_HANDLER(Abs)
+  RIEMANN_HANDLER(Sign)
+  RIEMANN_HANDLER(ExpLin)
+  RIEMANN_HANDLER(Store)
+  RIEMANN_HANDLER(StoreScaled)
+  RIEMANN_HANDLER(StoreConst)
+#if !defined(__GNUC__)
+}
+}
+#endif
+#undef RIEMANN_HANDLER
+#undef RIEMANN_OP
+#undef RIEMANN_NEXT
 }
 } // namespace HWY_NAMESPACE
 } // namespace expression
@@ -313,8 +422,8 @@ namespace expression
 HWY_EXPORT(RunPacketImpl);
 } // namespace expression
 
-void CompiledExpressions::EvaluatePacket(const PacketVec3& p, double t, const double* parameters,
-  double* outputs, int maxOrder) const
+void CompiledExpressions::EvaluatePacket(
+  const PacketVec3& p, double t, const double* parameters, double* outputs, int maxOrder) const
 {
   using namespace expression;
   const Internals& m = *this->Internal;

@@ -1,7 +1,8 @@
 // The tape builder (ExpressionTape.h): orders the live nodes of the graph by
 // the lowest derivative order that needs them, fuses small products into the
-// sums that use them, allocates registers and encodes each node as one
-// instruction.
+// sums that use them, allocates registers, encodes each node as one
+// instruction, and fuses a sum read only by its exponential (every Gaussian
+// bump) into one instruction.
 #include "ExpressionTape.h"
 
 #include "Expression.h"
@@ -27,6 +28,121 @@ struct Item
 /// fused into the sum, or the term alone); others, one group per argument.
 using OperandGroups = std::vector<std::vector<int>>;
 
+/// Calls read(register) for every register `in` reads.
+template <class Read>
+void ForEachRead(const Instruction& in, const ExpressionTape& tape, Read read)
+{
+  auto operandList = [&](int count)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      read(tape.Operands[static_cast<std::size_t>(in.A + i)]);
+    }
+  };
+  switch (in.Operation)
+  {
+    case Code::Const:
+    case Code::StoreConst:
+      break;
+    case Code::Lin:
+    case Code::Mul:
+    case Code::ExpLin:
+      operandList(in.N);
+      break;
+    case Code::LinP2:
+      operandList(2 * in.N);
+      break;
+    case Code::LinP3:
+      operandList(3 * in.N);
+      break;
+    case Code::Add2:
+    case Code::Sub2:
+    case Code::Mul2:
+    case Code::Div:
+    case Code::Pow:
+    case Code::Atan2:
+      read(in.A);
+      read(in.B);
+      break;
+    default: // one register argument, stores included
+      read(in.A);
+      break;
+  }
+}
+
+/// True if register `reg`, written by instruction `first`, is read by
+/// instruction first + 1 and by no later one before it is written again.
+bool ReadOnlyByNext(const ExpressionTape& tape, std::size_t first, int reg)
+{
+  if (tape.Instructions[first + 1].D == reg) // the reader overwrites it (exp(x) in place)
+  {
+    return true;
+  }
+  for (std::size_t i = first + 2; i < tape.Instructions.size(); ++i)
+  {
+    const Instruction& in = tape.Instructions[i];
+    bool read = false;
+    ForEachRead(in, tape, [&](int r) { read = read || r == reg; });
+    if (read)
+    {
+      return false;
+    }
+    const bool writes = in.Operation != Code::Store && in.Operation != Code::StoreScaled &&
+      in.Operation != Code::StoreConst;
+    if (writes && in.D == reg)
+    {
+      return true;
+    }
+  }
+  return true;
+}
+
+/**
+ * Replaces Lin + Exp by ExpLin where the sum is read only by its exponential:
+ * one dispatch and one register round trip less per Gaussian bump
+ * exp(-|p - c|^2 / 2 s^2), whose other parts (the shifts p - c and their
+ * squares) are shared with the derivatives. The fused instruction does the
+ * same operations in the same order: results are unchanged.
+ */
+void FuseSumsIntoExponentials(ExpressionTape& tape)
+{
+  std::vector<Instruction>& code = tape.Instructions;
+  std::vector<bool> removed(code.size(), false);
+  for (std::size_t i = 0; i + 1 < code.size(); ++i)
+  {
+    const Instruction& sum = code[i];
+    Instruction& exponential = code[i + 1];
+    if (sum.Operation != Code::Lin || exponential.Operation != Code::Exp ||
+      exponential.A != sum.D || !ReadOnlyByNext(tape, i, sum.D))
+    {
+      continue;
+    }
+    const int destination = exponential.D;
+    exponential = sum;
+    exponential.Operation = Code::ExpLin;
+    exponential.D = destination;
+    removed[i] = true;
+    --tape.Operations;
+  }
+  // Compact, and move each End[] to the same place among the kept ones.
+  std::vector<int> kept(code.size() + 1, 0);
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < code.size(); ++i)
+  {
+    kept[i] = static_cast<int>(out);
+    if (!removed[i])
+    {
+      code[out++] = code[i];
+    }
+  }
+  kept[code.size()] = static_cast<int>(out);
+  code.resize(out);
+  for (int& end : tape.End)
+  {
+    end = kept[static_cast<std::size_t>(end)];
+  }
+}
+
 class TapeBuilder
 {
 public:
@@ -47,6 +163,7 @@ public:
     this->Schedule();
     this->FindLastUses();
     this->EmitInstructions();
+    FuseSumsIntoExponentials(this->Tape);
     return std::move(this->Tape);
   }
 
@@ -408,6 +525,7 @@ int CountOperands(const ExpressionTape& tape)
     {
       case Code::Lin:
       case Code::Mul:
+      case Code::ExpLin:
         operands += in.N;
         break;
       case Code::LinP2:

@@ -46,6 +46,7 @@ enum class Code : std::uint8_t
   Atan2,       // r[D] = atan2(r[A], r[B])
   Abs,         // r[D] = abs(r[A])
   Sign,        // r[D] = sign(r[A])
+  ExpLin,      // r[D] = exp(C + sum_i K[B+i] r[O[A+i]]), i < N: a Lin read only by an Exp
   Store,       // out[B] = r[A]
   StoreScaled, // out[B] = C r[A]
   StoreConst   // out[B] = C

@@ -28,7 +28,10 @@ ScalarFieldSum::ScalarFieldSum(
 void ScalarFieldSum::Accumulate(const Vec3& p, int order, ScalarJet& jet) const
 {
   jet.Value += this->Constant;
-  AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  if (this->Bumps.Size() > 0) // a typed sum has none: skip the kernel's loads and stores
+  {
+    AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  }
   for (const ScalarField* field : this->OtherTerms)
   {
     field->Accumulate(p, order, jet);
@@ -42,7 +45,10 @@ void ScalarFieldSum::AccumulatePacket(
   {
     value += this->Constant;
   }
-  AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  if (this->Bumps.Size() > 0) // a typed sum has none: skip the kernel's loads and stores
+  {
+    AccumulateGaussianTerms(this->Bumps, p, order, jet);
+  }
   for (const ScalarField* field : this->OtherTerms)
   {
     field->AccumulatePacket(p, order, jet, lanes);

@@ -41,8 +41,8 @@ std::shared_ptr<const ScalarField> EightBumps()
   };
   for (const auto& b : table)
   {
-    bumps.push_back(std::make_shared<GaussianField>(
-      b[0], Vec3(b[1], b[2], b[3]), Vec3(b[4], b[5], b[6])));
+    bumps.push_back(
+      std::make_shared<GaussianField>(b[0], Vec3(b[1], b[2], b[3]), Vec3(b[4], b[5], b[6])));
   }
   return std::make_shared<ScalarFieldSum>(0.0, bumps);
 }
@@ -104,6 +104,8 @@ TEST(PacketEngine, TapeOnPacketsEqualsTheScalarTapeForEveryFunction)
     "a*exp(-(x^2 + 2*y^2)/2) + sin(x*y) - cos(z) + tan(0.3*x) + sqrt(1 + y^2)",
     "log(x) + pow(abs(y) + 1, z) + sinh(x) * cosh(y) + tanh(z) + atan2(x*y, 1 + z^2) + atan2(y, x)",
     "abs(x - y) * x^3 + 1/(1 + x^2) + exp(x)*y*z + (x + y)*(y + z)*(z + x)*(x*y + 1)",
+    // Sums read only by their exponential (ExpLin), one overflowing at x = 800.
+    "exp(x - 2*y + 1) + exp(-(x - 1)^2 - (y + 2)^2 / 3)",
   };
   const CompiledExpressions compiled(sources, { "a" }, SecondDerivatives);
   const double a = 0.7;
@@ -267,7 +269,8 @@ void ExpectSamePaths(const Metric& metric, const std::vector<GeodesicSeed>& seed
     for (size_t k = 0; k < scalar.Points.size(); ++k)
     {
       const double scale = std::max(1.0, scalar.Points[k].norm());
-      ASSERT_LT((packet[i].Points[k] - scalar.Points[k]).norm(), tolerance * scale) << "point " << k;
+      ASSERT_LT((packet[i].Points[k] - scalar.Points[k]).norm(), tolerance * scale)
+        << "point " << k;
       ASSERT_LT((packet[i].Velocities[k] - scalar.Velocities[k]).norm(),
         tolerance * std::max(1.0, scalar.Velocities[k].norm()));
       ASSERT_NEAR(packet[i].ArcLength[k], scalar.ArcLength[k], tolerance * scale);
@@ -345,7 +348,8 @@ TEST(PacketEngine, FlatMetricsGiveStraightLines)
   // are straight lines at constant coordinate speed, exactly.
   GraphMetric linear(std::make_shared<QuadraticField>(Mat3::Zero(), Vec3(0.5, -0.3, 0.2), 0.0));
   EuclideanMetric flat;
-  for (const Metric* metric : { static_cast<const Metric*>(&linear), static_cast<const Metric*>(&flat) })
+  for (const Metric* metric :
+    { static_cast<const Metric*>(&linear), static_cast<const Metric*>(&flat) })
   {
     const auto seeds = Seeds(*metric, 19);
     std::vector<GeodesicPath> paths(seeds.size());
@@ -357,9 +361,11 @@ TEST(PacketEngine, FlatMetricsGiveStraightLines)
     {
       ASSERT_EQ(paths[i].Reason, OutOfLength);
       const double sign = seeds[i].Backward ? -1.0 : 1.0;
-      const double speed = std::sqrt(metric->InnerProduct(seeds[i].Point, seeds[i].Velocity, seeds[i].Velocity));
+      const double speed =
+        std::sqrt(metric->InnerProduct(seeds[i].Point, seeds[i].Velocity, seeds[i].Velocity));
       const Vec3 exact = seeds[i].Point + sign * 3.0 / speed * seeds[i].Velocity;
-      EXPECT_LT((paths[i].Points.back() - exact).norm(), 1e-12) << metric->Describe() << " seed " << i;
+      EXPECT_LT((paths[i].Points.back() - exact).norm(), 1e-12)
+        << metric->Describe() << " seed " << i;
     }
   }
 }
