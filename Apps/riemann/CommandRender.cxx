@@ -432,10 +432,6 @@ vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
   {
     throw Failure(std::string("bad scene: ") + scene->GetLastError());
   }
-  if (args.Backend != "cpu" && scene->GetScene().HasMeshes())
-  {
-    throw Failure("the scene has mesh objects: mesh objects need --backend cpu", 2);
-  }
   if (!args.Metric.empty())
   {
     return LoadMetric(args.Metric);

@@ -1,6 +1,6 @@
 /**
  * @file RiemannSceneUniforms.h
- * @brief The scene's analytic objects as the GPU pass's uniform arrays
+ * @brief The scene's objects as the GPU pass's uniform arrays
  * (RiemannRayTraceScene.glsl reads them): packed here, without OpenGL, so
  * that the layout is one testable function.
  *
@@ -27,9 +27,13 @@
 
 namespace riemann
 {
-/// Slots of the uniform arrays: every analytic object type's limit together.
+/// Mesh objects the GPU pass draws (their triangles are in buffer textures;
+/// their slots hold the type and the material).
+constexpr int MaximumUniformMeshes = 16;
+
+/// Slots of the uniform arrays: every analytic object type's limit and the meshes' together.
 constexpr int MaximumSceneUniformObjects =
-  MaximumSpheres + MaximumPlanes + MaximumBoxes + MaximumGrids;
+  MaximumSpheres + MaximumPlanes + MaximumBoxes + MaximumGrids + MaximumUniformMeshes;
 
 struct SceneUniforms
 {

@@ -4,7 +4,9 @@
 // A line-by-line mirror, in float, of riemann::IntersectSegment and
 // riemann::SurfaceColor (RiemannScene.cxx): the same objects in the same
 // order, the same closed solids, the same tie rule (the object listed first
-// wins) and the same normals. Objects are uniform arrays in scene order, up to
+// wins) and the same normals; triangle meshes (RiemannRayTraceMeshes.glsl,
+// when RT_MESHES) after them, as riemann::IntersectSceneSegment: the nearer
+// wins, the analytic object on a tie. Objects are uniform arrays in scene order, up to
 // RT_MAX_OBJECTS (= the sum of the per-type limits of RiemannScene.h, which
 // the scene parser enforces); their values are uniforms, so editing a scene
 // never recompiles the shader.
@@ -14,6 +16,7 @@
 #define RT_SPHERE 1
 #define RT_PLANE 2
 #define RT_BOX 3
+#define RT_MESH 4
 
 #define RT_POSITION 0
 #define RT_SOLID 1
@@ -283,6 +286,24 @@ bool rt_intersect_segment(
       hitObject = index;
     }
   }
+#if RT_MESHES
+  rt_mesh_hit_triangle = -1;
+  float meshFraction;
+  vec3 meshNormal;
+  int meshObject;
+  int meshTriangle;
+  vec2 meshWeights;
+  if (rt_intersect_meshes(
+        a, b, best, meshFraction, meshNormal, meshObject, meshTriangle, meshWeights))
+  {
+    found = true;
+    hitFraction = meshFraction;
+    hitNormal = meshNormal;
+    hitObject = meshObject;
+    rt_mesh_hit_triangle = meshTriangle;
+    rt_mesh_hit_uv = meshWeights;
+  }
+#endif
   if (found)
   {
     hitPosition = a + hitFraction * d;
@@ -297,6 +318,14 @@ vec3 rt_surface_color(int object, vec3 position, vec3 normal)
   {
     return vec3(0.0);
   }
+#if RT_MESHES
+  vec3 vertexColor;
+  if (rt_object_type[object] == RT_MESH && rt_mesh_hit_triangle >= 0 &&
+    rt_mesh_color(rt_mesh_hit_triangle, rt_mesh_hit_uv, vertexColor))
+  {
+    return vertexColor;
+  }
+#endif
   int type = rt_material_type[object];
   if (type == RT_POSITION)
   {

@@ -9,6 +9,7 @@
 #include "Metric.h"
 #include "ObserverCamera.h"
 #include "RiemannImageIO.h"
+#include "RiemannMeshTextures.h"
 #include "RiemannScene.h"
 #include "RiemannShading.h"
 #include "RiemannSceneUniforms.h"
@@ -16,6 +17,7 @@
 // GLSL embedded at build time (vtk_encode_string).
 #include "RiemannRayTraceFS.h"
 #include "RiemannRayTraceIntegrators.h"
+#include "RiemannRayTraceMeshes.h"
 #include "RiemannRayTraceScene.h"
 
 #include "vtkCamera.h"
@@ -34,6 +36,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -219,10 +222,17 @@ public:
   vtkSmartPointer<vtkTextureObject> Environment;
   std::string EnvironmentPath;
   std::string EnvironmentError;
+  /// A free unit that rt_environment points at while no image is bound (-1:
+  /// none): left at unit 0 it could share a unit with a mesh buffer sampler,
+  /// and two sampler types on one unit make the draw call fail.
+  int IdleEnvironmentUnit = -1;
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> HitFramebuffer;
   vtkSmartPointer<vtkTextureObject> HitTexture;
   vtkNew<vtkFloatArray> HitImage;
+
+  /// The scene's triangle meshes as buffer textures.
+  riemann::MeshTextures Meshes;
 
   /// Keep a built program, dropping the least recently used beyond the cache's size.
   std::map<std::string, CachedProgram>::iterator StoreProgram(
@@ -314,6 +324,7 @@ public:
     }
     this->EnvironmentPath.clear();
     this->EnvironmentError.clear();
+    this->Meshes.Release(window);
     if (this->HitFramebuffer)
     {
       this->HitFramebuffer->ReleaseGraphicsResources(window);
@@ -445,6 +456,10 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
     return;
   }
   this->SetSceneUniforms(program, frame);
+  if (!this->ActivateMeshes(program, frame))
+  {
+    return;
+  }
   this->SetObserverUniforms(program, frame);
   const bool useEnvironment = this->ActivateEnvironment(program, frame);
   this->DrawView(program, frame);
@@ -456,6 +471,12 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   {
     this->Internals->Environment->Deactivate();
   }
+  else if (this->Internals->IdleEnvironmentUnit >= 0)
+  {
+    frame.Window->GetTextureUnitManager()->Free(this->Internals->IdleEnvironmentUnit);
+    this->Internals->IdleEnvironmentUnit = -1;
+  }
+  this->Internals->Meshes.Deactivate();
   this->LastError.clear();
 }
 
@@ -507,11 +528,14 @@ bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& f
     return false;
   }
   frame.Scene = this->Scene->GetSceneSnapshot();
-  if (frame.Scene->HasMeshes())
+  if (frame.Scene->HasMeshes() &&
+    frame.Scene->Objects.size() > static_cast<std::size_t>(riemann::MaximumSceneUniformObjects))
   {
-    // The shader draws the analytic objects only; triangle meshes are Embree's.
-    this->Fail("mesh objects need --backend cpu: the GPU pass draws grids, spheres, planes and "
-               "boxes; render this scene with vtkRiemannCPURayTracer",
+    // A mesh object past the uniform slots would have no material.
+    this->Fail("the scene has " + std::to_string(frame.Scene->Objects.size()) +
+        " objects; with meshes the GPU pass draws at most " +
+        std::to_string(riemann::MaximumSceneUniformObjects) +
+        " (render this scene with vtkRiemannCPURayTracer)",
       frame.Window, viewport);
     return false;
   }
@@ -570,10 +594,14 @@ std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& fram
             << "#define RT_MAX_GRIDS " << riemann::MaximumGrids << "\n"
             << "#define RT_MAX_OBJECTS " << riemann::MaximumSceneUniformObjects << "\n"
             << "// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).\n"
-            << "#define RT_INTEGRATOR " << static_cast<int>(frame.Rays.Integrator) << "\n";
+            << "#define RT_INTEGRATOR " << static_cast<int>(frame.Rays.Integrator) << "\n"
+            << "// Triangle meshes (RiemannRayTraceMeshes.glsl) and their traversal stack.\n"
+            << "#define RT_MESHES " << (frame.Scene->HasMeshes() ? 1 : 0) << "\n"
+            << "#define RT_MESH_STACK " << riemann::MeshBVHStackSize << "\n";
   std::string source = RiemannRayTraceFS;
   Replace(source, "//RT::Constants::Dec", constants.str());
   Replace(source, "//RT::Metric::Impl", frame.MetricGlsl.Source);
+  Replace(source, "//RT::Meshes::Impl", frame.Scene->HasMeshes() ? RiemannRayTraceMeshes : "");
   Replace(source, "//RT::Scene::Impl", RiemannRayTraceScene);
   Replace(source, "//RT::Integrators::Impl", RiemannRayTraceIntegrators);
   Replace(source, "//RT::Extra::Impl",
@@ -752,6 +780,30 @@ void vtkRiemannRayTracePass::SetObserverUniforms(
 }
 
 //------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::ActivateMeshes(vtkShaderProgram* program, const FrameState& frame)
+{
+  if (!frame.Scene->HasMeshes())
+  {
+    return true;
+  }
+  // The hierarchy is built and uploaded when the meshes change, not per frame.
+  riemann::MeshTextures& meshes = this->Internals->Meshes;
+  std::string error;
+  if (!meshes.Update(*frame.Scene, frame.Window, error))
+  {
+    this->Fail("cannot draw the scene's meshes: " + error, frame.Window, frame.Viewport);
+    return false;
+  }
+  meshes.Activate(program);
+  return true;
+}
+
+int vtkRiemannRayTracePass::GetNumberOfMeshBuilds() const
+{
+  return this->Internals->Meshes.GetNumberOfBuilds();
+}
+
+//------------------------------------------------------------------------------
 bool vtkRiemannRayTracePass::ActivateEnvironment(
   vtkShaderProgram* program, const FrameState& frame)
 {
@@ -772,6 +824,11 @@ bool vtkRiemannRayTracePass::ActivateEnvironment(
   {
     internals.Environment->Activate();
     program->SetUniformi("rt_environment", internals.Environment->GetTextureUnit());
+  }
+  else
+  {
+    internals.IdleEnvironmentUnit = frame.Window->GetTextureUnitManager()->Allocate();
+    program->SetUniformi("rt_environment", std::max(internals.IdleEnvironmentUnit, 0));
   }
   program->SetUniformi("rt_use_environment", useEnvironment ? 1 : 0);
   return useEnvironment;

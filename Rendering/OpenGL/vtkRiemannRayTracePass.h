@@ -72,6 +72,13 @@
  * for a ray whose integration failed: GetHitImage(), 4 components,
  * width x height tuples, row 0 at the bottom.
  *
+ * Meshes: the scene's triangle meshes are drawn as on the CPU (the same
+ * hits, vertex colours and interpolated normals): a bounding-volume hierarchy
+ * built on the CPU with Embree's builder (riemann::BuildMeshBVH) is uploaded
+ * as buffer textures and traversed in GLSL against each step's chord. It is
+ * rebuilt only when the meshes change (GetNumberOfMeshBuilds()); a scene with
+ * meshes compiles its own program once.
+ *
  * The pass needs an OpenGL 3.2 context (VTK's OpenGL2 backend) and renders no
  * props: actors added to the renderer are ignored.
  *
@@ -187,6 +194,9 @@ public:
   /// Shader programs this pass has built (compiled and linked, or tried to).
   vtkGetMacro(NumberOfShaderCompilations, int);
 
+  /// Hierarchies of the scene's meshes this pass has built and uploaded (one per new set of meshes).
+  int GetNumberOfMeshBuilds() const;
+
   ///@{
   /**
    * GLSL inserted after the metric, scene and integrator functions and
@@ -244,6 +254,7 @@ private:
   bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
   void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
   void SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame);
+  bool ActivateMeshes(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame);
   void DrawView(vtkShaderProgram* program, const FrameState& frame);
   void CaptureHitImage(vtkShaderProgram* program, const FrameState& frame);
