@@ -1,5 +1,6 @@
 #include "vtkRiemannCPURayTracer.h"
 
+#include "RiemannActorMesh.h"
 #include "RiemannCPUTracer.h"
 #include "RiemannImageIO.h"
 #include "RiemannPolyDataMesh.h"
@@ -12,6 +13,7 @@
 #include "vtkRiemannParallelBatches.h"
 #include "vtkRiemannScene.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -46,6 +48,7 @@ public:
     riemann::MeshColoring Coloring;
   };
   std::vector<AddedMesh> Meshes;
+  std::vector<vtkSmartPointer<vtkActor>> Actors;
   /// The last update's pixels (GetPixelResults).
   std::vector<riemann::PixelResult> Pixels;
 };
@@ -90,7 +93,36 @@ vtkMTimeType vtkRiemannCPURayTracer::GetMTime()
   {
     time = std::max(time, mesh.Data->GetMTime());
   }
+  for (const auto& actor : this->Internals->Actors)
+  {
+    time = std::max(time, riemann::ActorMeshTime(actor));
+  }
   return time;
+}
+
+void vtkRiemannCPURayTracer::AddActor(vtkActor* actor)
+{
+  if (!actor)
+  {
+    vtkErrorMacro(<< "AddActor: no actor (null)");
+    return;
+  }
+  this->Internals->Actors.emplace_back(actor);
+  this->Modified();
+}
+
+void vtkRiemannCPURayTracer::RemoveAllActors()
+{
+  if (!this->Internals->Actors.empty())
+  {
+    this->Internals->Actors.clear();
+    this->Modified();
+  }
+}
+
+int vtkRiemannCPURayTracer::GetNumberOfAddedActors() const
+{
+  return static_cast<int>(this->Internals->Actors.size());
 }
 
 void vtkRiemannCPURayTracer::AddMesh(vtkPolyData* mesh, const char* colorArray, const char* colorMap)
@@ -201,6 +233,28 @@ std::shared_ptr<riemann::Scene> vtkRiemannCPURayTracer::MakeScene()
   {
     vtkErrorMacro(<< "AddMesh: " << e.what());
     return nullptr;
+  }
+  // The added actors as the GPU pass draws a renderer's (UseRendererProps):
+  // one mesh, coloured per vertex; actors that draw nothing are skipped.
+  std::vector<std::shared_ptr<const riemann::TriangleMesh>> actorMeshes;
+  try
+  {
+    for (const auto& actor : this->Internals->Actors)
+    {
+      if (riemann::ActorMeshTime(actor) > 0)
+      {
+        actorMeshes.push_back(riemann::MeshFromActor(actor));
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "AddActor: " << e.what());
+    return nullptr;
+  }
+  if (!actorMeshes.empty())
+  {
+    riemann::AddMesh(*scene, riemann::AppendMeshes(actorMeshes), riemann::Material());
   }
   return scene;
 }

@@ -68,6 +68,7 @@ class Metric;
 struct PixelResult;
 struct Scene;
 }
+class vtkActor;
 class vtkCamera;
 class vtkRiemannIntegrationSettings;
 class vtkPolyData;
@@ -115,6 +116,19 @@ public:
     const char* colorMap = "cool-to-warm");
   void RemoveAllMeshes();
   int GetNumberOfAddedMeshes() const;
+  ///@}
+
+  ///@{
+  /**
+   * Add a vtkActor to the scene as the GPU pass draws a renderer's actors
+   * with UseRendererProps on (riemann::MeshFromActor, RiemannActorMesh.h):
+   * its mapper's polydata moved by its matrix, coloured per vertex by its
+   * mapped point scalars or its property's colour; hidden actors and actors
+   * of opacity 0 are skipped. The actor is read at each Update.
+   */
+  void AddActor(vtkActor* actor);
+  void RemoveAllActors();
+  int GetNumberOfAddedActors() const;
   ///@}
 
   /// Largest Width x Height accepted (64 Mi pixels, e.g. 8192 x 8192: about

@@ -72,6 +72,9 @@ uniform int rt_observer_light;
 // (0, 0, 0, -2) where the integration failed.
 uniform int rt_output;
 
+// The camera's clipping range (near, far), for the depth of each pixel.
+uniform vec2 rt_clipping_range;
+
 #define RT_RAY_HIT 0
 #define RT_RAY_ESCAPED 1
 #define RT_RAY_FAILED 2
@@ -201,6 +204,20 @@ vec3 rt_environment_color(vec3 direction)
   return texture(rt_environment, vec2(u, t)).rgb;
 }
 
+// The window depth of a hit at Euclidean distance `distance` from the eye:
+// what a straight perspective view gives a point that far along its axis,
+// (1/near - 1/distance) / (1/near - 1/far), clamped to [0, 1].
+float rt_depth(float distance)
+{
+  float near = rt_clipping_range.x;
+  float far = rt_clipping_range.y;
+  if (!(near > 0.0) || !(far > near) || !(distance > 0.0))
+  {
+    return distance > 0.0 ? 1.0 : 0.0;
+  }
+  return clamp((1.0 / near - 1.0 / distance) / (1.0 / near - 1.0 / far), 0.0, 1.0);
+}
+
 void main()
 {
   if (texCoord.x < -1.0)
@@ -224,6 +241,10 @@ void main()
                                           : vec4(0.0, 0.0, 0.0, result == RT_RAY_FAILED ? -2.0 : -1.0);
     return;
   }
+
+  // Depth, so that overlays and other passes compose: the far plane where no
+  // surface was hit.
+  gl_FragDepth = result == RT_RAY_HIT ? rt_depth(length(position - rt_eye)) : 1.0;
 
   vec3 color;
   if (result == RT_RAY_HIT)

@@ -9,6 +9,7 @@
 #include "Metric.h"
 #include "ObserverCamera.h"
 #include "RiemannImageIO.h"
+#include "RiemannActorMesh.h"
 #include "RiemannMeshTextures.h"
 #include "RiemannScene.h"
 #include "RiemannShading.h"
@@ -31,6 +32,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOutputWindow.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
@@ -233,6 +235,8 @@ public:
 
   /// The scene's triangle meshes as buffer textures.
   riemann::MeshTextures Meshes;
+  /// The renderer's actors as one mesh (UseRendererProps).
+  riemann::RendererActorMeshes Actors;
 
   /// Keep a built program, dropping the least recently used beyond the cache's size.
   std::map<std::string, CachedProgram>::iterator StoreProgram(
@@ -467,6 +471,7 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   {
     this->CaptureHitImage(program, frame);
   }
+  this->RenderOverlays(s);
   if (useEnvironment)
   {
     this->Internals->Environment->Deactivate();
@@ -528,6 +533,10 @@ bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& f
     return false;
   }
   frame.Scene = this->Scene->GetSceneSnapshot();
+  if (this->UseRendererProps && !this->AddRendererActors(frame))
+  {
+    return false;
+  }
   if (frame.Scene->HasMeshes() &&
     frame.Scene->Objects.size() > static_cast<std::size_t>(riemann::MaximumSceneUniformObjects))
   {
@@ -579,6 +588,31 @@ bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& f
   {
     this->Fail(std::string("cannot place the observer: ") + e.what(), frame.Window, viewport);
     return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::AddRendererActors(FrameState& frame)
+{
+  std::shared_ptr<const riemann::TriangleMesh> actors;
+  try
+  {
+    actors = this->Internals->Actors.Update(frame.Renderer);
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(std::string("cannot draw the renderer's actors: ") + e.what(), frame.Window,
+      frame.Viewport);
+    return false;
+  }
+  this->NumberOfRenderedProps = this->Internals->Actors.GetNumberOfActors();
+  if (actors)
+  {
+    // The same mesh object while the actors do not change: nothing is rebuilt.
+    auto scene = std::make_shared<riemann::Scene>(*frame.Scene);
+    riemann::AddMesh(*scene, actors, riemann::Material());
+    frame.Scene = scene;
   }
   return true;
 }
@@ -847,7 +881,36 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
     static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
   program->SetUniform4f("rt_viewport", window);
   program->SetUniformi("rt_output", 0);
+
+  // Every pixel's depth is written (gl_FragDepth), whatever was there.
+  vtkOpenGLState::ScopedglDepthFunc depthFunction(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  double range[2] = { 0.0, 0.0 };
+  frame.Renderer->GetActiveCamera()->GetClippingRange(range);
+  const float clipping[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
+  program->SetUniform2f("rt_clipping_range", clipping);
   frame.Quad->Render();
+}
+
+//------------------------------------------------------------------------------
+void vtkRiemannRayTracePass::RenderOverlays(const vtkRenderState* s)
+{
+  // As vtkDefaultPass::RenderOverlay: text, scalar bars and other 2D props on
+  // top. A 2D actor lays itself out in its opaque pass (a text actor renders
+  // its string into a texture there) and draws in the overlay; its opaque
+  // pass draws nothing, so it runs here, after the view.
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->IsA("vtkActor2D"))
+    {
+      prop->RenderOpaqueGeometry(s->GetRenderer());
+    }
+    this->NumberOfRenderedProps += prop->RenderOverlay(s->GetRenderer());
+  }
 }
 
 //------------------------------------------------------------------------------

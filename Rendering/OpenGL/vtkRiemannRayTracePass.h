@@ -79,8 +79,13 @@
  * rebuilt only when the meshes change (GetNumberOfMeshBuilds()); a scene with
  * meshes compiles its own program once.
  *
- * The pass needs an OpenGL 3.2 context (VTK's OpenGL2 backend) and renders no
- * props: actors added to the renderer are ignored.
+ * Props: with UseRendererProps on, the renderer's vtkActors are meshes of
+ * the scene (above). Each pixel's depth is written (the Euclidean distance
+ * from the eye to the hit, mapped to the camera's clipping range as a
+ * straight view would map it; the far plane where a ray hits nothing), and
+ * the props' 2D overlays (text, scalar bars) are drawn on top.
+ *
+ * The pass needs an OpenGL 3.2 context (VTK's OpenGL2 backend).
  *
  * @sa vtkRiemannMetric vtkRiemannScene
  */
@@ -175,6 +180,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Draw the renderer's visible vtkActors with the scene's objects (default
+   * off): each is converted once per modification (riemann::MeshFromActor:
+   * its mapper's polydata moved by its matrix, coloured per vertex by its
+   * mapped point scalars or its property's colour), all of them one mesh of
+   * the inside view. Moving or recolouring an actor re-uploads the meshes'
+   * buffers; it never recompiles the shader. Opacity is all or nothing
+   * (opacity 0 hides an actor) and every actor is drawn as a surface.
+   */
+  vtkSetMacro(UseRendererProps, bool);
+  vtkGetMacro(UseRendererProps, bool);
+  vtkBooleanMacro(UseRendererProps, bool);
+  ///@}
+
+  ///@{
   /// Also capture the hits of every pixel (see GetHitImage()); default off.
   vtkSetMacro(CaptureHits, bool);
   vtkGetMacro(CaptureHits, bool);
@@ -230,6 +250,7 @@ protected:
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   int Projection = PERSPECTIVE;
   bool CaptureHits = false;
+  bool UseRendererProps = false;
   char* ExtraShaderCode = nullptr;
   int HitImageWidth = 0;
   int HitImageHeight = 0;
@@ -250,6 +271,7 @@ private:
   ///@{
   /// The steps of Render(), in order. Each returns false after Fail().
   bool PrepareFrame(const vtkRenderState* s, FrameState& frame);
+  bool AddRendererActors(FrameState& frame);
   vtkShaderProgram* ReadyProgram(FrameState& frame);
   bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
   void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
@@ -258,6 +280,7 @@ private:
   bool ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame);
   void DrawView(vtkShaderProgram* program, const FrameState& frame);
   void CaptureHitImage(vtkShaderProgram* program, const FrameState& frame);
+  void RenderOverlays(const vtkRenderState* s);
   ///@}
 
   /// The fragment shader of this frame: fixed GLSL + the metric's + the integrator.

@@ -38,6 +38,7 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "ImageComparison.h"
 #include "RenderingTestUtilities.h"
 
 #include <gtest/gtest.h>
@@ -59,6 +60,9 @@ namespace
 {
 namespace fs = std::filesystem;
 using riemann::Vec3;
+using riemann::testing::Compare;
+using riemann::testing::CpuPixels;
+using riemann::testing::DifferenceStatistics;
 using riemann::testing::ErrorObserver;
 using riemann::testing::KeepXServerConnection;
 
@@ -83,22 +87,6 @@ void WriteText(const fs::path& path, const std::string& text)
 {
   std::ofstream out(path);
   out << text;
-}
-
-/// 8-bit RGB rows (row 0 at the bottom) of the CPU tracer, rounded as OpenGL stores colours.
-std::vector<unsigned char> CpuPixels(vtkImageData* image)
-{
-  vtkDataArray* color = image->GetPointData()->GetArray("Color");
-  std::vector<unsigned char> pixels(3 * static_cast<std::size_t>(color->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < color->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double v = std::clamp(color->GetComponent(i, c), 0.0, 1.0);
-      pixels[3 * i + c] = static_cast<unsigned char>(std::lround(255.0 * v));
-    }
-  }
-  return pixels;
 }
 
 /// The GPU pass's picture of a scene file (its metric and camera), row 0 at the bottom.
@@ -128,39 +116,6 @@ std::vector<unsigned char> GpuPixels(
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetPixelData(0, 0, width - 1, height - 1, 1, pixels);
   return std::vector<unsigned char>(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * width * height);
-}
-
-struct DifferenceStatistics
-{
-  /// Over pixels, of the largest channel difference (0..255).
-  double Mean = 0.0;
-  double Percentile99 = 0.0;
-  /// Fraction of pixels whose largest channel difference exceeds the threshold.
-  double FractionAbove = 0.0;
-};
-
-DifferenceStatistics Compare(
-  const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int threshold)
-{
-  DifferenceStatistics s;
-  const std::size_t n = a.size() / 3;
-  std::vector<int> d(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    int m = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      m = std::max(m, std::abs(int(a[3 * i + c]) - int(b[3 * i + c])));
-    }
-    d[i] = m;
-    s.Mean += m;
-    s.FractionAbove += m > threshold ? 1 : 0;
-  }
-  s.Mean /= n;
-  s.FractionAbove /= n;
-  std::sort(d.begin(), d.end());
-  s.Percentile99 = d[std::min(n - 1, static_cast<std::size_t>(0.99 * n))];
-  return s;
 }
 
 /// A UV sphere of radius r (theta x phi quads split in two), built by hand.
