@@ -139,6 +139,7 @@ def main():
         tracer.Update()
         to_bytes = vtkImageShiftScale()
         to_bytes.SetInputData(tracer.GetOutput())
+        to_bytes.SetShift(0.5 / 255.0)  # (x + shift) * scale, truncated: rounds to the nearest byte
         to_bytes.SetScale(255.0)
         to_bytes.SetOutputScalarTypeToUnsignedChar()
         to_bytes.ClampOverflowOn()

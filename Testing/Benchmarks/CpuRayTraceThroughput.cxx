@@ -5,8 +5,8 @@
 //   so the CPU's count of integration steps is the GPU's too, and
 //   rays x steps / s = steps / seconds on both;
 // - a 1-million-triangle mesh (a UV sphere of 1000 x 500 quads, radius 1.5)
-//   in the same metric and camera, CPU only (the GPU pass draws no meshes),
-//   with Embree ray streams and with one query per segment.
+//   in the same metric and camera, on the CPU with Embree ray streams and with
+//   one query per segment (the GPU pass on meshes: RiemannMeshFrameBenchmark).
 //
 // Not a test: timings depend on the machine. Run under an X server, e.g.
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/bin/RiemannCpuRayTraceBenchmark
@@ -27,6 +27,8 @@
 #include "vtkRiemannScene.h"
 #include "vtkSMPTools.h"
 
+#include "SphereMesh.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -40,42 +42,6 @@
 
 namespace
 {
-/// A UV sphere of theta x phi quads, two triangles each.
-vtkSmartPointer<vtkPolyData> Sphere(double radius, int theta, int phi)
-{
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j <= phi; ++j)
-  {
-    for (int i = 0; i < theta; ++i)
-    {
-      const double polar = pi * j / phi;
-      const double azimuth = 2 * pi * i / theta;
-      points->InsertNextPoint(radius * std::sin(polar) * std::cos(azimuth),
-        radius * std::sin(polar) * std::sin(azimuth), radius * std::cos(polar));
-    }
-  }
-  for (int j = 0; j < phi; ++j)
-  {
-    for (int i = 0; i < theta; ++i)
-    {
-      const vtkIdType a = j * theta + i;
-      const vtkIdType b = j * theta + (i + 1) % theta;
-      const vtkIdType c = (j + 1) * theta + (i + 1) % theta;
-      const vtkIdType d = (j + 1) * theta + i;
-      const vtkIdType t0[3] = { a, b, c };
-      const vtkIdType t1[3] = { a, c, d };
-      triangles->InsertNextCell(3, t0);
-      triangles->InsertNextCell(3, t1);
-    }
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  return mesh;
-}
-
 std::string RendererName(vtkRenderWindow* window)
 {
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
@@ -159,7 +125,7 @@ int main(int argc, char** argv)
   meshTracer->SetCamera(camera);
   meshTracer->SetWidth(width);
   meshTracer->SetHeight(height);
-  meshTracer->AddMesh(Sphere(1.5, 1000, 500));
+  meshTracer->AddMesh(SphereMesh(1.5, 1000, 500));
   double meshTime[2] = { 0, 0 };
   double meshSteps = 0;
   for (int streams = 1; streams >= 0; --streams)

@@ -303,6 +303,18 @@ class CpuRenderTests(unittest.TestCase):
                 self.assertEqual(status, 0, err)
                 self.assertNotIn("[", err, "no progress bar when stderr is not a terminal")
 
+    def test_mesh_scene_on_both_backends(self):
+        # The GPU pass draws mesh objects; the CPU's picture of the same scene
+        # is within 0.5 of 255 of it on average.
+        scene = os.path.join(DATA, "scenes", "mesh-two-bumps.json")
+        gpu = os.path.join(self.dir, "gpu.png")
+        status, _, err = run("render", "--scene", scene, "--width", "80", "--height", "60", "-o", gpu)
+        self.assertEqual(status, 0, err)
+        status, _, err = run("render", "--backend", "cpu", "--scene", scene, "--width", "80",
+                             "--height", "60", "--threshold", "0.5", "--reference", gpu, "-o",
+                             os.path.join(self.dir, "cpu.png"))
+        self.assertEqual(status, 0, err)
+
     def test_exr_channels_and_hit_error(self):
         out = os.path.join(self.dir, "twist.exr")
         picture = os.path.join(self.dir, "error.png")
