@@ -2,13 +2,18 @@
 
 #include "Metric.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkExtentTranslator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -152,12 +157,76 @@ int vtkRiemannFieldAlgorithm::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
   outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  // Any sub-extent can be computed alone (every point's value depends on its
+  // coordinates only): the executive turns a request for piece p of N, with
+  // ghost levels, into UPDATE_EXTENT with vtkExtentTranslator.
+  outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   return 1;
 }
+
+namespace
+{
+/// The extent this request asks for (the whole grid without a request).
+void RequestedExtent(vtkInformation* outInfo, const int whole[6], int extent[6])
+{
+  std::copy(whole, whole + 6, extent);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    // Never beyond the grid, whatever was asked.
+    extent[2 * axis] = std::max(extent[2 * axis], whole[2 * axis]);
+    extent[2 * axis + 1] = std::min(extent[2 * axis + 1], whole[2 * axis + 1]);
+  }
+}
+
+/**
+ * Points of `image` outside the piece's own extent (the one without ghost
+ * levels) marked as duplicated in vtkGhostType, so that ParaView and the
+ * parallel writers know which piece owns them. Nothing without ghost levels.
+ */
+void MarkGhostPoints(vtkInformation* outInfo, const int whole[6], vtkImageData* image)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int ghosts = outInfo->Has(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
+  if (ghosts <= 0 || !outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()))
+  {
+    return;
+  }
+  int own[6];
+  vtkNew<vtkExtentTranslator> translator;
+  translator->PieceToExtentThreadSafe(outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()),
+    outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES()), 0, const_cast<int*>(whole), own,
+    translator->GetSplitMode(), 0);
+  const int* extent = image->GetExtent();
+  vtkNew<vtkUnsignedCharArray> ghost;
+  ghost->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghost->SetNumberOfTuples(image->GetNumberOfPoints());
+  vtkIdType id = 0;
+  for (int k = extent[4]; k <= extent[5]; ++k)
+  {
+    for (int j = extent[2]; j <= extent[3]; ++j)
+    {
+      for (int i = extent[0]; i <= extent[1]; ++i, ++id)
+      {
+        const bool inside = i >= own[0] && i <= own[1] && j >= own[2] && j <= own[3] &&
+          k >= own[4] && k <= own[5];
+        ghost->SetValue(id, inside ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+      }
+    }
+  }
+  image->GetPointData()->AddArray(ghost);
+}
+} // namespace
 
 int vtkRiemannFieldAlgorithm::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
   vtkDataSet* input =
     this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
@@ -186,8 +255,11 @@ int vtkRiemannFieldAlgorithm::RequestData(
     vtkImageData* image = vtkImageData::SafeDownCast(output);
     double origin[3], spacing[3];
     this->GridGeometry(origin, spacing);
-    image->SetExtent(
-      0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0, this->Dimensions[2] - 1);
+    const int whole[6] = { 0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0,
+      this->Dimensions[2] - 1 };
+    int extent[6];
+    RequestedExtent(outInfo, whole, extent);
+    image->SetExtent(extent);
     image->SetOrigin(origin);
     image->SetSpacing(spacing);
   }
@@ -200,6 +272,13 @@ int vtkRiemannFieldAlgorithm::RequestData(
   if (!this->ComputeFields(*metric, output))
   {
     output->Initialize();
+    return 1;
+  }
+  if (!input)
+  {
+    const int whole[6] = { 0, this->Dimensions[0] - 1, 0, this->Dimensions[1] - 1, 0,
+      this->Dimensions[2] - 1 };
+    MarkGhostPoints(outInfo, whole, vtkImageData::SafeDownCast(output));
   }
   return 1;
 }

@@ -16,6 +16,14 @@
  *
  * Without a valid metric, or with invalid Bounds/Dimensions, the filter
  * reports an error (vtkErrorMacro) and produces an empty output.
+ *
+ * Pieces: the grid honours VTK's piece requests (UPDATE_PIECE_NUMBER,
+ * UPDATE_NUMBER_OF_PIECES, ghost levels), as an MPI job or a streaming
+ * pipeline makes them: it declares CAN_PRODUCE_SUB_EXTENT, computes only the
+ * requested extent (vtkExtentTranslator's split of the whole grid), and
+ * marks the ghost points it adds as duplicated (vtkGhostType). Each point's
+ * values depend on its coordinates only, so the pieces are bitwise the whole
+ * grid's. With an input dataset the input's pieces apply.
  */
 #ifndef vtkRiemannFieldAlgorithm_h
 #define vtkRiemannFieldAlgorithm_h

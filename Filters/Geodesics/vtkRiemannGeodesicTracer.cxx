@@ -21,6 +21,7 @@
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <array>
@@ -366,8 +367,53 @@ void BuildOutput(
 }
 } // namespace
 
-// RequestData as named steps: GatherSeeds -> TraceInParallel ->
-// WarnAboutShortPaths -> BuildOutput (each in the anonymous namespace above).
+int vtkRiemannGeodesicTracer::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Any piece can be traced alone: a share of the seeds.
+  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+int vtkRiemannGeodesicTracer::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Every piece needs all the seeds (they are few) to take its share of them.
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+namespace
+{
+/// Keep this piece's share of the seeds: [n p / N, n (p + 1) / N).
+void KeepPieceShare(vtkInformation* outInfo, std::vector<Seed>& seeds)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  const int piece =
+    outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  if (pieces <= 1 || piece < 0 || piece >= pieces)
+  {
+    return;
+  }
+  const auto n = static_cast<long long>(seeds.size());
+  const auto first = static_cast<std::ptrdiff_t>(n * piece / pieces);
+  const auto last = static_cast<std::ptrdiff_t>(n * (piece + 1) / pieces);
+  seeds.erase(seeds.begin() + last, seeds.end());
+  seeds.erase(seeds.begin(), seeds.begin() + first);
+}
+} // namespace
+
+// RequestData as named steps: GatherSeeds -> KeepPieceShare -> TraceInParallel
+// -> WarnAboutShortPaths -> BuildOutput (each in an anonymous namespace above).
 int vtkRiemannGeodesicTracer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -387,6 +433,7 @@ int vtkRiemannGeodesicTracer::RequestData(
     this->ReportError(error);
     return 1;
   }
+  KeepPieceShare(outputVector->GetInformationObject(0), seeds);
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);

@@ -43,7 +43,14 @@
  * derivatives of the Christoffel symbols).
  *
  * Seeds are traced in parallel with vtkSMPTools; progress is reported and
- * AbortExecute honoured between batches of seeds. Without a valid metric, or
+ * AbortExecute honoured between batches of seeds.
+ *
+ * Pieces: asked for piece p of N (UPDATE_PIECE_NUMBER,
+ * UPDATE_NUMBER_OF_PIECES, as an MPI job asks), the filter reads all its
+ * seeds (it requests the whole input) and traces the p-th contiguous share
+ * of them, [n p / N, n (p + 1) / N) of the n seed-direction pairs in output
+ * order: the pieces, appended in order, are the one-piece output, with the
+ * same SeedIds. Without a valid metric, or
  * with an unusable setting, the filter reports an error (GetLastError) and
  * produces empty output.
  */
@@ -129,6 +136,10 @@ protected:
   ~vtkRiemannGeodesicTracer() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
