@@ -4,7 +4,10 @@
 #include "Metric.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -17,6 +20,7 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,16 +78,20 @@ long SampleAtRadius(const std::vector<riemann::JacobiSample>& samples, double r)
   return static_cast<long>(found - samples.begin());
 }
 
-/// Step 2 of RequestData: every direction of the grid traced with its Jacobi
-/// fields from the observer, landing on each radius, in parallel (progress
-/// and abort between batches of 64) on the packet engine (PacketWidth
-/// directions in lock step). False when aborted.
+/// Step 2 of RequestData: the directions `todo` of the grid (every one
+/// without a piece request) traced with their Jacobi fields from the
+/// observer, landing on each radius, in parallel (progress and abort between
+/// batches of 64) on the packet engine (PacketWidth directions in lock step).
+/// traces[i] is direction i's (empty for a direction not traced). False when
+/// aborted.
 bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
-  const riemann::Vec3& observer, vtkPolyData* grid, const riemann::GeodesicOptions& options,
-  const std::vector<double>& radii, std::vector<riemann::JacobiTrace>& traces)
+  const riemann::Vec3& observer, vtkPolyData* grid, const std::vector<vtkIdType>& todo,
+  const riemann::GeodesicOptions& options, const std::vector<double>& radii,
+  std::vector<riemann::JacobiTrace>& traces)
 {
-  const vtkIdType count = grid->GetNumberOfPoints();
-  traces.resize(static_cast<size_t>(count));
+  traces.assign(static_cast<size_t>(grid->GetNumberOfPoints()), riemann::JacobiTrace());
+  std::vector<riemann::JacobiTrace> traced(todo.size());
+  const auto count = static_cast<vtkIdType>(todo.size());
   const vtkIdType done = vtkRiemannForInBatches(
     self, count, 64,
     [&](vtkIdType first, vtkIdType last)
@@ -93,24 +101,73 @@ bool TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
       {
         riemann::JacobiSeed& seed = seeds[static_cast<size_t>(i - first)];
         seed.Point = observer;
-        grid->GetPoint(i, seed.Direction.data());
+        grid->GetPoint(todo[static_cast<size_t>(i)], seed.Direction.data());
       }
       riemann::TraceJacobiFields(
-        metric, seeds.data(), seeds.size(), options, traces.data() + first, radii);
+        metric, seeds.data(), seeds.size(), options, traced.data() + first, radii);
     },
     4 * riemann::PacketWidth);
+  for (size_t i = 0; i < todo.size(); ++i)
+  {
+    traces[static_cast<size_t>(todo[i])] = std::move(traced[i]);
+  }
   return done == count;
+}
+
+/**
+ * Step 2 under a piece request: the piece owns the directions [first, last)
+ * (their rays and wavefront points) and the grid's triangles whose smallest
+ * direction is one of them; `owned` gets the grid's points with those
+ * triangles only. Returns the directions to trace: the owned ones and the
+ * other corners of the owned triangles (the piece's ghost points).
+ */
+std::vector<vtkIdType> PieceDirections(
+  vtkPolyData* grid, vtkIdType first, vtkIdType last, vtkPolyData* owned)
+{
+  std::vector<bool> needed(static_cast<size_t>(grid->GetNumberOfPoints()), false);
+  for (vtkIdType i = first; i < last; ++i)
+  {
+    needed[static_cast<size_t>(i)] = true;
+  }
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkIdList> cell;
+  vtkCellArray* all = grid->GetPolys();
+  for (all->InitTraversal(); all->GetNextCell(cell);)
+  {
+    const vtkIdType lowest = std::min({ cell->GetId(0), cell->GetId(1), cell->GetId(2) });
+    if (lowest >= first && lowest < last)
+    {
+      triangles->InsertNextCell(cell);
+      for (int k = 0; k < 3; ++k)
+      {
+        needed[static_cast<size_t>(cell->GetId(k))] = true;
+      }
+    }
+  }
+  owned->SetPoints(grid->GetPoints());
+  owned->SetPolys(triangles);
+  std::vector<vtkIdType> todo;
+  for (size_t i = 0; i < needed.size(); ++i)
+  {
+    if (needed[i])
+    {
+      todo.push_back(static_cast<vtkIdType>(i));
+    }
+  }
+  return todo;
 }
 
 /// Step 3: port 0, the ray bundle: a polyline per direction that made a step,
 /// with ArcLength, SpeedDrift and the transverse Jacobian per point and
 /// DirectionId and ReasonForTermination per line.
-void BuildBundle(const std::vector<riemann::JacobiTrace>& traces, vtkPolyData* bundle)
+void BuildBundle(
+  const std::vector<riemann::JacobiTrace>& traces, vtkIdType first, vtkIdType last, vtkPolyData* bundle)
 {
   vtkIdType pointCount = 0;
   vtkIdType lineCount = 0;
-  for (const riemann::JacobiTrace& trace : traces)
+  for (vtkIdType i = first; i < last; ++i)
   {
+    const riemann::JacobiTrace& trace = traces[static_cast<size_t>(i)];
     if (trace.Samples.size() >= 2)
     {
       pointCount += static_cast<vtkIdType>(trace.Samples.size());
@@ -132,7 +189,7 @@ void BuildBundle(const std::vector<riemann::JacobiTrace>& traces, vtkPolyData* b
   vtkIdType next = 0;
   vtkIdType line = 0;
   std::vector<vtkIdType> ids;
-  for (size_t i = 0; i < traces.size(); ++i)
+  for (auto i = static_cast<size_t>(first); i < static_cast<size_t>(last); ++i)
   {
     const std::vector<riemann::JacobiSample>& samples = traces[i].Samples;
     if (samples.size() < 2)
@@ -166,11 +223,15 @@ void BuildBundle(const std::vector<riemann::JacobiTrace>& traces, vtkPolyData* b
 
 /// Step 4: port 1, one geodesic sphere per radius over the grid's triangles
 /// (the samples landed on that radius), with a warning for each radius beyond
-/// MaximumPropagation.
+/// MaximumPropagation. Under a piece request (`pieced`), the points of
+/// directions outside [first, last) are the piece's ghosts (vtkGhostType).
 void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
   const std::vector<riemann::JacobiTrace>& traces, const std::vector<double>& radii,
-  double maximumPropagation, vtkPolyData* wavefronts)
+  double maximumPropagation, vtkIdType first, vtkIdType last, bool pieced,
+  vtkPolyData* wavefronts)
 {
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
   vtkNew<vtkPoints> spherePoints;
   spherePoints->SetDataTypeToDouble();
   vtkNew<vtkCellArray> triangles;
@@ -204,6 +265,8 @@ void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
         sphereSingular->InsertNextTypedTuple(sample.SingularValues);
         pointRadius->InsertNextValue(r);
         sphereDirection->InsertNextValue(static_cast<int>(i));
+        ghosts->InsertNextValue(
+          i >= first && i < last ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
       }
     }
     const vtkIdType appended = vtkRiemannDirectionGrid::AppendTriangles(grid, local, triangles);
@@ -219,13 +282,29 @@ void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
   wavefronts->GetPointData()->AddArray(sphereDirection);
   wavefronts->GetPointData()->AddArray(pointRadius);
   wavefronts->GetCellData()->AddArray(cellRadius);
+  if (pieced)
+  {
+    wavefronts->GetPointData()->AddArray(ghosts);
+  }
 }
 }
 
-// RequestData as named steps: CheckRequest -> the direction grid ->
-// TraceInParallel -> BuildBundle (port 0) -> BuildWavefronts (port 1).
-int vtkRiemannExponentialMap::RequestData(
+int vtkRiemannExponentialMap::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Any piece can be traced alone: a share of the directions.
+  for (int port = 0; port < 2; ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  }
+  return 1;
+}
+
+// RequestData as named steps: CheckRequest -> the direction grid ->
+// PieceShare and PieceDirections -> TraceInParallel -> BuildBundle (port 0) ->
+// BuildWavefronts (port 1).
+int vtkRiemannExponentialMap::RequestData(
+  vtkInformation* request, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* bundle = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* wavefronts = vtkPolyData::GetData(outputVector, 1);
@@ -241,16 +320,38 @@ int vtkRiemannExponentialMap::RequestData(
   {
     return 1;
   }
+  // The piece the request is for (the port it came from; both ports share it).
+  const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
+    ? std::max(0, request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
+    : 0;
+  vtkIdType first = 0;
+  vtkIdType last = 0;
+  const bool pieced = PieceShare(
+    outputVector->GetInformationObject(port), grid->GetNumberOfPoints(), first, last);
+  vtkNew<vtkPolyData> ownedGrid;
+  std::vector<vtkIdType> todo;
+  if (pieced)
+  {
+    todo = PieceDirections(grid, first, last, ownedGrid);
+  }
+  else
+  {
+    ownedGrid->ShallowCopy(grid);
+    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+    {
+      todo.push_back(i);
+    }
+  }
   const riemann::Vec3 observer(this->Observer[0], this->Observer[1], this->Observer[2]);
   std::vector<riemann::JacobiTrace> traces;
   if (!TraceInParallel(
-        this, *metric, observer, grid, this->MakeGeodesicOptions(), this->Radii, traces))
+        this, *metric, observer, grid, todo, this->MakeGeodesicOptions(), this->Radii, traces))
   {
     return 1; // aborted: empty outputs
   }
-  BuildBundle(traces, bundle);
-  BuildWavefronts(this, grid, traces, this->Radii,
-    this->IntegrationSettings->GetMaximumPropagation(), wavefronts);
+  BuildBundle(traces, first, last, bundle);
+  BuildWavefronts(this, ownedGrid, traces, this->Radii,
+    this->IntegrationSettings->GetMaximumPropagation(), first, last, pieced, wavefronts);
   return 1;
 }
 

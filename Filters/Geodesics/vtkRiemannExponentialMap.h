@@ -30,6 +30,14 @@
  *
  * Directions are traced in parallel with vtkSMPTools, in batches so that
  * progress is reported and AbortExecute honoured on the calling thread.
+ *
+ * Pieces: asked for piece p of N (as an MPI job asks), the filter owns the
+ * directions [n p / N, n (p + 1) / N) of the n of the grid: their rays on
+ * port 0, their wavefront points on port 1, and the grid's triangles whose
+ * smallest direction it owns, for which it also traces their other corners
+ * (marked as ghost points, vtkGhostType). The pieces together are the
+ * one-piece output: the same rays, points and triangles, bitwise, with the
+ * same DirectionIds.
  * Without a valid metric, or with a bad axis or observer, the filter reports
  * an error and produces empty outputs.
  */
@@ -87,6 +95,8 @@ protected:
   vtkRiemannExponentialMap();
   ~vtkRiemannExponentialMap() override;
 
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

@@ -2,11 +2,13 @@
 
 #include "GeodesicTrace.h"
 #include "Metric.h"
+#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,4 +107,25 @@ void vtkRiemannGeodesicAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrationSettings:\n";
   this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LastError: " << this->LastError << "\n";
+}
+
+bool vtkRiemannGeodesicAlgorithm::PieceShare(
+  vtkInformation* outInfo, vtkIdType count, vtkIdType& first, vtkIdType& last)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  first = 0;
+  last = count;
+  const int pieces = outInfo && outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  const int piece =
+    outInfo && outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  if (pieces <= 1 || piece < 0 || piece >= pieces)
+  {
+    return false;
+  }
+  // In 64 bits: count * piece stays far from overflow for any vtkIdType count of items.
+  first = static_cast<vtkIdType>(static_cast<long long>(count) * piece / pieces);
+  last = static_cast<vtkIdType>(static_cast<long long>(count) * (piece + 1) / pieces);
+  return true;
 }

@@ -103,6 +103,16 @@ protected:
     int numberOfDirections, const double coneAxis[3], double coneAngle, vtkPolyData* grid);
   ///@}
 
+  /**
+   * This execution's share of `count` items (seeds, directions, pixels) under
+   * VTK's piece request in `outInfo` (UPDATE_PIECE_NUMBER p of
+   * UPDATE_NUMBER_OF_PIECES N): [count p / N, count (p + 1) / N), contiguous
+   * and in order, so that the pieces appended in order are the one-piece
+   * output; [0, count) without a request. Returns whether the share is a
+   * proper piece (N > 1).
+   */
+  static bool PieceShare(vtkInformation* outInfo, vtkIdType count, vtkIdType& first, vtkIdType& last);
+
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   std::string LastError;

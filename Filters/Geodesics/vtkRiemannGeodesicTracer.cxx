@@ -389,30 +389,7 @@ int vtkRiemannGeodesicTracer::RequestUpdateExtent(
   return 1;
 }
 
-namespace
-{
-/// Keep this piece's share of the seeds: [n p / N, n (p + 1) / N).
-void KeepPieceShare(vtkInformation* outInfo, std::vector<Seed>& seeds)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
-    ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
-    : 1;
-  const int piece =
-    outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
-  if (pieces <= 1 || piece < 0 || piece >= pieces)
-  {
-    return;
-  }
-  const auto n = static_cast<long long>(seeds.size());
-  const auto first = static_cast<std::ptrdiff_t>(n * piece / pieces);
-  const auto last = static_cast<std::ptrdiff_t>(n * (piece + 1) / pieces);
-  seeds.erase(seeds.begin() + last, seeds.end());
-  seeds.erase(seeds.begin(), seeds.begin() + first);
-}
-} // namespace
-
-// RequestData as named steps: GatherSeeds -> KeepPieceShare -> TraceInParallel
+// RequestData as named steps: GatherSeeds -> PieceShare -> TraceInParallel
 // -> WarnAboutShortPaths -> BuildOutput (each in an anonymous namespace above).
 int vtkRiemannGeodesicTracer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -433,7 +410,12 @@ int vtkRiemannGeodesicTracer::RequestData(
     this->ReportError(error);
     return 1;
   }
-  KeepPieceShare(outputVector->GetInformationObject(0), seeds);
+  // This piece's share of the seeds (all of them without a piece request).
+  vtkIdType first = 0;
+  vtkIdType last = 0;
+  PieceShare(outputVector->GetInformationObject(0), static_cast<vtkIdType>(seeds.size()), first, last);
+  seeds.erase(seeds.begin() + last, seeds.end());
+  seeds.erase(seeds.begin(), seeds.begin() + first);
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
