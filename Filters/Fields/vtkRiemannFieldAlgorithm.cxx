@@ -213,8 +213,8 @@ void MarkGhostPoints(vtkInformation* outInfo, const int whole[6], vtkImageData* 
     {
       for (int i = extent[0]; i <= extent[1]; ++i, ++id)
       {
-        const bool inside = i >= own[0] && i <= own[1] && j >= own[2] && j <= own[3] &&
-          k >= own[4] && k <= own[5];
+        const bool inside =
+          i >= own[0] && i <= own[1] && j >= own[2] && j <= own[3] && k >= own[4] && k <= own[5];
         ghost->SetValue(id, inside ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
       }
     }

@@ -45,6 +45,15 @@
  *
  * Directions are processed in parallel with vtkSMPTools, in batches so that
  * progress is reported and AbortExecute honoured on the calling thread.
+ *
+ * Pieces: asked for piece p of N (as an MPI job asks), the filter owns the
+ * directions [n p / N, n (p + 1) / N) of the n of the grid: their conjugate
+ * points on port 0, their sheet points on port 1, and the sheet triangles
+ * over grid triangles whose smallest direction it owns (their other corners
+ * are ghost points, vtkGhostType). It searches two rings of neighbouring
+ * directions more, so that KernelSlope and the cusp edges are those of the
+ * whole grid: the pieces together are the one-piece output, bitwise, with
+ * the same DirectionIds.
  * Without a valid metric, or with an unusable setting, the filter reports an
  * error (GetLastError) and produces empty output.
  */
@@ -56,7 +65,6 @@
 
 #include "Jets.h" // For riemann::Vec3, riemann::Mat3
 
-#include <vector> // For BuildLocusSurfaces
 
 namespace riemann
 {
@@ -108,14 +116,10 @@ protected:
   vtkRiemannConjugateLocus();
   ~vtkRiemannConjugateLocus() override;
 
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
-
-  /// Port 1: the caustic sheets over the grid's triangles (g: the metric at
-  /// the observer).
-  void BuildLocusSurfaces(vtkPolyData* grid, const std::vector<riemann::Vec3>& directions,
-    const std::vector<std::vector<riemann::ConjugatePoint>>& found, const riemann::Mat3& g,
-    vtkPolyData* locus);
 
   double Observer[3] = { 0.0, 0.0, 0.0 };
   int NumberOfDirections = 100;

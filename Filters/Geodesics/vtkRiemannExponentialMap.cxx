@@ -160,8 +160,8 @@ std::vector<vtkIdType> PieceDirections(
 /// Step 3: port 0, the ray bundle: a polyline per direction that made a step,
 /// with ArcLength, SpeedDrift and the transverse Jacobian per point and
 /// DirectionId and ReasonForTermination per line.
-void BuildBundle(
-  const std::vector<riemann::JacobiTrace>& traces, vtkIdType first, vtkIdType last, vtkPolyData* bundle)
+void BuildBundle(const std::vector<riemann::JacobiTrace>& traces, vtkIdType first, vtkIdType last,
+  vtkPolyData* bundle)
 {
   vtkIdType pointCount = 0;
   vtkIdType lineCount = 0;
@@ -227,8 +227,7 @@ void BuildBundle(
 /// directions outside [first, last) are the piece's ghosts (vtkGhostType).
 void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
   const std::vector<riemann::JacobiTrace>& traces, const std::vector<double>& radii,
-  double maximumPropagation, vtkIdType first, vtkIdType last, bool pieced,
-  vtkPolyData* wavefronts)
+  double maximumPropagation, vtkIdType first, vtkIdType last, bool pieced, vtkPolyData* wavefronts)
 {
   vtkNew<vtkUnsignedCharArray> ghosts;
   ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
@@ -265,8 +264,7 @@ void BuildWavefronts(vtkObject* self, vtkPolyData* grid,
         sphereSingular->InsertNextTypedTuple(sample.SingularValues);
         pointRadius->InsertNextValue(r);
         sphereDirection->InsertNextValue(static_cast<int>(i));
-        ghosts->InsertNextValue(
-          i >= first && i < last ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+        ghosts->InsertNextValue(i >= first && i < last ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
       }
     }
     const vtkIdType appended = vtkRiemannDirectionGrid::AppendTriangles(grid, local, triangles);
@@ -326,8 +324,8 @@ int vtkRiemannExponentialMap::RequestData(
     : 0;
   vtkIdType first = 0;
   vtkIdType last = 0;
-  const bool pieced = PieceShare(
-    outputVector->GetInformationObject(port), grid->GetNumberOfPoints(), first, last);
+  const bool pieced =
+    PieceShare(outputVector->GetInformationObject(port), grid->GetNumberOfPoints(), first, last);
   vtkNew<vtkPolyData> ownedGrid;
   std::vector<vtkIdType> todo;
   if (pieced)

@@ -118,8 +118,9 @@ bool vtkRiemannGeodesicAlgorithm::PieceShare(
   const int pieces = outInfo && outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
     ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
     : 1;
-  const int piece =
-    outInfo && outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+  const int piece = outInfo && outInfo->Has(SDDP::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER())
+    : 0;
   if (pieces <= 1 || piece < 0 || piece >= pieces)
   {
     return false;

@@ -413,7 +413,8 @@ int vtkRiemannGeodesicTracer::RequestData(
   // This piece's share of the seeds (all of them without a piece request).
   vtkIdType first = 0;
   vtkIdType last = 0;
-  PieceShare(outputVector->GetInformationObject(0), static_cast<vtkIdType>(seeds.size()), first, last);
+  PieceShare(
+    outputVector->GetInformationObject(0), static_cast<vtkIdType>(seeds.size()), first, last);
   seeds.erase(seeds.begin() + last, seeds.end());
   seeds.erase(seeds.begin(), seeds.begin() + first);
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();

@@ -5,7 +5,12 @@
 //   same code wherever it falls), every seed in exactly one piece;
 // - vtkRiemannExponentialMap, N = 2, 3: the rays likewise (DirectionIds),
 //   and the wavefronts' own points (not ghosts) and triangles are exactly the
-//   one-piece output's, bitwise, each in one piece.
+//   one-piece output's, bitwise, each in one piece;
+// - vtkRiemannConjugateLocus, N = 2, 3, on the astigmatic lens (two sheets
+//   with cusp edges): the conjugate points appended in order, and the
+//   sheets' own points (with KernelSlope, which reads the neighbours) and
+//   triangles (with their Singularity) are the one-piece output's, bitwise.
+#include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannGeodesicTracer.h"
 #include "vtkRiemannIntegrationSettings.h"
@@ -256,6 +261,141 @@ TEST(GeodesicPieces, ExponentialMapPiecesAreTheWholeOutput)
       ASSERT_NE(found, parts.Points.end()) << "radius " << key.first << " direction " << key.second;
       EXPECT_EQ(std::memcmp(found->second.data(), values.data(), values.size() * sizeof(double)), 0)
         << "radius " << key.first << " direction " << key.second;
+    }
+    std::sort(parts.Triangles.begin(), parts.Triangles.end());
+    EXPECT_EQ(parts.Triangles, whole.Triangles);
+  }
+}
+
+namespace
+{
+/// Every value of point `id`: its coordinates, then each point array's components.
+std::vector<double> PointValues(vtkPolyData* data, vtkIdType id)
+{
+  std::vector<double> values(3);
+  data->GetPoint(id, values.data());
+  for (int a = 0; a < data->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetPointData()->GetArray(a);
+    if (std::string(array->GetName()) == vtkDataSetAttributes::GhostArrayName())
+    {
+      continue;
+    }
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      values.push_back(array->GetComponent(id, c));
+    }
+  }
+  return values;
+}
+
+/// The caustic sheets' own points by (Sheet, DirectionId), and triangles by
+/// (sheet, corner directions, singularity).
+struct Sheets
+{
+  std::map<std::pair<int, int>, std::vector<double>> Points;
+  std::vector<std::array<int, 5>> Triangles;
+  int Duplicates = 0;
+
+  void Append(vtkPolyData* data)
+  {
+    vtkDataArray* sheet = data->GetPointData()->GetArray("Sheet");
+    vtkDataArray* direction = data->GetPointData()->GetArray("DirectionId");
+    auto* ghost = vtkUnsignedCharArray::SafeDownCast(
+      data->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    ASSERT_NE(sheet, nullptr);
+    for (vtkIdType id = 0; id < data->GetNumberOfPoints(); ++id)
+    {
+      if (ghost && ghost->GetValue(id) != 0)
+      {
+        continue;
+      }
+      const std::pair<int, int> key(
+        static_cast<int>(sheet->GetTuple1(id)), static_cast<int>(direction->GetTuple1(id)));
+      this->Duplicates += this->Points.count(key) ? 1 : 0;
+      this->Points[key] = PointValues(data, id);
+    }
+    vtkDataArray* cellSheet = data->GetCellData()->GetArray("Sheet");
+    vtkDataArray* singularity = data->GetCellData()->GetArray("Singularity");
+    vtkNew<vtkIdList> cell;
+    vtkIdType t = 0;
+    vtkCellArray* polys = data->GetPolys();
+    for (polys->InitTraversal(); polys->GetNextCell(cell); ++t)
+    {
+      this->Triangles.push_back({ static_cast<int>(cellSheet->GetTuple1(t)),
+        static_cast<int>(direction->GetTuple1(cell->GetId(0))),
+        static_cast<int>(direction->GetTuple1(cell->GetId(1))),
+        static_cast<int>(direction->GetTuple1(cell->GetId(2))),
+        static_cast<int>(singularity->GetTuple1(t)) });
+    }
+  }
+};
+} // namespace
+
+TEST(GeodesicPieces, ConjugateLocusPiecesAreTheWholeOutput)
+{
+  // Data/metrics/astigmatic-lens.json, seen from its axis through a cone.
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(R"({"type": "conformal", "constant": 1.0,
+    "gaussians": [{"amplitude": 0.6, "center": [0, 0, 0], "sigma": [1.0, 0.6, 0.85]}]})"));
+  vtkNew<vtkRiemannConjugateLocus> locus;
+  locus->SetMetric(metric);
+  locus->SetObserver(-3.0, 0.0, 0.0);
+  locus->SetConeAxis(1.0, 0.0, 0.0);
+  locus->SetConeAngle(14.0);
+  locus->SetNumberOfDirections(300);
+  locus->SetMaximumNumberOfConjugatePoints(3);
+  locus->GetIntegrationSettings()->SetMaximumPropagation(9.0);
+  locus->Update();
+  vtkPolyData* wholePoints = locus->GetOutput(0);
+  std::vector<std::vector<double>> points;
+  for (vtkIdType id = 0; id < wholePoints->GetNumberOfPoints(); ++id)
+  {
+    points.push_back(PointValues(wholePoints, id));
+  }
+  ASSERT_EQ(points.size(), 600u) << "two conjugate points per direction";
+  Sheets whole;
+  whole.Append(locus->GetOutput(1));
+  std::sort(whole.Triangles.begin(), whole.Triangles.end());
+  int cusps = 0;
+  for (const auto& t : whole.Triangles)
+  {
+    cusps += t[4] == 1 ? 1 : 0;
+  }
+  ASSERT_GT(cusps, 0) << "the sheets have cusp edges";
+
+  for (int pieces : { 2, 3 })
+  {
+    SCOPED_TRACE("pieces " + std::to_string(pieces));
+    std::vector<std::vector<double>> appended;
+    Sheets parts;
+    for (int piece = 0; piece < pieces; ++piece)
+    {
+      locus->UpdatePiece(piece, pieces, 0);
+      vtkPolyData* part = locus->GetOutput(0);
+      for (vtkIdType id = 0; id < part->GetNumberOfPoints(); ++id)
+      {
+        appended.push_back(PointValues(part, id));
+      }
+      parts.Append(locus->GetOutput(1));
+    }
+    ASSERT_EQ(appended.size(), points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      ASSERT_EQ(appended[i].size(), points[i].size());
+      EXPECT_EQ(
+        std::memcmp(appended[i].data(), points[i].data(), points[i].size() * sizeof(double)), 0)
+        << "conjugate point " << i;
+    }
+    EXPECT_EQ(parts.Duplicates, 0);
+    ASSERT_EQ(parts.Points.size(), whole.Points.size());
+    for (const auto& [key, values] : whole.Points)
+    {
+      const auto found = parts.Points.find(key);
+      ASSERT_NE(found, parts.Points.end()) << "sheet " << key.first << " direction " << key.second;
+      ASSERT_EQ(found->second.size(), values.size());
+      EXPECT_EQ(std::memcmp(found->second.data(), values.data(), values.size() * sizeof(double)), 0)
+        << "sheet " << key.first << " direction " << key.second;
     }
     std::sort(parts.Triangles.begin(), parts.Triangles.end());
     EXPECT_EQ(parts.Triangles, whole.Triangles);
