@@ -10,6 +10,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -163,8 +164,16 @@ void BuildOutput(const std::vector<riemann::RayPath>& paths, const std::vector<P
 }
 } // namespace
 
-// RequestData as named steps: the scene, camera and meshes -> SelectPixels ->
-// TraceRays -> BuildOutput.
+int vtkRiemannRayBundle::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // Any piece can be traced alone: a share of the pixels.
+  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+// RequestData as named steps: the scene, camera and meshes -> SelectPixels
+// and PieceShare -> TraceRays -> BuildOutput.
 int vtkRiemannRayBundle::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -213,6 +222,13 @@ int vtkRiemannRayBundle::RequestData(
 
   std::vector<Pixel> pixels;
   this->SelectPixels(pixels);
+  // This piece's share of the pixels (all of them without a piece request).
+  vtkIdType first = 0;
+  vtkIdType last = 0;
+  PieceShare(
+    outputVector->GetInformationObject(0), static_cast<vtkIdType>(pixels.size()), first, last);
+  pixels.erase(pixels.begin() + last, pixels.end());
+  pixels.erase(pixels.begin(), pixels.begin() + first);
   const std::vector<riemann::RayPath> paths = TraceRays(*metric, *scene, *camera, settings.Position,
     rays, pixels, this->Width, this->Height, meshes.get());
   this->UpdateProgress(1.0);

@@ -26,6 +26,10 @@
  * pass's: RUNGE_KUTTA4, step 0.02, MaximumPropagation 30, 1000 steps,
  * MaximumError 1e-4) and Projection apply, exactly as for
  * vtkRiemannRayTracePass (vtkRiemannObserverSettings.h).
+ *
+ * Pieces: asked for piece p of N (as an MPI job asks), the filter traces the
+ * p-th contiguous share of its pixels, [n p / N, n (p + 1) / N) of the n in
+ * output order: the pieces appended in order are the one-piece output.
  */
 #ifndef vtkRiemannRayBundle_h
 #define vtkRiemannRayBundle_h
@@ -107,6 +111,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// The integration settings are checked only when they apply (UseSceneSettings off).
   bool UsesIntegrationSettings() const override { return !this->UseSceneSettings; }
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

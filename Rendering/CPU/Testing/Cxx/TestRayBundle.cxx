@@ -551,6 +551,47 @@ TEST(RayBundle, SubgridPixelsAreBlockCentres)
   EXPECT_LT((fromDefault[0].Points[0] - Vec3(0, 0, 7.5)).norm(), 1e-12);
 }
 
+TEST(RayBundle, PiecesAppendedInOrderAreTheWholeBundle)
+{
+  // What an MPI job asks: piece p of N traces a share of the pixels; in
+  // order, the pieces are the whole bundle, bitwise, in the paper's bump.
+  vtkNew<vtkRiemannScene> scene;
+  ASSERT_TRUE(scene->SetDefinitionFile((DataDirectory() / "scenes/paper-one-bump.json").c_str()));
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(scene->GetMetricDefinition().c_str()));
+  vtkNew<vtkRiemannRayBundle> bundle;
+  bundle->SetMetric(metric);
+  bundle->SetScene(scene);
+  bundle->SetWidth(64);
+  bundle->SetHeight(48);
+  bundle->SetSubgridResolution(7);
+  bundle->Update();
+  const std::vector<Line> whole = ReadLines(bundle->GetOutput());
+  ASSERT_EQ(whole.size(), 49u);
+  for (int pieces : { 2, 3, 4 })
+  {
+    SCOPED_TRACE("pieces " + std::to_string(pieces));
+    std::vector<Line> appended;
+    for (int piece = 0; piece < pieces; ++piece)
+    {
+      bundle->UpdatePiece(piece, pieces, 0);
+      const std::vector<Line> part = ReadLines(bundle->GetOutput());
+      appended.insert(appended.end(), part.begin(), part.end());
+    }
+    ASSERT_EQ(appended.size(), whole.size());
+    for (std::size_t k = 0; k < whole.size(); ++k)
+    {
+      EXPECT_EQ(appended[k].Column, whole[k].Column);
+      EXPECT_EQ(appended[k].Row, whole[k].Row);
+      ASSERT_EQ(appended[k].Points.size(), whole[k].Points.size()) << "line " << k;
+      for (std::size_t i = 0; i < whole[k].Points.size(); ++i)
+      {
+        ASSERT_EQ(appended[k].Points[i], whole[k].Points[i]) << "line " << k << " point " << i;
+      }
+    }
+  }
+}
+
 TEST(RayBundle, PixelRegionWithStride)
 {
   vtkNew<vtkRiemannMetric> metric;
