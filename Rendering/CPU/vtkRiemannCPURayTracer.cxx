@@ -49,6 +49,8 @@ public:
   };
   std::vector<AddedMesh> Meshes;
   std::vector<vtkSmartPointer<vtkActor>> Actors;
+  /// The image extent this update traces (the whole image, or a piece's).
+  int Extent[6] = { 0, -1, 0, -1, 0, 0 };
   /// The last update's pixels (GetPixelResults).
   std::vector<riemann::PixelResult> Pixels;
 };
@@ -80,9 +82,9 @@ void vtkRiemannCPURayTracer::SetIntegrationSettings(vtkRiemannIntegrationSetting
 vtkMTimeType vtkRiemannCPURayTracer::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
-  for (vtkObject* object : { static_cast<vtkObject*>(this->Metric),
-         static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera),
-         static_cast<vtkObject*>(this->IntegrationSettings) })
+  for (vtkObject* object :
+    { static_cast<vtkObject*>(this->Metric), static_cast<vtkObject*>(this->Scene),
+      static_cast<vtkObject*>(this->Camera), static_cast<vtkObject*>(this->IntegrationSettings) })
   {
     if (object)
     {
@@ -125,7 +127,8 @@ int vtkRiemannCPURayTracer::GetNumberOfAddedActors() const
   return static_cast<int>(this->Internals->Actors.size());
 }
 
-void vtkRiemannCPURayTracer::AddMesh(vtkPolyData* mesh, const char* colorArray, const char* colorMap)
+void vtkRiemannCPURayTracer::AddMesh(
+  vtkPolyData* mesh, const char* colorArray, const char* colorMap)
 {
   if (!mesh)
   {
@@ -171,6 +174,9 @@ int vtkRiemannCPURayTracer::RequestInformation(
   info->Set(vtkDataObject::SPACING(), spacing, 3);
   info->Set(vtkDataObject::ORIGIN(), origin, 3);
   vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 3);
+  // Any sub-extent can be traced alone (every pixel's rays are its own): the
+  // executive turns a request for piece p of N into UPDATE_EXTENT.
+  info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   return 1;
 }
 
@@ -204,6 +210,24 @@ int vtkRiemannCPURayTracer::RequestData(
   {
     return 1;
   }
+  // The requested part of the image (all of it without a piece request).
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    int requested[6];
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), requested);
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      extent[2 * axis] = std::max(extent[2 * axis], requested[2 * axis]);
+      extent[2 * axis + 1] = std::min(extent[2 * axis + 1], requested[2 * axis + 1]);
+    }
+  }
+  if (extent[0] > extent[1] || extent[2] > extent[3])
+  {
+    return 1; // an empty piece
+  }
+  std::copy(extent, extent + 6, this->Internals->Extent);
   this->TraceTiles(*tracer);
   this->HitErrorComputed = this->ComputeHitError && tracer->HasExactReference();
   if (this->ComputeHitError && !this->HitErrorComputed)
@@ -290,9 +314,9 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
   }
   const riemann::RaySettings rays =
     vtkRiemannResolveRaySettings(this->UseSceneSettings, *scene, this->IntegrationSettings);
-  const riemann::CameraSettings camera = vtkRiemannCameraSettings(this->Camera,
-    static_cast<double>(this->Width) / this->Height, scene->Camera,
-    vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
+  const riemann::CameraSettings camera =
+    vtkRiemannCameraSettings(this->Camera, static_cast<double>(this->Width) / this->Height,
+      scene->Camera, vtkRiemannResolveProjection(this->UseSceneSettings, *scene, this->Projection));
 
   std::shared_ptr<riemann::EnvironmentMap> environment;
   if (!scene->EnvironmentImage.empty())
@@ -333,11 +357,15 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
 void vtkRiemannCPURayTracer::TraceTiles(const riemann::CPUTracer& tracer)
 {
   // Tiles, run in parallel in batches; progress and AbortExecute between batches.
+  // The tiles of the whole image's tiling that meet the extent, cut to it.
   const int width = this->Width;
   const int height = this->Height;
+  const int* extent = this->Internals->Extent;
   const int tile = this->TileSize;
-  const int tilesX = (width + tile - 1) / tile;
-  const int tilesY = (height + tile - 1) / tile;
+  const int firstX = extent[0] / tile;
+  const int firstY = extent[2] / tile;
+  const int tilesX = extent[1] / tile - firstX + 1;
+  const int tilesY = extent[3] / tile - firstY + 1;
   const vtkIdType tiles = static_cast<vtkIdType>(tilesX) * tilesY;
   std::vector<riemann::PixelResult>& pixels = this->Internals->Pixels;
   pixels.assign(static_cast<std::size_t>(width) * height, riemann::PixelResult());
@@ -350,27 +378,28 @@ void vtkRiemannCPURayTracer::TraceTiles(const riemann::CPUTracer& tracer)
       long long local = 0;
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const int x0 = static_cast<int>(t % tilesX) * tile;
-        const int y0 = static_cast<int>(t / tilesX) * tile;
-        local += tracer.RenderTile(
-          x0, y0, std::min(width, x0 + tile), std::min(height, y0 + tile), pixels.data());
+        const int x0 = (firstX + static_cast<int>(t % tilesX)) * tile;
+        const int y0 = (firstY + static_cast<int>(t / tilesX)) * tile;
+        local += tracer.RenderTile(std::max(x0, extent[0]), std::max(y0, extent[2]),
+          std::min({ width, x0 + tile, extent[1] + 1 }),
+          std::min({ height, y0 + tile, extent[3] + 1 }), pixels.data());
       }
       steps += local;
     });
   timer->StopTimer();
   this->TraceTime = timer->GetElapsedTime();
   this->NumberOfIntegrationSteps = steps.load();
-  this->NumberOfRays = static_cast<vtkIdType>(width) * height *
-    (this->SamplesPerPixel > 1 ? this->SamplesPerPixel + 1 : 1);
+  this->NumberOfRays = static_cast<vtkIdType>(extent[1] - extent[0] + 1) *
+    (extent[3] - extent[2] + 1) * (this->SamplesPerPixel > 1 ? this->SamplesPerPixel + 1 : 1);
 }
 
 //------------------------------------------------------------------------------
 void vtkRiemannCPURayTracer::FillOutput(vtkImageData* output)
 {
-  const int width = this->Width;
-  const int height = this->Height;
-  const vtkIdType n = static_cast<vtkIdType>(width) * height;
-  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  const int* extent = this->Internals->Extent;
+  const vtkIdType n =
+    static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1);
+  output->SetExtent(const_cast<int*>(extent));
   output->SetSpacing(1, 1, 1);
   output->SetOrigin(0, 0, 0);
   auto color = vtkRiemannNewArray<vtkFloatArray>("Color", 3, n);
@@ -382,9 +411,13 @@ void vtkRiemannCPURayTracer::FillOutput(vtkImageData* output)
   auto hitError =
     this->HitErrorComputed ? vtkRiemannNewArray<vtkFloatArray>("HitError", 1, n) : nullptr;
   const std::vector<riemann::PixelResult>& pixels = this->Internals->Pixels;
+  const int columns = extent[1] - extent[0] + 1;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const riemann::PixelResult& p = pixels[i];
+    // Pixels are stored for the whole image, row 0 at the bottom.
+    const std::size_t x = static_cast<std::size_t>(extent[0] + i % columns);
+    const std::size_t y = static_cast<std::size_t>(extent[2] + i / columns);
+    const riemann::PixelResult& p = pixels[y * static_cast<std::size_t>(this->Width) + x];
     color->SetTypedTuple(i, p.Color);
     hitPosition->SetTypedTuple(i, p.HitPosition);
     arcLength->SetValue(i, p.ArcLength);
@@ -398,10 +431,10 @@ void vtkRiemannCPURayTracer::FillOutput(vtkImageData* output)
   }
   vtkPointData* pointData = output->GetPointData();
   pointData->SetScalars(color);
-  for (vtkDataArray* array : { static_cast<vtkDataArray*>(hitPosition),
-         static_cast<vtkDataArray*>(arcLength), static_cast<vtkDataArray*>(stepCount),
-         static_cast<vtkDataArray*>(reason), static_cast<vtkDataArray*>(drift),
-         static_cast<vtkDataArray*>(hitError) })
+  for (vtkDataArray* array :
+    { static_cast<vtkDataArray*>(hitPosition), static_cast<vtkDataArray*>(arcLength),
+      static_cast<vtkDataArray*>(stepCount), static_cast<vtkDataArray*>(reason),
+      static_cast<vtkDataArray*>(drift), static_cast<vtkDataArray*>(hitError) })
   {
     if (array)
     {

@@ -43,6 +43,12 @@
  * (the default), else from GetIntegrationSettings() and Projection, as the
  * pass (vtkRiemannObserverSettings.h; the same defaults).
  *
+ * Pieces: the image honours VTK's piece requests (as an MPI job or a
+ * streaming pipeline makes them): it declares CAN_PRODUCE_SUB_EXTENT and
+ * traces only the requested extent (the tiles of the whole image's tiling
+ * that meet it). Every pixel's rays are its own, so a piece is bitwise the
+ * whole image's pixels there, anti-aliasing included.
+ *
  * Errors (no metric, a degenerate metric at the eye, a mesh that cannot be
  * built, bad sizes) are reported with vtkErrorMacro and give an empty
  * output. Progress is reported between batches of tiles, where AbortExecute

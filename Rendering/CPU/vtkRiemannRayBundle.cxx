@@ -58,7 +58,8 @@ int vtkRiemannRayBundle::FillInputPortInformation(int, vtkInformation*)
 vtkMTimeType vtkRiemannRayBundle::GetMTime()
 {
   vtkMTimeType time = this->Superclass::GetMTime();
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera) })
+  for (vtkObject* o :
+    { static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Camera) })
   {
     if (o)
     {

@@ -11,9 +11,9 @@
 // - the exact reference of the twist (Phi^-1 of straight lines): RK4's hit error
 //   is far below Euler's; the tracer's exact hits match an independent one;
 // - anti-aliasing is deterministic; errors give empty output.
-#include "vtkRiemannIntegrationSettings.h"
-#include "vtkRiemannCPURayTracer.h"
 #include "RiemannSceneIntersection.h"
+#include "vtkRiemannCPURayTracer.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
@@ -115,7 +115,8 @@ std::vector<unsigned char> GpuPixels(
   window->Render();
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetPixelData(0, 0, width - 1, height - 1, 1, pixels);
-  return std::vector<unsigned char>(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * width * height);
+  return std::vector<unsigned char>(
+    pixels->GetPointer(0), pixels->GetPointer(0) + 3 * width * height);
 }
 
 /// A UV sphere of radius r (theta x phi quads split in two), built by hand.
@@ -257,9 +258,8 @@ TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
     ASSERT_TRUE(scene->SetDefinitionFile(file.c_str())) << scene->GetLastError();
     ++compared;
     vtkNew<vtkRiemannMetric> metric;
-    ASSERT_TRUE(metric->SetDefinition(scene->HasMetricDefinition()
-        ? scene->GetMetricDefinition().c_str()
-        : EuclideanJson));
+    ASSERT_TRUE(metric->SetDefinition(
+      scene->HasMetricDefinition() ? scene->GetMetricDefinition().c_str() : EuclideanJson));
     ErrorObserver* gpuErrors = nullptr;
     const std::vector<unsigned char> gpu = GpuPixels(metric, scene, width, height, &gpuErrors);
     ASSERT_TRUE(gpuErrors->Messages.empty()) << gpuErrors->All();
@@ -302,7 +302,8 @@ TEST(CPURayTracer, TessellatedSphereLooksLikeTheAnalyticSphere)
   vtkNew<vtkRiemannScene> analytic;
   ASSERT_TRUE(analytic->SetDefinition(("{" + common +
     R"(, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
-        "material": {"type": "position", "bounds": [-1, 1, -1, 1, -1, 1]}}]})").c_str()))
+        "material": {"type": "position", "bounds": [-1, 1, -1, 1, -1, 1]}}]})")
+                                        .c_str()))
     << analytic->GetLastError();
   vtkNew<vtkRiemannScene> empty;
   ASSERT_TRUE(empty->SetDefinition(("{" + common + R"(, "objects": []})").c_str()));
@@ -360,13 +361,15 @@ TEST(CPURayTracer, MeshFileWithVertexColours)
   // A PLY square at z = 0 with red and blue vertices, named by a scene file:
   // the view straight down sees the interpolated colours.
   const fs::path dir = TemporaryDirectory("colours");
-  WriteText(dir / "square.ply", "ply\nformat ascii 1.0\nelement vertex 4\n"
-                                "property float x\nproperty float y\nproperty float z\n"
-                                "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-                                "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                                "-2 -2 0 255 0 0\n2 -2 0 0 0 255\n2 2 0 0 0 255\n-2 2 0 255 0 0\n"
-                                "3 0 1 2\n3 0 2 3\n");
-  WriteText(dir / "scene.json", R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 40},
+  WriteText(dir / "square.ply",
+    "ply\nformat ascii 1.0\nelement vertex 4\n"
+    "property float x\nproperty float y\nproperty float z\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+    "-2 -2 0 255 0 0\n2 -2 0 0 0 255\n2 2 0 0 0 255\n-2 2 0 255 0 0\n"
+    "3 0 1 2\n3 0 2 3\n");
+  WriteText(
+    dir / "scene.json", R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 40},
     "background": [0, 1, 0],
     "objects": [{"type": "mesh", "file": "square.ply"}]})");
   vtkNew<vtkRiemannScene> scene;
@@ -401,19 +404,22 @@ TEST(CPURayTracer, MeshFileWithVertexColours)
 TEST(CPURayTracer, BadMeshesAreClearErrors)
 {
   const fs::path dir = TemporaryDirectory("bad");
-  WriteText(dir / "points.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
-                                "property float x\nproperty float y\nproperty float z\nend_header\n"
-                                "0 0 0\n1 0 0\n0 1 0\n");
-  WriteText(dir / "nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
-                             "property float x\nproperty float y\nproperty float z\n"
-                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                             "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
+  WriteText(dir / "points.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\n"
+    "property float x\nproperty float y\nproperty float z\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n");
+  WriteText(dir / "nan.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\n"
+    "property float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
   WriteText(dir / "broken.vtp", "<VTKFile type=\"PolyData\"> not really");
   WriteText(dir / "mesh.xyz", "0 0 0\n");
-  WriteText(dir / "good.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
-                              "property float x\nproperty float y\nproperty float z\n"
-                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  WriteText(dir / "good.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\n"
+    "property float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   const std::vector<std::pair<std::string, std::string>> cases = {
     { R"({"type": "mesh", "file": "missing.ply"})", "not found" },
     { R"({"type": "mesh", "file": "mesh.xyz"})", "unknown mesh format \".xyz\"" },
@@ -457,6 +463,62 @@ TEST(CPURayTracer, BadMeshesAreClearErrors)
 }
 
 //------------------------------------------------------------------------------
+TEST(CPURayTracer, PiecesAreTheWholeImagesPixels)
+{
+  // What an MPI job asks: piece p of N is a sub-extent, bitwise the whole
+  // image's pixels there (4 samples per pixel: the jitter is per pixel), and
+  // the pieces cover the image.
+  vtkNew<vtkRiemannScene> scene;
+  ASSERT_TRUE(scene->SetDefinitionFile((DataDirectory() / "scenes/paper-one-bump.json").c_str()));
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(scene->GetMetricDefinition().c_str()));
+  vtkNew<vtkRiemannCPURayTracer> tracer;
+  tracer->SetMetric(metric);
+  tracer->SetScene(scene);
+  tracer->SetWidth(53);
+  tracer->SetHeight(37);
+  tracer->SetTileSize(8);
+  tracer->SetSamplesPerPixel(4);
+  tracer->Update();
+  vtkNew<vtkImageData> whole;
+  whole->DeepCopy(tracer->GetOutput());
+  for (int pieces : { 2, 3, 5 })
+  {
+    SCOPED_TRACE("pieces " + std::to_string(pieces));
+    std::vector<int> covered(53 * 37, 0);
+    for (int piece = 0; piece < pieces; ++piece)
+    {
+      tracer->UpdatePiece(piece, pieces, 0);
+      vtkImageData* part = tracer->GetOutput();
+      const int* e = part->GetExtent();
+      ASSERT_GT(part->GetNumberOfPoints(), 0);
+      for (const char* name : { "Color", "HitPosition", "ArcLength", "Steps" })
+      {
+        vtkDataArray* expected = whole->GetPointData()->GetArray(name);
+        vtkDataArray* got = part->GetPointData()->GetArray(name);
+        ASSERT_NE(got, nullptr) << name;
+        for (int y = e[2]; y <= e[3]; ++y)
+        {
+          for (int x = e[0]; x <= e[1]; ++x)
+          {
+            const vtkIdType ours = (y - e[2]) * (e[1] - e[0] + 1) + (x - e[0]);
+            for (int c = 0; c < expected->GetNumberOfComponents(); ++c)
+            {
+              const double a = got->GetComponent(ours, c);
+              const double b = expected->GetComponent(y * 53 + x, c);
+              ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b)))
+                << name << " at " << x << " " << y << ": " << a << " vs " << b;
+            }
+            covered[y * 53 + x] += name[0] == 'C' ? 1 : 0;
+          }
+        }
+      }
+    }
+    EXPECT_EQ(*std::min_element(covered.begin(), covered.end()), 1);
+  }
+}
+
+//------------------------------------------------------------------------------
 TEST(CPURayTracer, StreamsAndSingleQueriesAgree)
 {
   vtkNew<vtkRiemannScene> scene;
@@ -491,7 +553,8 @@ TEST(CPURayTracer, TwistHitErrorAgainstTheExactReference)
   ASSERT_TRUE(metric->SetDefinition(TwistJson));
   std::array<double, 2> median{};
   std::array<double, 2> maximum{};
-  for (int method : { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
+  for (int method :
+    { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
   {
     vtkNew<vtkRiemannCPURayTracer> tracer;
     tracer->SetMetric(metric);
@@ -525,8 +588,7 @@ TEST(CPURayTracer, TwistHitErrorAgainstTheExactReference)
     // The maximum over the pixels that are not on a bar edge (99th percentile).
     maximum[k] = values[static_cast<std::size_t>(0.99 * (values.size() - 1))];
     std::cout << (k ? "RK4" : "Euler") << ": median " << median[k] << ", 99th percentile "
-              << maximum[k] << ", max " << values.back() << ", disagreeing " << disagreeing
-              << "\n";
+              << maximum[k] << ", max " << values.back() << ", disagreeing " << disagreeing << "\n";
   }
   // Measured (32 x 24): RK4 median 4e-5, 99th percentile 3e-4; Euler median 4e-2.
   EXPECT_LT(median[1], 1e-4);
@@ -551,11 +613,15 @@ TEST(CPURayTracer, ExactHitsMatchAnIndependentTwist)
     metric->GetMetric(), description, description->Camera, description->Rays, settings);
   ASSERT_TRUE(tracer.HasExactReference());
   auto phi = [](const Vec3& p)
-  { return Vec3(std::cos(p.z()) * p.x() - std::sin(p.z()) * p.y(),
-      std::sin(p.z()) * p.x() + std::cos(p.z()) * p.y(), p.z()); };
+  {
+    return Vec3(std::cos(p.z()) * p.x() - std::sin(p.z()) * p.y(),
+      std::sin(p.z()) * p.x() + std::cos(p.z()) * p.y(), p.z());
+  };
   auto phiInverse = [](const Vec3& q)
-  { return Vec3(std::cos(q.z()) * q.x() + std::sin(q.z()) * q.y(),
-      -std::sin(q.z()) * q.x() + std::cos(q.z()) * q.y(), q.z()); };
+  {
+    return Vec3(std::cos(q.z()) * q.x() + std::sin(q.z()) * q.y(),
+      -std::sin(q.z()) * q.x() + std::cos(q.z()) * q.y(), q.z());
+  };
   const Vec3 eye = description->Camera.Position;
   int compared = 0;
   for (int row = 0; row < 12; row += 3)

@@ -74,9 +74,7 @@ using riemann::testing::KeepXServerConnection;
 std::filesystem::path DataDirectory()
 {
   const char* dir = std::getenv("RIEMANN_DATA_DIR");
-  return dir && *dir
-    ? std::filesystem::path(dir)
-    : std::filesystem::path(RIEMANN_TEST_DATA_DIR);
+  return dir && *dir ? std::filesystem::path(dir) : std::filesystem::path(RIEMANN_TEST_DATA_DIR);
 }
 
 constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
