@@ -41,6 +41,7 @@ PACKAGES=(
   python3-numpy xvfb xauth libgl1-mesa-dri
   clang libclang-rt-14-dev glslang-tools
   qtbase5-dev libqt5opengl5-dev libvtk9-qt-dev
+  openmpi-bin libopenmpi-dev python3-mpi4py
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }
