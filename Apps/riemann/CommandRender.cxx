@@ -694,7 +694,7 @@ void RegisterRenderCommand(CLI::App& app)
     ->check(WholeNumber(1, 16384));
   command
     ->add_option("--backend", args->Backend,
-      "gpu (default: GLSL, analytic objects) or cpu (Embree: also meshes; EXR with AOVs)")
+      "gpu (default: GLSL; every scene object, meshes included) or cpu (Embree, double precision; anti-aliasing, EXR with AOVs)")
     ->check(CLI::IsMember({ "gpu", "cpu" }));
   command
     ->add_option("--samples", args->Samples,

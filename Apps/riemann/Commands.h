@@ -24,7 +24,7 @@ void RegisterExpmapCommand(CLI::App& app);
 /// listing of render in `riemann --help`.
 constexpr const char* RenderCommandDescription =
   "Render the inside view of R^3 with a metric by Riemannian ray tracing (GPU, or CPU with\n"
-  "--backend cpu: triangle meshes, anti-aliasing, EXR channels of the rays' hits).\n"
+  "--backend cpu: anti-aliasing, EXR channels of the rays' hits).\n"
   "Without --metric and --scene: the paper's grid with one Gaussian bump.";
 }
 }
