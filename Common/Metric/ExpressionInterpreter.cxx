@@ -129,13 +129,9 @@ void Run(const Instruction* ip, const Instruction* end, const std::int32_t* __re
     return;                                                                                        \
   }                                                                                                \
   goto* labels[static_cast<int>(ip->Operation)];
-  // In the order of Code.
-  static const void* const labels[] = { &&L_Const, &&L_Lin, &&L_LinP2, &&L_LinP3, &&L_Lin1,
-    &&L_AddC, &&L_Add2, &&L_Sub2, &&L_Mul, &&L_Mul2, &&L_Div, &&L_Square, &&L_Recip, &&L_Sqrt,
-    &&L_Pow, &&L_Exp, &&L_Log, &&L_Sin, &&L_Cos, &&L_Tan, &&L_Sinh, &&L_Cosh, &&L_Tanh, &&L_Atan,
-    &&L_Atan2, &&L_Abs, &&L_Sign, &&L_ExpLin, &&L_Store, &&L_StoreScaled, &&L_StoreConst };
-  static_assert(sizeof(labels) / sizeof(labels[0]) == static_cast<int>(Code::StoreConst) + 1,
-    "one label per Code");
+#define RIEMANN_LABEL(name) &&L_##name,
+  static const void* const labels[] = { RIEMANN_EXPRESSION_CODES(RIEMANN_LABEL) };
+#undef RIEMANN_LABEL
   if (ip == end)
   {
     return;

@@ -348,13 +348,9 @@ void RunPacketImpl(const ExpressionTape& tape, int end, PacketRegister* r, doubl
     return;                                                                                        \
   }                                                                                                \
   goto* labels[static_cast<int>(ip->Operation)];
-  // In the order of Code.
-  static const void* const labels[] = { &&L_Const, &&L_Lin, &&L_LinP2, &&L_LinP3, &&L_Lin1,
-    &&L_AddC, &&L_Add2, &&L_Sub2, &&L_Mul, &&L_Mul2, &&L_Div, &&L_Square, &&L_Recip, &&L_Sqrt,
-    &&L_Pow, &&L_Exp, &&L_Log, &&L_Sin, &&L_Cos, &&L_Tan, &&L_Sinh, &&L_Cosh, &&L_Tanh, &&L_Atan,
-    &&L_Atan2, &&L_Abs, &&L_Sign, &&L_ExpLin, &&L_Store, &&L_StoreScaled, &&L_StoreConst };
-  static_assert(sizeof(labels) / sizeof(labels[0]) == static_cast<int>(Code::StoreConst) + 1,
-    "one label per Code");
+#define RIEMANN_LABEL(name) &&L_##name,
+  static const void* const labels[] = { RIEMANN_EXPRESSION_CODES(RIEMANN_LABEL) };
+#undef RIEMANN_LABEL
   goto* labels[static_cast<int>(ip->Operation)];
 #else
 #define RIEMANN_OP(name) case Code::name:
@@ -370,37 +366,7 @@ void RunPacketImpl(const ExpressionTape& tape, int end, PacketRegister* r, doubl
     ExecuteAllLanes<Code::name>(*ip, operands, k, r, outputs);                                     \
     RIEMANN_NEXT                                                                                   \
   }
-  RIEMANN_HANDLER(Const)
-  RIEMANN_HANDLER(Lin)
-  RIEMANN_HANDLER(LinP2)
-  RIEMANN_HANDLER(LinP3)
-  RIEMANN_HANDLER(Lin1)
-  RIEMANN_HANDLER(AddC)
-  RIEMANN_HANDLER(Add2)
-  RIEMANN_HANDLER(Sub2)
-  RIEMANN_HANDLER(Mul)
-  RIEMANN_HANDLER(Mul2)
-  RIEMANN_HANDLER(Div)
-  RIEMANN_HANDLER(Square)
-  RIEMANN_HANDLER(Recip)
-  RIEMANN_HANDLER(Sqrt)
-  RIEMANN_HANDLER(Pow)
-  RIEMANN_HANDLER(Exp)
-  RIEMANN_HANDLER(Log)
-  RIEMANN_HANDLER(Sin)
-  RIEMANN_HANDLER(Cos)
-  RIEMANN_HANDLER(Tan)
-  RIEMANN_HANDLER(Sinh)
-  RIEMANN_HANDLER(Cosh)
-  RIEMANN_HANDLER(Tanh)
-  RIEMANN_HANDLER(Atan)
-  RIEMANN_HANDLER(Atan2)
-  RIEMANN_HANDLER(Abs)
-  RIEMANN_HANDLER(Sign)
-  RIEMANN_HANDLER(ExpLin)
-  RIEMANN_HANDLER(Store)
-  RIEMANN_HANDLER(StoreScaled)
-  RIEMANN_HANDLER(StoreConst)
+  RIEMANN_EXPRESSION_CODES(RIEMANN_HANDLER)
 #if !defined(__GNUC__)
 }
 }

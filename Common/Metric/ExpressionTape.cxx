@@ -518,37 +518,11 @@ ExpressionTape BuildExpressionTape(const ExpressionGraph& graph, int order, int 
 
 int CountOperands(const ExpressionTape& tape)
 {
+  // An operand is a register read (a padding One of a product term included).
   int operands = 0;
   for (const Instruction& in : tape.Instructions)
   {
-    switch (in.Operation)
-    {
-      case Code::Lin:
-      case Code::Mul:
-      case Code::ExpLin:
-        operands += in.N;
-        break;
-      case Code::LinP2:
-        operands += 2 * in.N;
-        break;
-      case Code::LinP3:
-        operands += 3 * in.N;
-        break;
-      case Code::Add2:
-      case Code::Sub2:
-      case Code::Mul2:
-      case Code::Div:
-      case Code::Pow:
-      case Code::Atan2:
-        operands += 2;
-        break;
-      case Code::Const:
-      case Code::StoreConst:
-        break;
-      default:
-        operands += 1;
-        break;
-    }
+    ForEachRead(in, tape, [&](int) { ++operands; });
   }
   return operands;
 }

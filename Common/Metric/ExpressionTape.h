@@ -52,6 +52,31 @@ enum class Code : std::uint8_t
   StoreConst   // out[B] = C
 };
 
+/// Every Code in the enum's order, for the tables indexed by code (the
+/// interpreters' dispatch): X(name) once per code.
+#define RIEMANN_EXPRESSION_CODES(X)                                                                \
+  X(Const) X(Lin) X(LinP2) X(LinP3) X(Lin1) X(AddC) X(Add2) X(Sub2) X(Mul) X(Mul2) X(Div)          \
+    X(Square) X(Recip) X(Sqrt) X(Pow) X(Exp) X(Log) X(Sin) X(Cos) X(Tan) X(Sinh) X(Cosh) X(Tanh)   \
+      X(Atan) X(Atan2) X(Abs) X(Sign) X(ExpLin) X(Store) X(StoreScaled) X(StoreConst)
+
+/// True when RIEMANN_EXPRESSION_CODES lists every Code once, in order.
+constexpr bool ExpressionCodesListedInOrder()
+{
+#define RIEMANN_CODE_ENTRY(name) Code::name,
+  constexpr Code listed[] = { RIEMANN_EXPRESSION_CODES(RIEMANN_CODE_ENTRY) };
+#undef RIEMANN_CODE_ENTRY
+  constexpr int count = static_cast<int>(sizeof(listed) / sizeof(listed[0]));
+  for (int i = 0; i < count; ++i)
+  {
+    if (static_cast<int>(listed[i]) != i)
+    {
+      return false;
+    }
+  }
+  return count == static_cast<int>(Code::StoreConst) + 1;
+}
+static_assert(ExpressionCodesListedInOrder(), "RIEMANN_EXPRESSION_CODES must follow Code");
+
 struct Instruction
 {
   Code Operation;

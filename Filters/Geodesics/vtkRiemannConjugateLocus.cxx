@@ -6,7 +6,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
-#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
@@ -385,14 +384,10 @@ int vtkRiemannConjugateLocus::RequestData(
   {
     grid->GetPoint(i, directions[i].data());
   }
-  // The piece the request is for (the port it came from; both ports share it).
-  const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-    ? std::max(0, request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
-    : 0;
   vtkIdType first = 0;
   vtkIdType last = 0;
-  const bool pieced = PieceShare(outputVector->GetInformationObject(port),
-    static_cast<vtkIdType>(directions.size()), first, last);
+  const bool pieced =
+    PieceShare(request, outputVector, static_cast<vtkIdType>(directions.size()), first, last);
   const std::vector<Triangle> gridTriangles = GridTriangles(grid);
   const LocusPiece piece =
     MakePiece(gridTriangles, static_cast<int>(directions.size()), first, last, pieced);

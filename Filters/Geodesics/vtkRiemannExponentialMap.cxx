@@ -5,7 +5,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
-#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
@@ -318,14 +317,9 @@ int vtkRiemannExponentialMap::RequestData(
   {
     return 1;
   }
-  // The piece the request is for (the port it came from; both ports share it).
-  const int port = request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
-    ? std::max(0, request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
-    : 0;
   vtkIdType first = 0;
   vtkIdType last = 0;
-  const bool pieced =
-    PieceShare(outputVector->GetInformationObject(port), grid->GetNumberOfPoints(), first, last);
+  const bool pieced = PieceShare(request, outputVector, grid->GetNumberOfPoints(), first, last);
   vtkNew<vtkPolyData> ownedGrid;
   std::vector<vtkIdType> todo;
   if (pieced)

@@ -2,7 +2,9 @@
 
 #include "GeodesicTrace.h"
 #include "Metric.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
@@ -109,10 +111,14 @@ void vtkRiemannGeodesicAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastError: " << this->LastError << "\n";
 }
 
-bool vtkRiemannGeodesicAlgorithm::PieceShare(
-  vtkInformation* outInfo, vtkIdType count, vtkIdType& first, vtkIdType& last)
+bool vtkRiemannGeodesicAlgorithm::PieceShare(vtkInformation* request,
+  vtkInformationVector* outputVector, vtkIdType count, vtkIdType& first, vtkIdType& last)
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int port = request && request->Has(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT())
+    ? std::max(0, request->Get(vtkDemandDrivenPipeline::FROM_OUTPUT_PORT()))
+    : 0;
+  vtkInformation* outInfo = outputVector->GetInformationObject(port);
   first = 0;
   last = count;
   const int pieces = outInfo && outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())

@@ -105,13 +105,14 @@ protected:
 
   /**
    * This execution's share of `count` items (seeds, directions, pixels) under
-   * VTK's piece request in `outInfo` (UPDATE_PIECE_NUMBER p of
-   * UPDATE_NUMBER_OF_PIECES N): [count p / N, count (p + 1) / N), contiguous
-   * and in order, so that the pieces appended in order are the one-piece
-   * output; [0, count) without a request. Returns whether the share is a
-   * proper piece (N > 1).
+   * VTK's piece request (UPDATE_PIECE_NUMBER p of UPDATE_NUMBER_OF_PIECES N,
+   * read from the output port the request came from; a filter's ports share
+   * one piece): [count p / N, count (p + 1) / N), contiguous and in order, so
+   * that the pieces appended in order are the one-piece output; [0, count)
+   * without a request. Returns whether the share is a proper piece (N > 1).
    */
-  static bool PieceShare(vtkInformation* outInfo, vtkIdType count, vtkIdType& first, vtkIdType& last);
+  static bool PieceShare(vtkInformation* request, vtkInformationVector* outputVector,
+    vtkIdType count, vtkIdType& first, vtkIdType& last);
 
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;

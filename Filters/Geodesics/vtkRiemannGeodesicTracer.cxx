@@ -392,7 +392,7 @@ int vtkRiemannGeodesicTracer::RequestUpdateExtent(
 // RequestData as named steps: GatherSeeds -> PieceShare -> TraceInParallel
 // -> WarnAboutShortPaths -> BuildOutput (each in an anonymous namespace above).
 int vtkRiemannGeodesicTracer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
@@ -413,8 +413,7 @@ int vtkRiemannGeodesicTracer::RequestData(
   // This piece's share of the seeds (all of them without a piece request).
   vtkIdType first = 0;
   vtkIdType last = 0;
-  PieceShare(
-    outputVector->GetInformationObject(0), static_cast<vtkIdType>(seeds.size()), first, last);
+  PieceShare(request, outputVector, static_cast<vtkIdType>(seeds.size()), first, last);
   seeds.erase(seeds.begin() + last, seeds.end());
   seeds.erase(seeds.begin(), seeds.begin() + first);
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();

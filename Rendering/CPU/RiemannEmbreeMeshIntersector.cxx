@@ -66,15 +66,7 @@ EmbreeMeshIntersector::EmbreeMeshIntersector(const Scene& scene)
     {
       continue;
     }
-    if (object.Mesh < 0 || object.Mesh >= static_cast<int>(scene.Meshes.size()) ||
-      !scene.Meshes[object.Mesh])
-    {
-      throw std::runtime_error("scene.objects[" + std::to_string(index) +
-        "]: the mesh has no triangles (" +
-        (object.MeshFile.empty() ? std::string("no data given") : object.MeshFile + " not read") +
-        ")");
-    }
-    const TriangleMesh& mesh = *scene.Meshes[object.Mesh];
+    const TriangleMesh& mesh = *ObjectMesh(scene, index);
     RTCGeometry geometry = rtcNewGeometry(impl.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree's own buffers (aligned and padded as it requires), filled once.
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,

@@ -46,13 +46,7 @@ std::vector<MeshInput> CollectMeshes(const Scene& scene, MeshBVH& bvh)
     {
       continue;
     }
-    if (object.Mesh < 0 || object.Mesh >= static_cast<int>(scene.Meshes.size()) ||
-      !scene.Meshes[object.Mesh])
-    {
-      throw std::runtime_error(
-        "scene.objects[" + std::to_string(index) + "]: the mesh has no triangles");
-    }
-    const TriangleMesh& mesh = *scene.Meshes[object.Mesh];
+    const TriangleMesh& mesh = *ObjectMesh(scene, index);
     if (vertices + mesh.NumberOfPoints() > static_cast<std::size_t>(MeshBVHMaximumIndex))
     {
       throw std::runtime_error("the scene's meshes have more than " +

@@ -176,7 +176,7 @@ int vtkRiemannRayBundle::RequestInformation(
 // RequestData as named steps: the scene, camera and meshes -> SelectPixels
 // and PieceShare -> TraceRays -> BuildOutput.
 int vtkRiemannRayBundle::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
@@ -226,8 +226,7 @@ int vtkRiemannRayBundle::RequestData(
   // This piece's share of the pixels (all of them without a piece request).
   vtkIdType first = 0;
   vtkIdType last = 0;
-  PieceShare(
-    outputVector->GetInformationObject(0), static_cast<vtkIdType>(pixels.size()), first, last);
+  PieceShare(request, outputVector, static_cast<vtkIdType>(pixels.size()), first, last);
   pixels.erase(pixels.begin() + last, pixels.end());
   pixels.erase(pixels.begin(), pixels.begin() + first);
   const std::vector<riemann::RayPath> paths = TraceRays(*metric, *scene, *camera, settings.Position,

@@ -112,12 +112,25 @@ void MeshBounds(const TriangleMesh& mesh, Vec3& lo, Vec3& hi)
 }
 }
 
+const std::shared_ptr<const TriangleMesh>& ObjectMesh(const Scene& scene, std::size_t index)
+{
+  const SceneObject& object = scene.Objects.at(index);
+  if (object.Mesh < 0 || object.Mesh >= static_cast<int>(scene.Meshes.size()) ||
+    !scene.Meshes[object.Mesh])
+  {
+    throw SceneDefinitionError("scene.objects[" + std::to_string(index) +
+      "]: the mesh has no triangles (" +
+      (object.MeshFile.empty() ? std::string("no data given") : object.MeshFile + " not read") +
+      ")");
+  }
+  return scene.Meshes[object.Mesh];
+}
+
 void SetMesh(Scene& scene, std::size_t object, std::shared_ptr<const TriangleMesh> mesh)
 {
   if (object >= scene.Objects.size() || scene.Objects[object].Type != ObjectType::Mesh)
   {
-    throw SceneDefinitionError(
-      "scene.objects[" + std::to_string(object) + "]: not a mesh object");
+    throw SceneDefinitionError("scene.objects[" + std::to_string(object) + "]: not a mesh object");
   }
   SceneObject& target = scene.Objects[object];
   const std::string where = "scene.objects[" + std::to_string(object) + "]" +

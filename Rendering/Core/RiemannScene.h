@@ -204,6 +204,14 @@ RIEMANNRENDERINGCORE_EXPORT void SetDefaultMaterialBounds(
 RIEMANNRENDERINGCORE_EXPORT void SetMesh(
   Scene& scene, std::size_t object, std::shared_ptr<const TriangleMesh> mesh);
 
+/**
+ * The triangles of mesh object `object` (an index into scene.Objects).
+ * Throws SceneDefinitionError naming the object when it has none yet (its
+ * file not read, or no data given).
+ */
+RIEMANNRENDERINGCORE_EXPORT const std::shared_ptr<const TriangleMesh>& ObjectMesh(
+  const Scene& scene, std::size_t object);
+
 /// Append a mesh object with `material` (its bounds: the mesh's, unless `keepBounds`); returns its index.
 RIEMANNRENDERINGCORE_EXPORT std::size_t AddMesh(Scene& scene,
   std::shared_ptr<const TriangleMesh> mesh, const Material& material, bool keepBounds = false);

@@ -27,7 +27,8 @@
 #include "vtkRiemannScene.h"
 #include "vtkSMPTools.h"
 
-#include "SphereMesh.h"
+#include "RenderBenchmarkOptions.h"
+#include "UVSphereMesh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -36,44 +37,16 @@
 #include <cstdlib>
 #include <string>
 
-#ifndef RIEMANN_SOURCE_DIR
-#define RIEMANN_SOURCE_DIR "."
-#endif
-
-namespace
-{
-std::string RendererName(vtkRenderWindow* window)
-{
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  const std::string report = gl ? gl->ReportCapabilities() : "";
-  const std::string key = "OpenGL renderer string:";
-  const size_t at = report.find(key);
-  return at == std::string::npos
-    ? std::string("unknown")
-    : report.substr(at + key.size(), report.find('\n', at) - at - key.size());
-}
-} // namespace
-
 int main(int argc, char** argv)
 {
-  int width = 1920;
-  int height = 1080;
-  std::string data = std::string(RIEMANN_SOURCE_DIR) + "/Data";
-  for (int i = 1; i + 1 < argc; i += 2)
+  RenderBenchmarkOptions options;
+  if (!ParseRenderBenchmarkOptions(argc, argv, options))
   {
-    const std::string option = argv[i];
-    if (option == "--width")
-      width = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--height")
-      height = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--data")
-      data = argv[i + 1];
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", argv[i]);
-      return 2;
-    }
+    return 2;
   }
+  const int width = options.Width;
+  const int height = options.Height;
+  const std::string& data = options.Data;
   vtkNew<vtkRiemannScene> scene;
   if (!scene->SetDefinitionFile((data + "/scenes/paper-one-bump.json").c_str()))
   {
@@ -125,7 +98,7 @@ int main(int argc, char** argv)
   meshTracer->SetCamera(camera);
   meshTracer->SetWidth(width);
   meshTracer->SetHeight(height);
-  meshTracer->AddMesh(SphereMesh(1.5, 1000, 500));
+  meshTracer->AddMesh(UVSphereMesh(1.5, 1000, 500));
   double meshTime[2] = { 0, 0 };
   double meshSteps = 0;
   for (int streams = 1; streams >= 0; --streams)

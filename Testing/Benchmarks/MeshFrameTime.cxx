@@ -32,7 +32,9 @@
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "SphereMesh.h"
+#include "ImageComparison.h"
+#include "RenderBenchmarkOptions.h"
+#include "UVSphereMesh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -42,26 +44,11 @@
 #include <string>
 #include <vector>
 
-#ifndef RIEMANN_SOURCE_DIR
-#define RIEMANN_SOURCE_DIR "."
-#endif
-
 namespace
 {
 double Seconds(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string RendererName(vtkRenderWindow* window)
-{
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  const std::string report = gl ? gl->ReportCapabilities() : "";
-  const std::string key = "OpenGL renderer string:";
-  const size_t at = report.find(key);
-  return at == std::string::npos
-    ? std::string("unknown")
-    : report.substr(at + key.size(), report.find('\n', at) - at - key.size());
 }
 
 /// The GPU pass's frame time for `scene` (and the renderer's actors) at the
@@ -109,50 +96,18 @@ GpuFrame RenderOnGpu(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera
   return result;
 }
 
-/// Mean and share above 24 of the largest channel difference per pixel.
-void ComparePixels(
-  const std::vector<unsigned char>& a, vtkImageData* cpu, double& mean, double& above)
-{
-  vtkDataArray* color = cpu->GetPointData()->GetArray("Color");
-  const std::size_t n = a.size() / 3;
-  mean = 0.0;
-  above = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    int m = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double v = std::clamp(color->GetComponent(static_cast<vtkIdType>(i), c), 0.0, 1.0);
-      m = std::max(m, std::abs(int(a[3 * i + c]) - int(std::lround(255.0 * v))));
-    }
-    mean += m;
-    above += m > 24 ? 1 : 0;
-  }
-  mean /= n;
-  above /= n;
-}
 } // namespace
 
 int main(int argc, char** argv)
 {
-  int width = 1920;
-  int height = 1080;
-  std::string data = std::string(RIEMANN_SOURCE_DIR) + "/Data";
-  for (int i = 1; i + 1 < argc; i += 2)
+  RenderBenchmarkOptions options;
+  if (!ParseRenderBenchmarkOptions(argc, argv, options))
   {
-    const std::string option = argv[i];
-    if (option == "--width")
-      width = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--height")
-      height = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--data")
-      data = argv[i + 1];
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", argv[i]);
-      return 2;
-    }
+    return 2;
   }
+  const int width = options.Width;
+  const int height = options.Height;
+  const std::string& data = options.Data;
   vtkNew<vtkRiemannScene> grid;
   if (!grid->SetDefinitionFile((data + "/scenes/paper-two-bumps.json").c_str()))
   {
@@ -169,7 +124,7 @@ int main(int argc, char** argv)
     "lighting": "observer"})");
 
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(SphereMesh(1.2, 1000, 500, 0.0, 0.0, -2.5));
+  mapper->SetInputData(UVSphereMesh(1.2, 1000, 500, 0.0, 0.0, -2.5));
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.9, 0.6, 0.3);
@@ -189,17 +144,18 @@ int main(int argc, char** argv)
   tracer->Update();
   const double cpuMeshTotal = Seconds(start);
   const double cpuMesh = tracer->GetTraceTime();
-  double mean = 0.0;
-  double above = 0.0;
-  ComparePixels(gpuMesh.Pixels, tracer->GetOutput(), mean, above);
+  const riemann::testing::DifferenceStatistics difference =
+    riemann::testing::Compare(gpuMesh.Pixels, riemann::testing::CpuPixels(tracer->GetOutput()), 24);
 
   std::printf("GPU pass on a 1,000,000-triangle mesh, %dx%d, two-bump metric, one ray per "
               "pixel; GL renderer: %s; CPU: %d threads (%s)\n\n",
     width, height, rendererName.c_str(), vtkSMPTools::GetEstimatedNumberOfThreads(),
     vtkSMPTools::GetBackend());
   std::printf("| scene | backend | first frame, 64x36 (s) | frame (s) |\n|---|---|---|---|\n");
-  std::printf("| paper-two-bumps grid | GPU pass | %.2f | %.2f |\n", gpuGrid.FirstFrame, gpuGrid.Frame);
-  std::printf("| 1 M-triangle sphere | GPU pass | %.2f | %.2f |\n", gpuMesh.FirstFrame, gpuMesh.Frame);
+  std::printf(
+    "| paper-two-bumps grid | GPU pass | %.2f | %.2f |\n", gpuGrid.FirstFrame, gpuGrid.Frame);
+  std::printf(
+    "| 1 M-triangle sphere | GPU pass | %.2f | %.2f |\n", gpuMesh.FirstFrame, gpuMesh.Frame);
   std::printf("| 1 M-triangle sphere | CPU tracer (Embree streams) | - | %.2f (%.2f with the "
               "mesh's conversion and Embree's build) |\n",
     cpuMesh, cpuMeshTotal);
@@ -207,6 +163,6 @@ int main(int argc, char** argv)
   std::printf("GPU / CPU throughput on the mesh: %.2f\n", cpuMesh / gpuMesh.Frame);
   std::printf("GPU vs CPU pictures of the mesh: mean difference %.4f of 255, %.4f%% of the "
               "pixels above 24\n",
-    mean, 100.0 * above);
+    difference.Mean, 100.0 * difference.FractionAbove);
   return 0;
 }

@@ -18,6 +18,8 @@
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
 
+#include "RenderBenchmarkOptions.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -26,33 +28,18 @@
 #include <string>
 #include <vector>
 
-#ifndef RIEMANN_SOURCE_DIR
-#define RIEMANN_SOURCE_DIR "."
-#endif
 
 int main(int argc, char** argv)
 {
-  int width = 1920;
-  int height = 1080;
-  int repetitions = 2;
-  std::string data = std::string(RIEMANN_SOURCE_DIR) + "/Data";
-  for (int i = 1; i + 1 < argc; i += 2)
+  RenderBenchmarkOptions options;
+  if (!ParseRenderBenchmarkOptions(argc, argv, options, true))
   {
-    const std::string option = argv[i];
-    if (option == "--width")
-      width = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--height")
-      height = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--repetitions")
-      repetitions = std::max(1, std::atoi(argv[i + 1]));
-    else if (option == "--data")
-      data = argv[i + 1];
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", argv[i]);
-      return 2;
-    }
+    return 2;
   }
+  const int width = options.Width;
+  const int height = options.Height;
+  const int repetitions = options.Repetitions;
+  const std::string& data = options.Data;
 
   vtkNew<vtkRiemannScene> gridScene;
   if (!gridScene->SetDefinitionFile((data + "/scenes/paper-one-bump.json").c_str()))
@@ -100,15 +87,7 @@ int main(int argc, char** argv)
         if (first)
         {
           window->Render(); // compile the shader outside the timings
-          // Only the "OpenGL renderer string" line of VTK's long capability report.
-          auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-          const std::string report = gl ? gl->ReportCapabilities() : "";
-          const std::string key = "OpenGL renderer string:";
-          const size_t at = report.find(key);
-          const std::string name = at == std::string::npos
-            ? std::string("unknown")
-            : report.substr(at + key.size(), report.find('\n', at) - at - key.size());
-          std::printf("%s)\n\n", name.c_str());
+          std::printf("%s)\n\n", RendererName(window).c_str());
           std::printf("| scene | integrator | steps | frame (s) | frames/s | rays x steps / s |\n"
                       "|---|---|---|---|---|---|\n");
           first = false;

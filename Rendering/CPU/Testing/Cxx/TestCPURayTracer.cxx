@@ -40,6 +40,7 @@
 
 #include "ImageComparison.h"
 #include "RenderingTestUtilities.h"
+#include "UVSphereMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -117,42 +118,6 @@ std::vector<unsigned char> GpuPixels(
   window->GetPixelData(0, 0, width - 1, height - 1, 1, pixels);
   return std::vector<unsigned char>(
     pixels->GetPointer(0), pixels->GetPointer(0) + 3 * width * height);
-}
-
-/// A UV sphere of radius r (theta x phi quads split in two), built by hand.
-vtkSmartPointer<vtkPolyData> Sphere(double radius, int theta, int phi)
-{
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j <= phi; ++j)
-  {
-    const double polar = pi * j / phi;
-    for (int i = 0; i < theta; ++i)
-    {
-      const double azimuth = 2 * pi * i / theta;
-      points->InsertNextPoint(radius * std::sin(polar) * std::cos(azimuth),
-        radius * std::sin(polar) * std::sin(azimuth), radius * std::cos(polar));
-    }
-  }
-  for (int j = 0; j < phi; ++j)
-  {
-    for (int i = 0; i < theta; ++i)
-    {
-      const vtkIdType a = j * theta + i;
-      const vtkIdType b = j * theta + (i + 1) % theta;
-      const vtkIdType c = (j + 1) * theta + (i + 1) % theta;
-      const vtkIdType d = (j + 1) * theta + i;
-      const vtkIdType t0[3] = { a, b, c };
-      const vtkIdType t1[3] = { a, c, d };
-      triangles->InsertNextCell(3, t0);
-      triangles->InsertNextCell(3, t1);
-    }
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  return mesh;
 }
 
 constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
@@ -320,7 +285,7 @@ TEST(CPURayTracer, TessellatedSphereLooksLikeTheAnalyticSphere)
   ErrorObserver errors(meshed);
   meshed->SetMetric(metric);
   meshed->SetScene(empty);
-  meshed->AddMesh(Sphere(1.0, 400, 200));
+  meshed->AddMesh(UVSphereMesh(1.0, 400, 200));
   meshed->SetWidth(width);
   meshed->SetHeight(height);
   meshed->Update();
@@ -531,7 +496,7 @@ TEST(CPURayTracer, StreamsAndSingleQueriesAgree)
     vtkNew<vtkRiemannCPURayTracer> tracer;
     tracer->SetMetric(metric);
     tracer->SetScene(scene);
-    tracer->AddMesh(Sphere(0.7, 64, 32));
+    tracer->AddMesh(UVSphereMesh(0.7, 64, 32));
     tracer->SetUseRayStreams(streams);
     tracer->SetWidth(48);
     tracer->SetHeight(36);

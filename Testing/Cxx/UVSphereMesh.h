@@ -1,8 +1,8 @@
-// The benchmarks' big triangle mesh: a UV sphere of theta x phi quads, two
-// triangles each (1000 x 500: one million triangles), built by hand so that
-// its size is exact.
-#ifndef RiemannBenchmarkSphereMesh_h
-#define RiemannBenchmarkSphereMesh_h
+// Shared by the rendering tests and benchmarks: a UV sphere of theta x phi
+// quads, two triangles each (1000 x 500: the benchmarks' one million
+// triangles), built by hand so that its size is exact.
+#ifndef RiemannUVSphereMesh_h
+#define RiemannUVSphereMesh_h
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-inline vtkSmartPointer<vtkPolyData> SphereMesh(
+inline vtkSmartPointer<vtkPolyData> UVSphereMesh(
   double radius, int theta, int phi, double cx = 0.0, double cy = 0.0, double cz = 0.0)
 {
   vtkNew<vtkPoints> points;
