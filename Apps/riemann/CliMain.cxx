@@ -4,6 +4,7 @@
 #include "CliMain.h"
 
 #include "CliUtilities.h"
+#include "Distributed.h"
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +18,17 @@ std::string HelpHint(const CLI::App& app)
   const std::vector<CLI::App*> commands = app.get_subcommands();
   return "Run 'riemann" + (commands.empty() ? std::string() : " " + commands.front()->get_name()) +
     " --help' for the options.";
+}
+
+/// "riemann: error: ", or in a job where a rank other than 0 reports,
+/// "riemann (rank 2 of 4): error: ".
+std::string ErrorPrefix(const std::string& kind = "error")
+{
+  const int rank = riemann::cli::Rank();
+  return (rank == 0 ? std::string("riemann")
+                    : "riemann (rank " + std::to_string(rank) + " of " +
+               std::to_string(riemann::cli::NumberOfRanks()) + ")") +
+    ": " + kind + ": ";
 }
 
 /// Hands VTK's output window and vtkLogger back before static destruction.
@@ -54,31 +66,51 @@ int RunCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& 
   try
   {
     app.parse(argc, argv);
+    // The finish line: no rank leaves while another may still tell of a failure.
+    AgreeToGoOn();
   }
   catch (const CLI::ParseError& e)
   {
-    // --help and --version exit 0; every usage error exits 2, as in the
-    // commands (CLI11's own codes, 100 and up, mean nothing to a shell user).
+    // --help and --version exit 0 (printed once in a job); every usage error
+    // exits 2, as in the commands (CLI11's own codes, 100 and up, mean
+    // nothing to a shell user).
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success))
     {
-      return app.exit(e);
+      return Rank() == 0 ? app.exit(e) : 0;
     }
-    std::cerr << "riemann: error: " << e.what() << "\n" << HelpHint(app) << "\n";
+    if (TellOthersOfFailure())
+    {
+      std::cerr << ErrorPrefix() << e.what() << "\n" << HelpHint(app) << "\n";
+    }
     return 2;
+  }
+  catch (const StoppedByAnotherRank&)
+  {
+    status = 1; // the rank that failed says why
   }
   catch (const riemann::cli::Failure& e)
   {
-    std::cerr << "riemann: error: " << e.what() << "\n";
-    if (e.Status == 2)
+    if (TellOthersOfFailure())
     {
-      std::cerr << HelpHint(app) << "\n";
+      std::cerr << ErrorPrefix() << e.what() << "\n";
+      if (e.Status == 2)
+      {
+        std::cerr << HelpHint(app) << "\n";
+      }
     }
     status = e.Status;
   }
   catch (const std::exception& e)
   {
-    std::cerr << "riemann: internal error: " << e.what() << "\n";
+    if (TellOthersOfFailure())
+    {
+      std::cerr << ErrorPrefix("internal error") << e.what() << "\n";
+    }
     status = 1;
+  }
+  if (Rank() != 0)
+  {
+    return status; // rank 0 speaks for the job
   }
   // What VTK said and the tool kept: one line that it exists, not VTK's
   // words (they name the filters' settings, not the options). The errors

@@ -5,6 +5,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvWriter.h"
+#include "Distributed.h"
 #include "ProgressBar.h"
 
 #include "vtkCellData.h"
@@ -17,6 +18,8 @@
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
+
+#include <algorithm>
 
 #include <cmath>
 #include <fstream>
@@ -46,6 +49,7 @@ struct ConjugateArguments
   long long Count = 1;
   std::string Integrator = "dp45";
   std::string Compress = "lz4";
+  bool Gather = false;
   std::string Output;
   std::string Surface;
 };
@@ -81,31 +85,44 @@ bool WriteCsv(vtkPolyData* locus, const std::string& path)
   return csv.Finish();
 }
 
-/// "N sheet(s), T triangles (C crossed by a cusp edge, M where sheets meet)".
-std::string DescribeSheets(vtkPolyData* sheets)
+/// The caustic's figures for the summary, summed over ranks: triangles,
+/// those crossed by a cusp edge, those where two sheets meet, then the
+/// triangles of each sheet (the first `sheets` of them).
+std::vector<long long> CountSheets(vtkPolyData* surface, long long sheets)
 {
-  vtkDataArray* sheet = sheets->GetCellData()->GetArray("Sheet");
-  vtkDataArray* singularity = sheets->GetCellData()->GetArray("Singularity");
-  std::set<int> distinct;
-  vtkIdType cusps = 0;
-  vtkIdType meet = 0;
-  for (vtkIdType t = 0; sheet && singularity && t < sheets->GetNumberOfPolys(); ++t)
+  std::vector<long long> counts(3 + static_cast<size_t>(sheets), 0);
+  vtkDataArray* sheet = surface->GetCellData()->GetArray("Sheet");
+  vtkDataArray* singularity = surface->GetCellData()->GetArray("Singularity");
+  for (vtkIdType t = 0; sheet && singularity && t < surface->GetNumberOfPolys(); ++t)
   {
-    distinct.insert(static_cast<int>(sheet->GetTuple1(t)));
-    cusps += singularity->GetTuple1(t) == 1 ? 1 : 0;
-    meet += singularity->GetTuple1(t) == 2 ? 1 : 0;
+    counts[0]++;
+    counts[1] += singularity->GetTuple1(t) == 1 ? 1 : 0;
+    counts[2] += singularity->GetTuple1(t) == 2 ? 1 : 0;
+    const long long index = static_cast<long long>(sheet->GetTuple1(t));
+    if (index >= 0 && index < sheets)
+    {
+      counts[3 + static_cast<size_t>(index)]++;
+    }
   }
-  return std::to_string(distinct.size()) + " sheet(s), " +
-    std::to_string(sheets->GetNumberOfPolys()) + " triangles (" + std::to_string(cusps) +
-    " crossed by a cusp edge, " + std::to_string(meet) + " where two sheets meet)";
+  return SumOverRanks(counts);
+}
+
+/// "N sheet(s), T triangles (C crossed by a cusp edge, M where sheets meet)".
+std::string DescribeSheets(const std::vector<long long>& counts)
+{
+  const auto sheets =
+    std::count_if(counts.begin() + 3, counts.end(), [](long long n) { return n > 0; });
+  return std::to_string(sheets) + " sheet(s), " + std::to_string(counts[0]) + " triangles (" +
+    std::to_string(counts[1]) + " crossed by a cusp edge, " + std::to_string(counts[2]) +
+    " where two sheets meet)";
 }
 
 void RunConjugate(const ConjugateArguments& args)
 {
   const std::string extension = Extension(args.Output);
-  if (extension != "vtp" && extension != "csv")
+  if (extension != "vtp" && extension != "csv" && extension != "pvtp")
   {
-    throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
+    throw Failure("-o " + args.Output + ": the output must end in .vtp, .pvtp or .csv", 2);
   }
   // Each number was checked while parsing; here, what depends on two of them.
   if (args.Step > args.Length)
@@ -118,10 +135,15 @@ void RunConjugate(const ConjugateArguments& args)
   {
     throw Failure("--step: more than 1e8 steps per geodesic (--length / --step)", 2);
   }
-  if (!args.Surface.empty() && Extension(args.Surface) != "vtp")
+  if (!args.Surface.empty() && Extension(args.Surface) != "vtp" &&
+    Extension(args.Surface) != "pvtp")
   {
-    throw Failure("--surface " + args.Surface + ": the surface must be a .vtp file", 2);
+    throw Failure("--surface " + args.Surface + ": the surface must be a .vtp or .pvtp file", 2);
   }
+  const OutputLayout pointsLayout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout surfaceLayout = args.Surface.empty()
+    ? OutputLayout::SingleFile
+    : ChooseOutputLayout("--surface", args.Surface, args.Gather);
   double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);
@@ -150,38 +172,51 @@ void RunConjugate(const ConjugateArguments& args)
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
   vtkNew<ProgressBar> progress;
   progress->Observe(locus, "riemann conjugate", ProgressBar::StderrIsTerminal());
-  locus->Update();
+  // This rank's share of the directions (all of them in a single process).
+  UpdateThisRanksPiece(locus);
   progress->Finish();
   errors->ThrowIfAny("conjugate point search failed:");
   vtkPolyData* points = locus->GetOutput();
+  AgreeToGoOn();
 
-  WriteAtomically(args.Output,
-    [&](const std::string& temporary)
-    {
-      if (extension == "csv")
-      {
-        return WriteCsv(points, temporary);
-      }
-      return WritePolyDataFile(points, temporary, args.Compress);
-    });
-
-  if (!args.Surface.empty())
-  {
-    WritePolyDataAtomically(locus->GetOutput(1), args.Surface, args.Compress);
-  }
-
+  // The job's figures. Each direction's points are in one piece.
   std::set<long long> withPoints;
   vtkDataArray* direction = points->GetPointData()->GetArray("DirectionId");
   for (vtkIdType i = 0; direction && i < direction->GetNumberOfTuples(); ++i)
   {
     withPoints.insert(static_cast<long long>(direction->GetTuple1(i)));
   }
-  std::cerr << "riemann conjugate: " << args.Directions << " direction(s), "
-            << points->GetNumberOfPoints() << " conjugate point(s) found on " << withPoints.size()
-            << " of them up to arc length " << args.Length << " -> " << args.Output;
+  const std::vector<long long> found =
+    SumOverRanks({ points->GetNumberOfPoints(), static_cast<long long>(withPoints.size()) });
+  const std::vector<long long> sheets =
+    CountSheets(locus->GetOutput(1), std::min<long long>(args.Count, 1024));
+
+  WriteOutput(locus, 0, args.Output, pointsLayout, args.Compress, {},
+    [&](vtkPolyData* all, const std::string& temporary)
+    {
+      return extension == "csv" ? WriteCsv(all, temporary)
+                                : WritePolyDataFile(all, temporary, args.Compress);
+    });
   if (!args.Surface.empty())
   {
-    std::cerr << ", caustic " << DescribeSheets(locus->GetOutput(1)) << " -> " << args.Surface;
+    // A sheet triangle belongs to the piece that owns its smallest direction;
+    // its other corners are ghost copies, named by these arrays.
+    WriteOutput(locus, 1, args.Surface, surfaceLayout, args.Compress, { "Sheet", "DirectionId" });
+  }
+  if (Rank() != 0)
+  {
+    return;
+  }
+  std::cerr << "riemann conjugate: " << args.Directions << " direction(s), " << found[0]
+            << " conjugate point(s) found on " << found[1] << " of them up to arc length "
+            << args.Length << " -> " << args.Output;
+  if (!args.Surface.empty())
+  {
+    std::cerr << ", caustic " << DescribeSheets(sheets) << " -> " << args.Surface;
+  }
+  if (IsDistributed())
+  {
+    std::cerr << " (" << NumberOfRanks() << " ranks)";
   }
   std::cerr << "\n";
 }
@@ -232,10 +267,15 @@ void RegisterConjugateCommand(CLI::App& app)
       "Conjugate points kept per direction, first ones first (default 1)")
     ->check(WholeNumber(1, 1000000));
   AddCompressOption(command, args->Compress);
-  command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
+  AddGatherOption(command, args->Gather);
+  command
+    ->add_option("--output,-o", args->Output,
+      "Output file: .vtp, .csv, or .pvtp (VTK's parallel format: under mpirun, one piece "
+      "file per rank in a folder named after it)")
+    ->required();
   command->add_option("--surface", args->Surface,
-    "Also write the caustic as sheets over the direction grid (.vtp; cell data Sheet and "
-    "Singularity: 1 cusp edge, 2 where two sheets meet)");
+    "Also write the caustic as sheets over the direction grid (.vtp or .pvtp; cell data Sheet "
+    "and Singularity: 1 cusp edge, 2 where two sheets meet)");
   command->callback([args]() { RunConjugate(*args); });
 }
 } // namespace cli

@@ -3,6 +3,7 @@
 // Jacobian) and, with --radii and --wavefronts, the geodesic spheres (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "Distributed.h"
 #include "ProgressBar.h"
 
 #include "vtkNew.h"
@@ -38,6 +39,7 @@ struct ExpmapArguments
   double Step = 0.01;
   double Tolerance = 1e-8;
   std::string Compress = "lz4";
+  bool Gather = false;
   std::string Output;
   std::string Wavefronts;
 };
@@ -77,14 +79,20 @@ std::string CheckRadii(const std::string& text, std::vector<double>& radii)
 
 void RunExpmap(const ExpmapArguments& args)
 {
-  if (Extension(args.Output) != "vtp")
+  if (Extension(args.Output) != "vtp" && Extension(args.Output) != "pvtp")
   {
-    throw Failure("-o " + args.Output + ": the ray bundle must be a .vtp file", 2);
+    throw Failure("-o " + args.Output + ": the ray bundle must be a .vtp or .pvtp file", 2);
   }
-  if (!args.Wavefronts.empty() && Extension(args.Wavefronts) != "vtp")
+  if (!args.Wavefronts.empty() && Extension(args.Wavefronts) != "vtp" &&
+    Extension(args.Wavefronts) != "pvtp")
   {
-    throw Failure("--wavefronts " + args.Wavefronts + ": the wavefronts must be a .vtp file", 2);
+    throw Failure(
+      "--wavefronts " + args.Wavefronts + ": the wavefronts must be a .vtp or .pvtp file", 2);
   }
+  const OutputLayout raysLayout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout wavefrontsLayout = args.Wavefronts.empty()
+    ? OutputLayout::SingleFile
+    : ChooseOutputLayout("--wavefronts", args.Wavefronts, args.Gather);
   if (!args.Wavefronts.empty() && args.Radii.empty())
   {
     throw Failure("--wavefronts needs --radii R1,R2,...", 2);
@@ -145,21 +153,36 @@ void RunExpmap(const ExpmapArguments& args)
   }
   vtkNew<ProgressBar> progress;
   progress->Observe(expmap, "riemann expmap", ProgressBar::StderrIsTerminal());
-  expmap->Update();
+  // This rank's share of the directions (all of them in a single process).
+  UpdateThisRanksPiece(expmap);
   progress->Finish();
   errors->ThrowIfAny("exponential map failed:");
+  AgreeToGoOn();
 
-  WritePolyDataAtomically(expmap->GetOutput(0), args.Output, args.Compress);
+  const std::vector<long long> counts = SumOverRanks(
+    { expmap->GetOutput(0)->GetNumberOfLines(), expmap->GetOutput(1)->GetNumberOfPolys() });
+  WriteOutput(expmap, 0, args.Output, raysLayout, args.Compress);
   if (!args.Wavefronts.empty())
   {
-    WritePolyDataAtomically(expmap->GetOutput(1), args.Wavefronts, args.Compress);
+    // A wavefront triangle belongs to the piece that owns its smallest
+    // direction; its other corners are ghost copies, named by these arrays.
+    WriteOutput(
+      expmap, 1, args.Wavefronts, wavefrontsLayout, args.Compress, { "DirectionId", "Radius" });
   }
-  std::cerr << "riemann expmap: " << expmap->GetOutput(0)->GetNumberOfLines()
-            << " geodesic(s) up to arc length " << args.Length << " -> " << args.Output;
+  if (Rank() != 0)
+  {
+    return;
+  }
+  std::cerr << "riemann expmap: " << counts[0] << " geodesic(s) up to arc length " << args.Length
+            << " -> " << args.Output;
   if (!args.Wavefronts.empty())
   {
-    std::cerr << ", " << radii.size() << " wavefront(s) ("
-              << expmap->GetOutput(1)->GetNumberOfPolys() << " triangles) -> " << args.Wavefronts;
+    std::cerr << ", " << radii.size() << " wavefront(s) (" << counts[1] << " triangles) -> "
+              << args.Wavefronts;
+  }
+  if (IsDistributed())
+  {
+    std::cerr << " (" << NumberOfRanks() << " ranks)";
   }
   std::cerr << "\n";
 }
@@ -204,9 +227,14 @@ void RegisterExpmapCommand(CLI::App& app)
   command->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
     ->check(FiniteNumber(1e-15, 1.0));
   AddCompressOption(command, args->Compress);
-  command->add_option("--output,-o", args->Output, "Ray bundle (.vtp)")->required();
+  AddGatherOption(command, args->Gather);
+  command
+    ->add_option("--output,-o", args->Output,
+      "Ray bundle: .vtp, or .pvtp (VTK's parallel format: under mpirun, one piece file per "
+      "rank in a folder named after it)")
+    ->required();
   command->add_option(
-    "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (.vtp triangles)");
+    "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (triangles): .vtp or .pvtp");
   command->callback([args]() { RunExpmap(*args); });
 }
 } // namespace cli

@@ -4,16 +4,20 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvWriter.h"
+#include "Distributed.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkRiemannCurvatureField.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannMetricTensorField.h"
 #include "vtkRiemannVolumeForm.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkXMLImageDataWriter.h"
 
 #include <CLI/CLI.hpp>
@@ -38,6 +42,7 @@ struct FieldsArguments
   std::string Bounds = "-2,2,-2,2,-2,2";
   std::string Dimensions = "33,33,33";
   std::string Compress = "lz4";
+  bool Gather = false;
   std::string Output;
 };
 
@@ -153,10 +158,11 @@ bool WriteCsv(vtkImageData* image, const std::string& path)
 void RunFields(const FieldsArguments& args)
 {
   const std::string extension = Extension(args.Output);
-  if (extension != "vti" && extension != "csv")
+  if (extension != "vti" && extension != "csv" && extension != "pvti")
   {
-    throw Failure("-o " + args.Output + ": the output must end in .vti or .csv", 2);
+    throw Failure("-o " + args.Output + ": the output must end in .vti, .pvti or .csv", 2);
   }
+  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather);
   // Checked while parsing (the validators below); parsed here.
   double bounds[6];
   int dims[3];
@@ -187,35 +193,75 @@ void RunFields(const FieldsArguments& args)
   errors->Observe(curvature);
   errors->Observe(volume);
   errors->Observe(tensor);
-  tensor->Update();
+  // This rank's extent of the grid (all of it in a single process).
+  UpdateThisRanksPiece(tensor);
   errors->ThrowIfAny("computing the fields failed:");
   vtkImageData* image = vtkImageData::SafeDownCast(tensor->GetOutput());
-  if (!image || image->GetNumberOfPoints() == 0)
+  AgreeToGoOn();
+
+  // The job's figures: the pieces' trapezoid sums add up to the whole grid's
+  // (neighbouring extents share a plane of points, each with half weight).
+  const bool empty = !image || image->GetNumberOfPoints() == 0;
+  const std::vector<long long> counts = SumOverRanks(
+    { empty ? 0 : image->GetNumberOfPoints(), empty ? 0 : volume->GetNumberOfExcludedPoints() });
+  const double volumeIntegral = SumOverRanks(empty ? 0.0 : volume->GetVolumeIntegral());
+  if (counts[0] == 0)
   {
     throw Failure("no fields were computed");
   }
 
-  WriteAtomically(args.Output,
-    [&](const std::string& temporary)
-    {
-      if (extension == "csv")
-      {
-        return WriteCsv(image, temporary);
-      }
-      vtkNew<vtkXMLImageDataWriter> writer;
-      writer->SetFileName(temporary.c_str());
-      writer->SetInputData(image);
-      writer->SetDataModeToAppended();
-      SetCompressor(writer, args.Compress);
-      return writer->Write() == 1 && writer->GetErrorCode() == 0;
-    });
-
-  std::cerr << "riemann fields: " << dims[0] << "x" << dims[1] << "x" << dims[2] << " points -> "
-            << args.Output << " (VolumeIntegral " << std::setprecision(10)
-            << volume->GetVolumeIntegral() << ", trapezoid rule";
-  if (volume->GetNumberOfExcludedPoints() > 0)
+  if (layout == OutputLayout::Pieces)
   {
-    std::cerr << ", " << volume->GetNumberOfExcludedPoints() << " degenerate points left out";
+    WritePieces(tensor, 0, args.Output, args.Compress);
+  }
+  else
+  {
+    int wholeExtent[6];
+    tensor->GetOutputInformation(0)->Get(
+      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
+    vtkSmartPointer<vtkImageData> whole = layout == OutputLayout::Gathered
+      ? GatherImage(image, wholeExtent)
+      : vtkSmartPointer<vtkImageData>(image);
+    if (Rank() == 0)
+    {
+      if (layout == OutputLayout::Gathered)
+      {
+        vtkNew<vtkDoubleArray> integral;
+        integral->SetName("VolumeIntegral");
+        integral->InsertNextValue(volumeIntegral);
+        whole->GetFieldData()->AddArray(integral);
+      }
+      WriteAtomically(args.Output,
+        [&](const std::string& temporary)
+        {
+          if (extension == "csv")
+          {
+            return WriteCsv(whole, temporary);
+          }
+          vtkNew<vtkXMLImageDataWriter> writer;
+          writer->SetFileName(temporary.c_str());
+          writer->SetInputData(whole);
+          writer->SetDataModeToAppended();
+          SetCompressor(writer, args.Compress);
+          return writer->Write() == 1 && writer->GetErrorCode() == 0;
+        });
+    }
+  }
+  if (Rank() != 0)
+  {
+    return;
+  }
+  std::cerr << "riemann fields: " << dims[0] << "x" << dims[1] << "x" << dims[2] << " points -> "
+            << args.Output << " (VolumeIntegral " << std::setprecision(10) << volumeIntegral
+            << ", trapezoid rule";
+  if (counts[1] > 0)
+  {
+    std::cerr << ", " << counts[1] << " degenerate points left out";
+  }
+  if (IsDistributed())
+  {
+    std::cerr << "; " << NumberOfRanks() << " ranks"
+              << (layout == OutputLayout::Pieces ? ", one piece file each" : ", gathered");
   }
   std::cerr << ")\n";
 }
@@ -249,7 +295,12 @@ void RegisterFieldsCommand(CLI::App& app)
       },
       "NX,NY,NZ"));
   AddCompressOption(command, args->Compress);
-  command->add_option("--output,-o", args->Output, "Output file: .vti or .csv")->required();
+  AddGatherOption(command, args->Gather);
+  command
+    ->add_option("--output,-o", args->Output,
+      "Output file: .vti, .csv, or .pvti (VTK's parallel format: under mpirun, one piece "
+      "file per rank in a folder named after it)")
+    ->required();
   command->callback([args]() { RunFields(*args); });
 }
 } // namespace cli

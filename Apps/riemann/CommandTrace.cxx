@@ -3,6 +3,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvWriter.h"
+#include "Distributed.h"
 #include "GeodesicTrace.h"
 
 #include "vtkCellArray.h"
@@ -21,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -35,6 +37,9 @@ namespace cli
 {
 namespace
 {
+/// The largest TerminationReason code (GeodesicTrace.h), for the summary's counts.
+constexpr int MaximumReason = HitSurface;
+
 struct TraceArguments
 {
   std::string Metric;
@@ -49,6 +54,7 @@ struct TraceArguments
   long long MaximumSteps = 100000;
   bool TransverseJacobian = false;
   std::string Compress = "lz4";
+  bool Gather = false;
   std::string Output;
 };
 
@@ -199,10 +205,11 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
 void RunTrace(const TraceArguments& args)
 {
   const std::string extension = Extension(args.Output);
-  if (extension != "vtp" && extension != "csv")
+  if (extension != "vtp" && extension != "csv" && extension != "pvtp")
   {
-    throw Failure("-o " + args.Output + ": the output must end in .vtp or .csv", 2);
+    throw Failure("-o " + args.Output + ": the output must end in .vtp, .pvtp or .csv", 2);
   }
+  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather);
   static const std::map<std::string, int> propagations = {
     { "forward", vtkRiemannGeodesicTracer::FORWARD },
     { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH }
@@ -234,38 +241,56 @@ void RunTrace(const TraceArguments& args)
     tracer->SetStartPosition(seed);
     tracer->SetStartDirection(direction);
   }
-  tracer->Update();
+  // This rank's share of the seeds (all of them in a single process).
+  UpdateThisRanksPiece(tracer);
   errors->ThrowIfAny("tracing failed:");
   vtkPolyData* lines = tracer->GetOutput();
-  if (lines->GetNumberOfLines() == 0)
+  AgreeToGoOn();
+
+  // The job's figures: geodesics, points, and why they stopped.
+  std::vector<long long> counts(2 + MaximumReason + 1, 0);
+  counts[0] = lines->GetNumberOfLines();
+  counts[1] = lines->GetNumberOfPoints();
+  if (vtkDataArray* reasonArray = lines->GetCellData()->GetArray("ReasonForTermination"))
+  {
+    for (vtkIdType i = 0; i < reasonArray->GetNumberOfTuples(); ++i)
+    {
+      const int reason = static_cast<int>(reasonArray->GetTuple1(i));
+      counts[2 + std::min(std::max(reason, 0), MaximumReason)]++;
+    }
+  }
+  counts = SumOverRanks(counts);
+  if (counts[0] == 0)
   {
     throw Failure("no geodesic could be traced from the given seeds");
   }
 
-  WriteAtomically(args.Output,
-    [&](const std::string& temporary)
+  WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
+    [&](vtkPolyData* all, const std::string& temporary)
     {
-      if (extension == "csv")
-      {
-        return WriteCsv(lines, temporary);
-      }
-      return WritePolyDataFile(lines, temporary, args.Compress);
+      return extension == "csv" ? WriteCsv(all, temporary)
+                                : WritePolyDataFile(all, temporary, args.Compress);
     });
-
-  // A one-line summary on stderr: how many lines, and why they stopped.
-  std::map<int, int> reasons;
-  vtkDataArray* reasonArray = lines->GetCellData()->GetArray("ReasonForTermination");
-  for (vtkIdType i = 0; i < reasonArray->GetNumberOfTuples(); ++i)
+  if (Rank() != 0)
   {
-    reasons[static_cast<int>(reasonArray->GetTuple1(i))]++;
+    return;
   }
-  std::cerr << "riemann trace: " << lines->GetNumberOfLines() << " geodesic(s), "
-            << lines->GetNumberOfPoints() << " points -> " << args.Output << " (";
+  // A one-line summary on stderr: how many lines, and why they stopped.
+  std::cerr << "riemann trace: " << counts[0] << " geodesic(s), " << counts[1] << " points -> "
+            << args.Output << " (";
   bool first = true;
-  for (const auto& [reason, count] : reasons)
+  for (int reason = 0; reason <= MaximumReason; ++reason)
   {
-    std::cerr << (first ? "" : ", ") << count << " " << TerminationReasonName(reason);
-    first = false;
+    if (counts[2 + reason] > 0)
+    {
+      std::cerr << (first ? "" : ", ") << counts[2 + reason] << " "
+                << TerminationReasonName(reason);
+      first = false;
+    }
+  }
+  if (IsDistributed())
+  {
+    std::cerr << "; " << NumberOfRanks() << " ranks";
   }
   std::cerr << ")\n";
 }
@@ -308,7 +333,12 @@ void RegisterTraceCommand(CLI::App& app)
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
   AddCompressOption(command, args->Compress);
-  command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
+  AddGatherOption(command, args->Gather);
+  command
+    ->add_option("--output,-o", args->Output,
+      "Output file: .vtp, .csv, or .pvtp (VTK's parallel format: under mpirun, one piece "
+      "file per rank in a folder named after it)")
+    ->required();
   command->callback([args]() { RunTrace(*args); });
 }
 } // namespace cli

@@ -20,6 +20,13 @@ void RegisterFieldsCommand(CLI::App& app);
 void RegisterConjugateCommand(CLI::App& app);
 void RegisterExpmapCommand(CLI::App& app);
 
+/**
+ * Every subcommand of `riemann` and `riemann-mpi` (CommandList.cxx): all but
+ * render, which is only listed (with RenderCommandDescription) for --help:
+ * riemann.cxx hands it to riemann-render before the command line is read.
+ */
+void RegisterComputeCommands(CLI::App& app);
+
 /// The render subcommand's description, shared by riemann-render and the
 /// listing of render in `riemann --help`.
 constexpr const char* RenderCommandDescription =

@@ -9,10 +9,14 @@
 // libraries). So `riemann` links only the latter, and `riemann render ...`
 // replaces itself (execv, same arguments) with `riemann-render`, installed
 // next to it, which holds the render subcommand (riemann-render.cxx).
+//
+// Under an MPI launcher (mpirun, srun) the same holds for MPI, whose library
+// and its own start-up `riemann` does without: every other subcommand
+// replaces itself by `riemann-mpi` (riemann-mpi.cxx), the same subcommands
+// linked with MPI. riemann-render handles the launcher itself.
 #include "CliMain.h"
 #include "Commands.h"
-
-#include <CLI/CLI.hpp>
+#include "Distributed.h"
 
 #include <cerrno>
 #include <cstring>
@@ -37,38 +41,30 @@ std::string SubcommandName(int argc, char** argv)
   return std::string();
 }
 
-/// `riemann-render` in the folder of this executable (build/bin or the
+/// The tool `name` in the folder of this executable (build/bin or the
 /// install's bin).
-std::string RenderToolPath()
+std::string SiblingToolPath(const std::string& name)
 {
   std::string self(4096, '\0');
   const ssize_t length = readlink("/proc/self/exe", &self[0], self.size() - 1);
   if (length <= 0)
   {
-    return "riemann-render";
+    return name;
   }
   self.resize(static_cast<size_t>(length));
   const size_t slash = self.rfind('/');
-  return (slash == std::string::npos ? std::string() : self.substr(0, slash + 1)) +
-    "riemann-render";
+  return (slash == std::string::npos ? std::string() : self.substr(0, slash + 1)) + name;
 }
 
-/// Replace this process by riemann-render with the same arguments; returns
+/// Replace this process by the tool `name` with the same arguments; returns
 /// only on failure, with the exit status.
-int RunRenderTool(char** argv)
+int RunSiblingTool(const std::string& name, const std::string& why, char** argv)
 {
-  const std::string tool = RenderToolPath();
+  const std::string tool = SiblingToolPath(name);
   execv(tool.c_str(), argv);
-  std::cerr << "riemann: error: cannot run " << tool << " (" << std::strerror(errno)
-            << "): the render command lives there; install it next to riemann\n";
+  std::cerr << "riemann: error: cannot run " << tool << " (" << std::strerror(errno) << "): " << why
+            << "; install it next to riemann\n";
   return 1;
-}
-
-/// `render` in `riemann --help`, with its one-line description; it never
-/// runs here (main hands render to riemann-render first).
-void RegisterRenderListing(CLI::App& app)
-{
-  app.add_subcommand("render", riemann::cli::RenderCommandDescription);
 }
 }
 
@@ -76,16 +72,11 @@ int main(int argc, char** argv)
 {
   if (SubcommandName(argc, argv) == "render")
   {
-    return RunRenderTool(argv);
+    return RunSiblingTool("riemann-render", "the render command lives there", argv);
   }
-  return riemann::cli::RunCommandLine(argc, argv,
-    [](CLI::App& app)
-    {
-      riemann::cli::RegisterTraceCommand(app);
-      riemann::cli::RegisterInfoCommand(app);
-      RegisterRenderListing(app);
-      riemann::cli::RegisterFieldsCommand(app);
-      riemann::cli::RegisterConjugateCommand(app);
-      riemann::cli::RegisterExpmapCommand(app);
-    });
+  if (riemann::cli::LaunchedByMpiLauncher())
+  {
+    return RunSiblingTool("riemann-mpi", "it runs the commands under an MPI launcher", argv);
+  }
+  return riemann::cli::RunCommandLine(argc, argv, riemann::cli::RegisterComputeCommands);
 }
