@@ -8,6 +8,7 @@
 // image regression test in one command (as F3D's CLI).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "Distributed.h"
 #include "ProgressBar.h"
 
 #include "RiemannCPUImage.h"
@@ -40,12 +41,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <type_traits>
 
 namespace riemann
 {
@@ -417,6 +421,12 @@ void CheckRenderOptions(const RenderArguments& args)
   {
     throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
   }
+  if (IsDistributed() && args.Backend != "cpu")
+  {
+    throw Failure("under mpirun, render needs --backend cpu: each rank traces its piece of the "
+                  "picture on the CPU (the GPU pass draws a whole picture in one process)",
+      2);
+  }
   if (!args.Reference.empty() && args.Frames > 1)
   {
     throw Failure("--reference compares one picture: it cannot be used with --frames", 2);
@@ -467,6 +477,62 @@ void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetu
       (scene.HasCamera && scene.Camera.Mode == riemann::Projection::Equirectangular)
     ? vtkRiemannRayTracePass::EQUIRECTANGULAR
     : vtkRiemannRayTracePass::PERSPECTIVE;
+}
+
+/**
+ * Collective: the pixels of every rank's piece (its extent of the tracer's
+ * output) gathered into the whole picture's pixels on rank 0, colour and
+ * every arbitrary output variable with them; nothing on the other ranks. In
+ * a single process: the tracer's pixels.
+ */
+std::vector<riemann::PixelResult> GatherPixels(vtkRiemannCPURayTracer* tracer)
+{
+  const std::vector<riemann::PixelResult>& pixels = tracer->GetPixelResults();
+  if (!IsDistributed())
+  {
+    return pixels;
+  }
+  // This rank's rows: its extent x0, x1, y0, y1, then the pixels row by row.
+  // Every rank runs the same executable, so the struct's bytes mean the same.
+  static_assert(std::is_trivially_copyable<riemann::PixelResult>::value, "sent as bytes");
+  const int width = tracer->GetWidth();
+  int extent[6] = { 0, -1, 0, -1, 0, 0 };
+  if (tracer->GetOutput()->GetNumberOfPoints() > 0)
+  {
+    tracer->GetOutput()->GetExtent(extent);
+  }
+  const size_t columns = static_cast<size_t>(std::max(0, extent[1] - extent[0] + 1));
+  const size_t rows = static_cast<size_t>(std::max(0, extent[3] - extent[2] + 1));
+  const size_t rowBytes = columns * sizeof(riemann::PixelResult);
+  std::vector<char> bytes(4 * sizeof(int) + rows * rowBytes);
+  std::memcpy(bytes.data(), extent, 4 * sizeof(int));
+  for (size_t row = 0; row < rows; ++row)
+  {
+    const size_t first = (extent[2] + row) * static_cast<size_t>(width) + extent[0];
+    std::memcpy(bytes.data() + 4 * sizeof(int) + row * rowBytes, &pixels[first], rowBytes);
+  }
+  const std::vector<char> all = GatherBytes(bytes);
+  std::vector<riemann::PixelResult> whole;
+  if (Rank() != 0)
+  {
+    return whole;
+  }
+  whole.resize(static_cast<size_t>(width) * tracer->GetHeight());
+  for (size_t at = 0; at < all.size();)
+  {
+    int piece[4];
+    std::memcpy(piece, all.data() + at, sizeof(piece));
+    at += sizeof(piece);
+    const size_t pieceColumns = static_cast<size_t>(std::max(0, piece[1] - piece[0] + 1));
+    const size_t pieceRows = static_cast<size_t>(std::max(0, piece[3] - piece[2] + 1));
+    for (size_t row = 0; row < pieceRows; ++row)
+    {
+      const size_t first = (piece[2] + row) * static_cast<size_t>(width) + piece[0];
+      std::memcpy(&whole[first], all.data() + at, pieceColumns * sizeof(riemann::PixelResult));
+      at += pieceColumns * sizeof(riemann::PixelResult);
+    }
+  }
+  return whole;
 }
 
 /// Draws the frames of one backend; only the requested backend is built.
@@ -555,11 +621,17 @@ public:
   Image RenderFrame(int frame, int frames) override
   {
     this->Tracer->Modified();
-    this->Tracer->Update();
+    // This rank's piece of the picture (all of it in a single process).
+    UpdateThisRanksPiece(this->Tracer);
     this->Progress->Finish();
     this->Errors->ThrowIfAny("rendering failed:");
+    AgreeToGoOn();
     const RenderArguments& args = this->Arguments;
-    const std::vector<riemann::PixelResult>& pixels = this->Tracer->GetPixelResults();
+    const std::vector<riemann::PixelResult> pixels = GatherPixels(this->Tracer);
+    if (Rank() != 0)
+    {
+      return Image(); // rank 0 writes the picture
+    }
     if (this->Tracer->GetHitErrorComputed())
     {
       const bool numbered = frames > 1 && !args.HitErrorImage.empty();
@@ -653,6 +725,10 @@ void RunRender(const RenderArguments& args)
       throw Failure(std::string("bad metric: ") + metric->GetLastError());
     }
     Image picture = frames->RenderFrame(frame, args.Frames);
+    if (Rank() != 0)
+    {
+      continue; // rank 0 writes, and speaks for the job
+    }
     if (args.Bundle > 0)
     {
       picture = SideBySide(picture, RenderOutside(metric, scene, camera, rays, args, errors));
@@ -694,7 +770,8 @@ void RegisterRenderCommand(CLI::App& app)
     ->check(WholeNumber(1, 16384));
   command
     ->add_option("--backend", args->Backend,
-      "gpu (default: GLSL; every scene object, meshes included) or cpu (Embree, double precision; anti-aliasing, EXR with AOVs)")
+      "gpu (default: GLSL; every scene object, meshes included) or cpu (Embree, double precision; "
+      "anti-aliasing, EXR with AOVs)")
     ->check(CLI::IsMember({ "gpu", "cpu" }));
   command
     ->add_option("--samples", args->Samples,

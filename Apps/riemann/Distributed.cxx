@@ -361,6 +361,15 @@ void UpdateThisRanksPiece(vtkAlgorithm* algorithm)
     info->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   }
   algorithm->UpdatePiece(Rank(), NumberOfRanks(), 0);
+  // Fault injection for the tests (TestCliMpi.py): the rank that
+  // RIEMANN_TEST_FAILING_RANK names fails here, as a rank whose computation
+  // fails would, while the others go on to their next agreement point.
+  const char* failing = std::getenv("RIEMANN_TEST_FAILING_RANK");
+  if (failing && *failing && IsDistributed() && std::atoi(failing) == Rank())
+  {
+    throw Failure("rank " + std::to_string(Rank()) +
+      " failed on purpose (RIEMANN_TEST_FAILING_RANK is set)");
+  }
 }
 
 vtkSmartPointer<vtkPolyData> GatherPolyData(

@@ -91,8 +91,10 @@ std::vector<long long> SumOverRanks(std::vector<long long> values);
 double SumOverRanks(double value);
 
 /**
- * Update `algorithm`'s first output for this rank's piece: UpdatePiece(rank,
- * N, 0), or a plain Update in a single process.
+ * Update `algorithm`'s outputs for this rank's piece: UpdatePiece(rank, N, 0)
+ * (the same request on every output port), or a plain Update in a single
+ * process. For the tests, a job with RIEMANN_TEST_FAILING_RANK=r set fails
+ * on rank r here (Failure), as a rank whose computation fails would.
  */
 void UpdateThisRanksPiece(vtkAlgorithm* algorithm);
 

@@ -1,5 +1,7 @@
 #include "ProgressBar.h"
 
+#include "Distributed.h"
+
 #include "vtkObject.h"
 
 #include <algorithm>
@@ -12,8 +14,11 @@ namespace cli
 {
 void ProgressBar::Observe(vtkObject* object, const std::string& label, bool show)
 {
-  this->Label = label;
-  this->Enabled = show;
+  // In an MPI job rank 0 draws its own piece's progress: the pieces are
+  // equal shares of the work, so it stands for the job's.
+  this->Label =
+    IsDistributed() ? label + " (rank 0 of " + std::to_string(NumberOfRanks()) + ")" : label;
+  this->Enabled = show && Rank() == 0;
   object->AddObserver(vtkCommand::ProgressEvent, this);
 }
 
