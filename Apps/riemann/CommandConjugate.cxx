@@ -55,6 +55,9 @@ struct ConjugateArguments
 };
 
 constexpr long long MaximumDirections = 10000000;
+/// Sheets the summary tells apart (sheet indices are not bounded by --count:
+/// a point of multiplicity 2 starts two).
+constexpr long long MaximumCountedSheets = 1024;
 
 bool WriteCsv(vtkPolyData* locus, const std::string& path)
 {
@@ -189,7 +192,7 @@ void RunConjugate(const ConjugateArguments& args)
   const std::vector<long long> found =
     SumOverRanks({ points->GetNumberOfPoints(), static_cast<long long>(withPoints.size()) });
   const std::vector<long long> sheets =
-    CountSheets(locus->GetOutput(1), std::min<long long>(args.Count, 1024));
+    CountSheets(locus->GetOutput(1), MaximumCountedSheets);
 
   WriteOutput(locus, 0, args.Output, pointsLayout, args.Compress, {},
     [&](vtkPolyData* all, const std::string& temporary)

@@ -47,7 +47,10 @@ struct FieldsArguments
 };
 
 constexpr long long MaximumPerAxis = 512;
-constexpr long long MaximumPoints = 20000000;
+/// Points one process holds at most (about 4 GB of arrays): the whole grid
+/// in one process or gathered on rank 0; under mpirun each rank's piece, so
+/// that N ranks may sample N times as many (512^3 on 7 ranks).
+constexpr long long MaximumPointsPerProcess = 20000000;
 
 /// What is wrong with `text` as a grid box, or "" (then `bounds` holds it).
 std::string CheckBounds(const std::string& text, double bounds[6])
@@ -99,10 +102,19 @@ std::string CheckDimensions(const std::string& text, int dims[3])
     dims[a] = static_cast<int>(d[a]);
     total *= d[a];
   }
-  if (total > MaximumPoints)
+  const long long maximum = MaximumPointsPerProcess * NumberOfRanks();
+  if (total > maximum)
   {
     std::ostringstream message;
-    message << static_cast<long long>(total) << " grid points; at most " << MaximumPoints;
+    message << static_cast<long long>(total) << " grid points; at most " << maximum;
+    if (maximum == MaximumPointsPerProcess)
+    {
+      message << " in one process (under mpirun, " << MaximumPointsPerProcess << " per rank)";
+    }
+    else
+    {
+      message << " on " << NumberOfRanks() << " ranks (" << MaximumPointsPerProcess << " per rank)";
+    }
     return message.str();
   }
   return {};
@@ -175,6 +187,14 @@ void RunFields(const FieldsArguments& args)
   if (!problem.empty())
   {
     throw Failure("--dims: " + problem, 2);
+  }
+  if (layout == OutputLayout::Gathered &&
+    static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumPointsPerProcess)
+  {
+    throw Failure("--gather: " + std::to_string(static_cast<long long>(dims[0]) * dims[1] * dims[2]) +
+        " grid points are more than rank 0 holds (" + std::to_string(MaximumPointsPerProcess) +
+        "): write .pvti pieces",
+      2);
   }
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
 
@@ -286,7 +306,8 @@ void RegisterFieldsCommand(CLI::App& app)
       "X0,X1,Y0,Y1,Z0,Z1"));
   command
     ->add_option("--dims", args->Dimensions,
-      "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, 2e7 in all)")
+      "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, and 2e7 in all per "
+      "process: under mpirun, per rank)")
     ->check(Checked(
       [](const std::string& text)
       {
