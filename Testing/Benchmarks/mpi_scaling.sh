@@ -7,9 +7,12 @@
 # core, the single-machine alternative. N above the core count is
 # oversubscribed: it shows the overhead of more ranks, not a speed-up.
 # Outputs are the parallel formats (.pvti/.pvtp, one piece file per rank) or,
-# for render, the gathered picture.
+# for render, the gathered picture, written under $TMPDIR (default /tmp):
+# with TMPDIR=/dev/shm they go to memory, which takes the ranks' writes in
+# parallel as a cluster's parallel file system would; a single local disk
+# does not, and then the writing (2 GB for fields) sets the time.
 #
-# Usage: Testing/Benchmarks/mpi_scaling.sh [BUILD_DIR] [RANKS...]
+# Usage: [TMPDIR=/dev/shm] [COMMANDS="fields render"] Testing/Benchmarks/mpi_scaling.sh [BUILD_DIR] [RANKS...]
 # Prints a Markdown table: wall seconds, speed-up and efficiency against N = 1.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -22,22 +25,22 @@ metrics="$root/Data/metrics"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# 30,000 seeds in the two-bump box, reproducible.
+# 20,000 seeds in the two-bump box, reproducible.
 python3 - "$work/seeds.csv" <<'EOF'
 import random, sys
 random.seed(2)
 with open(sys.argv[1], "w") as f:
     f.write("x,y,z,dx,dy,dz\n")
-    for _ in range(30000):
+    for _ in range(20000):
         f.write(",".join(repr(random.uniform(-1.5, 1.5)) for _ in range(6)) + "\n")
 EOF
 
 declare -A jobs=(
   [fields]="fields -m $metrics/two-bumps.json --dims 220,220,220 -o $work/f.pvti"
-  [trace]="trace -m $metrics/two-bumps.json --seeds $work/seeds.csv -l 10 -o $work/t.pvtp"
+  [trace]="trace -m $metrics/two-bumps.json --seeds $work/seeds.csv -l 10 --transverse-jacobian -o $work/t.pvtp"
   [expmap]="expmap -m $metrics/two-bumps.json --directions 20000 -l 5 --radii 2,4 -o $work/e.pvtp --wavefronts $work/w.pvtp"
   [conjugate]="conjugate -m $metrics/astigmatic-lens.json --seed -3,0,0 --cone-axis 1,0,0 --cone-angle 14 -n 70000 -k 3 -l 9 -o $work/c.pvtp --surface $work/s.pvtp"
-  [render]="render --backend cpu -s $root/Data/scenes/paper-two-bumps.json --width 960 --height 540 -o $work/r.png"
+  [render]="render --backend cpu -s $root/Data/scenes/paper-two-bumps.json --width 1440 --height 810 -o $work/r.png"
 )
 
 seconds() { # seconds of one run of the command line "$@"
@@ -56,7 +59,7 @@ for n in "${ranks[@]}"; do
 done
 echo "$header 1 rank, threads on all cores |"
 echo "$rule---|"
-for command in fields trace expmap conjugate render; do
+for command in ${COMMANDS:-fields trace expmap conjugate render}; do
   read -r -a job <<<"${jobs[$command]}"
   row="| $command |"
   one=""

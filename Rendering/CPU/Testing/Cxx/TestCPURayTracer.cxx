@@ -199,11 +199,14 @@ TEST(CPURayTracer, EveryPixelIsTraceRaysRay)
 TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
 {
   // 160 x 120 pixels, 8-bit colours compared per pixel. Stated tolerances:
-  // the mean difference stays under 0.05 (of 255), the 99th percentile at
+  // the mean difference stays under 0.15 (of 255), the 99th percentile at
   // most 1 (rounding), and at most 0.05% of the pixels (10 of 19,200)
   // differ by more than 24: edge pixels of thin grid bars, where the GPU's
   // float rays land on the other side of an edge than the CPU's double rays
-  // after hundreds of steps. (Measured: mean <= 0.006, at most 2 pixels.)
+  // after hundreds of steps. Measured: Mesa llvmpipe mean <= 0.006; an
+  // NVIDIA H200 (driver 580) mean 0.046 to 0.083, 99th percentile 1, at
+  // most 2 pixels above 24: its float exp, sin and fused multiply-adds
+  // round otherwise than llvmpipe's, one level of 255 on more pixels.
   const int width = 160;
   const int height = 120;
   std::vector<fs::path> files;
@@ -244,7 +247,7 @@ TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
     const DifferenceStatistics s = Compare(gpu, cpu, 24);
     std::cout << file.filename().string() << ": mean " << s.Mean << ", 99th percentile "
               << s.Percentile99 << ", pixels > 24: " << 100.0 * s.FractionAbove << "%\n";
-    EXPECT_LT(s.Mean, 0.05);
+    EXPECT_LT(s.Mean, 0.15);
     EXPECT_LE(s.Percentile99, 1.0);
     EXPECT_LT(s.FractionAbove, 0.0005);
   }
