@@ -191,8 +191,7 @@ void RunConjugate(const ConjugateArguments& args)
   }
   const std::vector<long long> found =
     SumOverRanks({ points->GetNumberOfPoints(), static_cast<long long>(withPoints.size()) });
-  const std::vector<long long> sheets =
-    CountSheets(locus->GetOutput(1), MaximumCountedSheets);
+  const std::vector<long long> sheets = CountSheets(locus->GetOutput(1), MaximumCountedSheets);
 
   WriteOutput(locus, 0, args.Output, pointsLayout, args.Compress, {},
     [&](vtkPolyData* all, const std::string& temporary)
@@ -272,9 +271,8 @@ void RegisterConjugateCommand(CLI::App& app)
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
-    ->add_option("--output,-o", args->Output,
-      "Output file: .vtp, .csv, or .pvtp (VTK's parallel format: under mpirun, one piece "
-      "file per rank in a folder named after it)")
+    ->add_option(
+      "--output,-o", args->Output, std::string("Output file: .vtp, .csv, or .pvtp ") + PiecesHelp)
     ->required();
   command->add_option("--surface", args->Surface,
     "Also write the caustic as sheets over the direction grid (.vtp or .pvtp; cell data Sheet "

@@ -229,9 +229,8 @@ void RegisterExpmapCommand(CLI::App& app)
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
-    ->add_option("--output,-o", args->Output,
-      "Ray bundle: .vtp, or .pvtp (VTK's parallel format: under mpirun, one piece file per "
-      "rank in a folder named after it)")
+    ->add_option(
+      "--output,-o", args->Output, std::string("Ray bundle: .vtp, or .pvtp ") + PiecesHelp)
     ->required();
   command->add_option(
     "--wavefronts", args->Wavefronts, "Geodesic spheres at --radii (triangles): .vtp or .pvtp");

@@ -191,7 +191,8 @@ void RunFields(const FieldsArguments& args)
   if (layout == OutputLayout::Gathered &&
     static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumPointsPerProcess)
   {
-    throw Failure("--gather: " + std::to_string(static_cast<long long>(dims[0]) * dims[1] * dims[2]) +
+    throw Failure(
+      "--gather: " + std::to_string(static_cast<long long>(dims[0]) * dims[1] * dims[2]) +
         " grid points are more than rank 0 holds (" + std::to_string(MaximumPointsPerProcess) +
         "): write .pvti pieces",
       2);
@@ -318,9 +319,8 @@ void RegisterFieldsCommand(CLI::App& app)
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
-    ->add_option("--output,-o", args->Output,
-      "Output file: .vti, .csv, or .pvti (VTK's parallel format: under mpirun, one piece "
-      "file per rank in a folder named after it)")
+    ->add_option(
+      "--output,-o", args->Output, std::string("Output file: .vti, .csv, or .pvti ") + PiecesHelp)
     ->required();
   command->callback([args]() { RunFields(*args); });
 }

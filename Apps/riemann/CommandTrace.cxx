@@ -335,9 +335,8 @@ void RegisterTraceCommand(CLI::App& app)
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
-    ->add_option("--output,-o", args->Output,
-      "Output file: .vtp, .csv, or .pvtp (VTK's parallel format: under mpirun, one piece "
-      "file per rank in a folder named after it)")
+    ->add_option(
+      "--output,-o", args->Output, std::string("Output file: .vtp, .csv, or .pvtp ") + PiecesHelp)
     ->required();
   command->callback([args]() { RunTrace(*args); });
 }

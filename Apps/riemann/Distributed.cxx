@@ -60,6 +60,14 @@ int LowestFailingRank(bool ok)
   return static_cast<int>(lowest);
 }
 
+/// Collective: every rank's `piece`, in rank order, on rank 0 (nothing on the others).
+std::vector<vtkSmartPointer<vtkDataObject>> GatherOnRankZero(vtkDataObject* piece)
+{
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  Controller()->Gather(piece, pieces, 0);
+  return pieces;
+}
+
 /// Whether a file name is one of the piece files VTK's parallel writers make
 /// for `base` ("base_3.vtp").
 bool IsPieceFileOf(const std::string& name, const std::string& base)
@@ -367,21 +375,19 @@ void UpdateThisRanksPiece(vtkAlgorithm* algorithm)
   const char* failing = std::getenv("RIEMANN_TEST_FAILING_RANK");
   if (failing && *failing && IsDistributed() && std::atoi(failing) == Rank())
   {
-    throw Failure("rank " + std::to_string(Rank()) +
-      " failed on purpose (RIEMANN_TEST_FAILING_RANK is set)");
+    throw Failure(
+      "rank " + std::to_string(Rank()) + " failed on purpose (RIEMANN_TEST_FAILING_RANK is set)");
   }
 }
 
 vtkSmartPointer<vtkPolyData> GatherPolyData(
   vtkPolyData* piece, const std::vector<std::string>& ghostKeys)
 {
-  vtkMultiProcessController* controller = Controller();
-  if (!controller)
+  if (!IsDistributed())
   {
     return piece;
   }
-  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  controller->Gather(piece, pieces, 0);
+  const std::vector<vtkSmartPointer<vtkDataObject>> pieces = GatherOnRankZero(piece);
   if (Rank() != 0)
   {
     return nullptr;
@@ -413,13 +419,11 @@ vtkSmartPointer<vtkPolyData> GatherPolyData(
 
 vtkSmartPointer<vtkImageData> GatherImage(vtkImageData* piece, const int wholeExtent[6])
 {
-  vtkMultiProcessController* controller = Controller();
-  if (!controller)
+  if (!IsDistributed())
   {
     return piece;
   }
-  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  controller->Gather(piece, pieces, 0);
+  const std::vector<vtkSmartPointer<vtkDataObject>> pieces = GatherOnRankZero(piece);
   if (Rank() != 0)
   {
     return nullptr;

@@ -138,6 +138,10 @@ enum class OutputLayout
  */
 OutputLayout ChooseOutputLayout(const std::string& option, const std::string& path, bool gather);
 
+/// What the --output help of every command says of .pvti/.pvtp.
+constexpr const char* PiecesHelp =
+  "(VTK's parallel format: under mpirun, one piece file per rank in a folder named after it)";
+
 /// Register --gather on `command` into `gather`.
 void AddGatherOption(CLI::App* command, bool& gather);
 
