@@ -32,6 +32,12 @@ PYTHONPATH_BUILD="$BUILD_DIR/lib/python3/dist-packages"
 # -noreset: Xvfb otherwise resets when its last client disconnects and
 # refuses connections meanwhile, failing a test that opens a second window.
 XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
+# ccache (when installed; step 1 installs it) for the three builds: GCC, the
+# sanitizer build and the fuzzer build that Fuzz.Build runs. Paths under the
+# checkout are hashed relative to it and the build folder is not hashed, so
+# a fresh clone elsewhere (what CI builds) reuses the objects of an earlier
+# build of the same sources.
+export CCACHE_BASEDIR="$ROOT" CCACHE_NOHASHDIR=1
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git
@@ -42,6 +48,7 @@ PACKAGES=(
   clang libclang-rt-14-dev glslang-tools
   qtbase5-dev libqt5opengl5-dev libvtk9-qt-dev
   openmpi-bin libopenmpi-dev python3-mpi4py
+  ccache
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }
@@ -80,10 +87,14 @@ install_packages() {
 build() {
   if [[ ! -f "$BUILD_DIR/build.ninja" ]]; then
     log "configure: $BUILD_DIR (Ninja, Release)"
+    local launcher=()
+    if command -v ccache >/dev/null; then
+      launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    fi
     # Word splitting of RIEMANN_CMAKE_ARGS is intended (several -D options).
     # shellcheck disable=SC2086
     cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja \
-      -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
       -DPython3_EXECUTABLE="$PYTHON" \
       ${RIEMANN_CMAKE_ARGS:-}
   fi

@@ -5,7 +5,7 @@
 // Start-up time is the point of this file's shape. `render` needs the
 // rendering stack (OpenGL, Embree, and OpenImageIO, which alone loads some
 // 260 shared libraries and took 0.4 s of every start); the other subcommands
-// need the metric core, the filters and VTK's XML writers (about 35
+// need the metric core, the filters and VTK's XML writers (about 38
 // libraries). So `riemann` links only the latter, and `riemann render ...`
 // replaces itself (execv, same arguments) with `riemann-render`, installed
 // next to it, which holds the render subcommand (riemann-render.cxx).

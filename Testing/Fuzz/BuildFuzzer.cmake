@@ -1,6 +1,6 @@
 # cmake -DSOURCE_DIR=<source> -DBINARY_DIR=<build/fuzz> -DEXPORT_HEADER_DIR=<dir>
 #       -DSCENE_SOURCE_DIR=<dir> -DSCENE_HEADER_DIR=<dir>
-#       -DCLANGXX=<clang++> -DGENERATOR=<generator> -P BuildFuzzer.cmake
+#       -DCLANGXX=<clang++> -DGENERATOR=<generator> [-DLAUNCHER=ccache] -P BuildFuzzer.cmake
 #
 # Run by the ctest test Fuzz.Build: configure build/fuzz (Clang,
 # Testing/Fuzz/Standalone), then build it; Ninja rebuilds only what changed.
@@ -22,6 +22,9 @@ set(configure_arguments
   "-DRIEMANN_SCENE_HEADER_DIR=${SCENE_HEADER_DIR}")
 if (NOT EXISTS "${BINARY_DIR}/CMakeCache.txt")
   list(APPEND configure_arguments -G "${GENERATOR}" "-DCMAKE_CXX_COMPILER=${CLANGXX}")
+  if (LAUNCHER)
+    list(APPEND configure_arguments "-DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER}")
+  endif ()
 endif ()
 execute_process(
   COMMAND "${CMAKE_COMMAND}" ${configure_arguments}
