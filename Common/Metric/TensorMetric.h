@@ -3,8 +3,9 @@
  * @brief Family 4: any symmetric positive-definite tensor field g_ij(x),
  * with Christoffel symbols from the general formula (Christoffel.h).
  *
- * The field comes from a TensorField provider: a constant matrix here;
- * component expressions and sampled data come in later issues. Every
+ * The field comes from a TensorField provider: a constant matrix here,
+ * component expressions (ExpressionFields.h), samples on a grid
+ * (SampledTensorField.h). Every
  * specialised family must agree with this general path.
  */
 #ifndef RiemannTensorMetric_h

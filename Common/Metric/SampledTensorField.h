@@ -1,0 +1,101 @@
+/**
+ * @class riemann::SampledTensorField
+ * @brief A metric tensor field given by samples on a regular grid (issue 17:
+ * diffusion tensors, anisotropic media, another code's output), smooth
+ * between them, with exact derivatives: the TensorField of TensorMetric for
+ * data.
+ *
+ * Each of the six components of g is interpolated by the uniform cubic
+ * B-spline of its samples, g(x) = sum_abc B(u - a) B(v - b) B(w - c) g_abc,
+ * (u, v, w) the grid coordinates of x. Why this interpolant:
+ * - the B-spline's weights are non-negative and sum to one, so g(x) is a
+ *   convex combination of the 64 nearest samples: symmetric positive
+ *   definite wherever they are, with its smallest eigenvalue at least
+ *   theirs. Interpolating splines (the B-spline after a prefilter,
+ *   Catmull-Rom) take negative weights and can leave the cone of metrics
+ *   between positive samples; the log-Euclidean mean stays inside it too,
+ *   but its derivatives need the Frechet derivatives of exp, three times
+ *   the work of every Christoffel symbol;
+ * - it is C2: g, its first and second derivatives are continuous, so the
+ *   Christoffel symbols are C1 and the curvature continuous;
+ * - its derivatives are those of the cubic pieces, exact.
+ * The cost is that it approximates rather than interpolates: it reproduces
+ * fields affine in x exactly, and smooth ones to O(h^2) (h the spacing), as
+ * are their first and second derivatives. Samples beyond the grid's edge
+ * repeat the edge's.
+ *
+ * The grid is VTK's image geometry: point (i, j, k) is at
+ * Origin + Direction * (i Spacing_x, j Spacing_y, k Spacing_z). The samples
+ * are g in world coordinates, six per point in VTK's order for symmetric
+ * tensors (XX, YY, ZZ, XY, YZ, XZ), point index i + nx (j + ny k).
+ *
+ * Outside the grid's box (grid coordinates outside [0, n - 1] on an axis)
+ * the field is Euclidean (g = I): Inside() says where the data holds.
+ */
+#ifndef RiemannSampledTensorField_h
+#define RiemannSampledTensorField_h
+
+#include "TensorMetric.h"
+
+#include <array>
+#include <vector>
+
+namespace riemann
+{
+/// A regular grid of symmetric tensors (see SampledTensorField).
+struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorGrid
+{
+  Vec3 Origin = Vec3::Zero();
+  Vec3 Spacing = Vec3::Ones();
+  /// Index to world axes (orthonormal; VTK's direction matrix, NIfTI's q-form rotation).
+  Mat3 Direction = Mat3::Identity();
+  std::array<int, 3> Dimensions = { 0, 0, 0 };
+  /// Six per point: XX, YY, ZZ, XY, YZ, XZ.
+  std::vector<double> Components;
+
+  /// Number of grid points.
+  long long NumberOfPoints() const
+  {
+    return static_cast<long long>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  }
+  /**
+   * What is wrong with the grid, or "": dimensions below 2 on an axis,
+   * spacings not finite and positive, a direction that is not a rotation or
+   * reflection, a component count that is not six per point.
+   */
+  std::string Check() const;
+};
+
+class RIEMANNCOMMONMETRIC_EXPORT SampledTensorField : public TensorField
+{
+public:
+  /// Throws std::invalid_argument with SampledTensorGrid::Check()'s message.
+  explicit SampledTensorField(SampledTensorGrid grid);
+
+  void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
+  bool EvaluateSecond(
+    const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
+  std::string Describe() const override;
+
+  /// Whether p is in the grid's box, where the samples define g.
+  bool Inside(const Vec3& p) const;
+  /// The grid coordinates (i, j, k as reals) of world point p.
+  Vec3 GridCoordinates(const Vec3& p) const;
+  const SampledTensorGrid& GetGrid() const { return this->Grid; }
+
+protected:
+  void AppendSamplePoints(std::vector<Vec3>& points) const override;
+
+private:
+  /// g and its derivatives in grid coordinates up to `order` (0, 1 or 2) at
+  /// grid point u; false outside the box.
+  bool EvaluateInGrid(
+    const Vec3& u, int order, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const;
+
+  SampledTensorGrid Grid;
+  /// d(grid coordinate a)/d(world k) = Direction(k, a) / Spacing(a): row a.
+  Mat3 WorldToGrid;
+};
+} // namespace riemann
+
+#endif

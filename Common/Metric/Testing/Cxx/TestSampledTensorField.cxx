@@ -1,0 +1,353 @@
+// SampledTensorField: the cubic B-spline of sampled metric components.
+// Exact answers:
+// - a field affine in x is reproduced exactly (value, first derivatives,
+//   zero second derivatives) wherever the spline's 4^3 samples are inside
+//   the grid, on a rotated grid with unequal spacings;
+// - the derivatives are those of the interpolant (central differences of g
+//   and of dg agree to the differences' own error);
+// - g between samples is a convex combination of them: its smallest
+//   eigenvalue is at least the samples' smallest;
+// - a smooth field is approximated to second order: halving the spacing
+//   divides the error of g and of dg by 4 (observed order 2 +- 0.25);
+// - outside the grid's box the field is Euclidean; malformed grids are
+//   refused with a message that says what is wrong;
+// - through TensorMetric, the Christoffel symbols of a sampled affine field
+//   are those of the field itself.
+#include "SampledTensorField.h"
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+
+namespace
+{
+using riemann::Mat3;
+using riemann::Mat3Stack;
+using riemann::SampledTensorField;
+using riemann::SampledTensorGrid;
+using riemann::Vec3;
+
+/// A grid of n^3 points over `box` around `centre`, rotated by `direction`,
+/// sampling `field`.
+SampledTensorGrid Sample(const std::function<Mat3(const Vec3&)>& field, int n, const Vec3& centre,
+  const Vec3& size, const Mat3& direction = Mat3::Identity())
+{
+  SampledTensorGrid grid;
+  grid.Dimensions = { n, n, n };
+  for (int a = 0; a < 3; ++a)
+  {
+    grid.Spacing[a] = size[a] / (n - 1);
+  }
+  grid.Direction = direction;
+  grid.Origin = centre - direction * (0.5 * size);
+  grid.Components.reserve(6 * static_cast<size_t>(n) * n * n);
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const Vec3 x = grid.Origin +
+          direction * Vec3(i * grid.Spacing[0], j * grid.Spacing[1], k * grid.Spacing[2]);
+        const Mat3 g = field(x);
+        for (double c : { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) })
+        {
+          grid.Components.push_back(c);
+        }
+      }
+    }
+  }
+  return grid;
+}
+
+Mat3 Rotation()
+{
+  return (Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized())).toRotationMatrix();
+}
+
+/// g = A + x_0 B0 + x_1 B1 + x_2 B2, positive definite on |x| < 2.
+struct AffineField
+{
+  Mat3 A, B[3];
+  AffineField()
+  {
+    A << 3.0, 0.4, -0.2, 0.4, 2.5, 0.3, -0.2, 0.3, 2.0;
+    B[0] << 0.2, 0.1, 0.0, 0.1, -0.1, 0.05, 0.0, 0.05, 0.15;
+    B[1] << -0.1, 0.0, 0.08, 0.0, 0.2, -0.1, 0.08, -0.1, 0.1;
+    B[2] << 0.05, -0.07, 0.0, -0.07, 0.1, 0.0, 0.0, 0.0, -0.2;
+  }
+  Mat3 operator()(const Vec3& x) const { return A + x[0] * B[0] + x[1] * B[1] + x[2] * B[2]; }
+};
+
+/// A smooth metric: a conformal bump plus a sheared part, with derivatives.
+Mat3 SmoothField(const Vec3& x, Mat3Stack* dg = nullptr)
+{
+  const double bump = 0.6 * std::exp(-x.squaredNorm() / 0.5);
+  Mat3 g = (1.0 + bump) * Mat3::Identity();
+  g(0, 1) = g(1, 0) = 0.3 * std::sin(x[1] + 0.5 * x[2]);
+  g(2, 2) += 0.2 * std::cos(x[0]);
+  if (dg)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      (*dg)[k] = (-bump * 2.0 * x[k] / 0.5) * Mat3::Identity();
+    }
+    const double c = 0.3 * std::cos(x[1] + 0.5 * x[2]);
+    (*dg)[1](0, 1) = (*dg)[1](1, 0) = c;
+    (*dg)[2](0, 1) = (*dg)[2](1, 0) = 0.5 * c;
+    (*dg)[0](2, 2) += -0.2 * std::sin(x[0]);
+  }
+  return g;
+}
+
+double MinimumEigenvalue(const Mat3& g)
+{
+  return Eigen::SelfAdjointEigenSolver<Mat3>(g).eigenvalues()[0];
+}
+} // namespace
+
+TEST(SampledTensorField, ReproducesAnAffineFieldExactly)
+{
+  const AffineField field;
+  const Vec3 centre(0.1, -0.2, 0.3);
+  const Vec3 size(2.0, 2.6, 1.8); // unequal spacings
+  const SampledTensorField sampled(Sample(field, 9, centre, size, Rotation()));
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> inner(-0.5 + 1.0 / 8.0, 0.5 - 1.0 / 8.0);
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    // Points whose 4^3 samples all lie inside the grid (one cell from its faces).
+    const Vec3 local(inner(random) * size[0], inner(random) * size[1], inner(random) * size[2]);
+    const Vec3 x = centre + Rotation() * local;
+    Mat3 g;
+    Mat3Stack dg;
+    std::array<Mat3Stack, 3> d2g;
+    ASSERT_TRUE(sampled.EvaluateSecond(x, g, dg, d2g));
+    EXPECT_LT((g - field(x)).cwiseAbs().maxCoeff(), 1e-12);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_LT((dg[k] - field.B[k]).cwiseAbs().maxCoeff(), 1e-11) << "d/dx" << k;
+      for (int l = 0; l < 3; ++l)
+      {
+        EXPECT_LT(d2g[k][l].cwiseAbs().maxCoeff(), 1e-10);
+      }
+    }
+  }
+}
+
+TEST(SampledTensorField, DerivativesAreTheInterpolantsOwn)
+{
+  // Random positive definite samples: a rough field, where a wrong
+  // derivative of the spline would show at once.
+  SampledTensorGrid grid;
+  grid.Dimensions = { 7, 6, 8 };
+  grid.Spacing = Vec3(0.3, 0.4, 0.25);
+  grid.Origin = Vec3(-1.0, -1.0, -1.0);
+  grid.Direction = Rotation();
+  std::mt19937 random(2);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  for (long long p = 0; p < grid.NumberOfPoints(); ++p)
+  {
+    Mat3 m;
+    m << entry(random), entry(random), entry(random), entry(random), entry(random), entry(random),
+      entry(random), entry(random), entry(random);
+    const Mat3 g = m * m.transpose() + 0.5 * Mat3::Identity();
+    for (double c : { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) })
+    {
+      grid.Components.push_back(c);
+    }
+  }
+  const SampledTensorField sampled(grid);
+  const double h = 1e-5;
+  std::uniform_real_distribution<double> unit(0.05, 0.95);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    const Vec3 index(unit(random) * 6, unit(random) * 5, unit(random) * 7);
+    const Vec3 x = grid.Origin + grid.Direction * index.cwiseProduct(grid.Spacing);
+    Mat3 g;
+    Mat3Stack dg;
+    std::array<Mat3Stack, 3> d2g;
+    ASSERT_TRUE(sampled.EvaluateSecond(x, g, dg, d2g));
+    Mat3 gOnly;
+    Mat3Stack dgFirst;
+    sampled.Evaluate(x, true, gOnly, dgFirst);
+    EXPECT_LT((gOnly - g).cwiseAbs().maxCoeff(), 1e-14);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_LT((dgFirst[k] - dg[k]).cwiseAbs().maxCoeff(), 1e-13);
+      const Vec3 step = h * Vec3::Unit(k);
+      Mat3 gp, gm;
+      Mat3Stack dgp, dgm;
+      sampled.Evaluate(x + step, true, gp, dgp);
+      sampled.Evaluate(x - step, true, gm, dgm);
+      // Central differences: error h^2 |g'''| / 6 (the spline's third
+      // derivative is bounded by the samples over h^3, here ~ 1e3).
+      EXPECT_LT(((gp - gm) / (2 * h) - dg[k]).cwiseAbs().maxCoeff(), 1e-6) << "dg" << k;
+      for (int l = 0; l < 3; ++l)
+      {
+        // d2g is piecewise linear: central differences of dg are exact to
+        // rounding, except across a knot (then within h |g'''|).
+        EXPECT_LT(((dgp[l] - dgm[l]) / (2 * h) - d2g[k][l]).cwiseAbs().maxCoeff(), 2e-3)
+          << "d2g " << k << l;
+      }
+    }
+  }
+}
+
+TEST(SampledTensorField, StaysPositiveDefiniteBetweenSamples)
+{
+  // Strongly anisotropic samples (eigenvalues 0.01 to 100, random axes):
+  // g between them is a convex combination, never less definite than they.
+  SampledTensorGrid grid;
+  grid.Dimensions = { 5, 5, 5 };
+  grid.Spacing = Vec3(0.5, 0.5, 0.5);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> angle(-3.14, 3.14);
+  double smallest = 1e300;
+  for (long long p = 0; p < grid.NumberOfPoints(); ++p)
+  {
+    const Mat3 r = Eigen::AngleAxisd(
+      angle(random), Vec3(angle(random), angle(random), angle(random)).normalized())
+                     .toRotationMatrix();
+    const Mat3 g = r * Vec3(0.01, 1.0, 100.0).asDiagonal() * r.transpose();
+    smallest = std::min(smallest, MinimumEigenvalue(g));
+    for (double c : { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) })
+    {
+      grid.Components.push_back(c);
+    }
+  }
+  const SampledTensorField sampled(grid);
+  std::uniform_real_distribution<double> inside(0.0, 2.0);
+  for (int trial = 0; trial < 10000; ++trial)
+  {
+    const Vec3 x(inside(random), inside(random), inside(random));
+    Mat3 g;
+    Mat3Stack dg;
+    sampled.Evaluate(x, false, g, dg);
+    ASSERT_GE(MinimumEigenvalue(g), smallest * (1 - 1e-9)) << x.transpose();
+  }
+}
+
+TEST(SampledTensorField, ConvergesAtSecondOrder)
+{
+  // Errors of g and dg at 300 fixed points of [-1, 1]^3, sampling [-2, 2]^3
+  // with spacings 1/4, 1/8, 1/16: each halving divides them by about 4.
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 300; ++i)
+  {
+    points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  }
+  std::vector<double> valueErrors, derivativeErrors;
+  for (int n : { 17, 33, 65 })
+  {
+    const SampledTensorField sampled(
+      Sample([](const Vec3& x) { return SmoothField(x); }, n, Vec3::Zero(), Vec3(4, 4, 4)));
+    double value = 0.0, derivative = 0.0;
+    for (const Vec3& x : points)
+    {
+      Mat3 g;
+      Mat3Stack dg, exact;
+      sampled.Evaluate(x, true, g, dg);
+      value = std::max(value, (g - SmoothField(x, &exact)).cwiseAbs().maxCoeff());
+      for (int k = 0; k < 3; ++k)
+      {
+        derivative = std::max(derivative, (dg[k] - exact[k]).cwiseAbs().maxCoeff());
+      }
+    }
+    valueErrors.push_back(value);
+    derivativeErrors.push_back(derivative);
+    std::cout << "spacing " << 4.0 / (n - 1) << ": max error of g " << value << ", of dg "
+              << derivative << "\n";
+  }
+  for (size_t i = 1; i < valueErrors.size(); ++i)
+  {
+    const double valueOrder = std::log2(valueErrors[i - 1] / valueErrors[i]);
+    const double derivativeOrder = std::log2(derivativeErrors[i - 1] / derivativeErrors[i]);
+    std::cout << "observed order: g " << valueOrder << ", dg " << derivativeOrder << "\n";
+    EXPECT_NEAR(valueOrder, 2.0, 0.25);
+    EXPECT_NEAR(derivativeOrder, 2.0, 0.25);
+  }
+}
+
+TEST(SampledTensorField, OutsideTheGridIsEuclidean)
+{
+  const SampledTensorField sampled(Sample(AffineField(), 5, Vec3::Zero(), Vec3(2, 2, 2)));
+  EXPECT_TRUE(sampled.Inside(Vec3(0.99, -0.99, 0.0)));
+  EXPECT_TRUE(sampled.Inside(Vec3(1.0, 1.0, 1.0)));
+  EXPECT_FALSE(sampled.Inside(Vec3(1.01, 0.0, 0.0)));
+  Mat3 g;
+  Mat3Stack dg;
+  std::array<Mat3Stack, 3> d2g;
+  ASSERT_TRUE(sampled.EvaluateSecond(Vec3(0.0, 0.0, -1.5), g, dg, d2g));
+  EXPECT_EQ(g, Mat3::Identity());
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_EQ(dg[k], Mat3::Zero());
+    EXPECT_EQ(d2g[k][1], Mat3::Zero());
+  }
+}
+
+TEST(SampledTensorField, MalformedGridsAreRefusedWithWhatIsWrong)
+{
+  SampledTensorGrid good = Sample(AffineField(), 3, Vec3::Zero(), Vec3(1, 1, 1));
+  EXPECT_EQ(good.Check(), "");
+  auto refused = [](SampledTensorGrid grid, const std::string& expected)
+  {
+    try
+    {
+      SampledTensorField field(grid);
+      ADD_FAILURE() << "accepted; expected: " << expected;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  };
+  SampledTensorGrid grid = good;
+  grid.Dimensions[1] = 1;
+  refused(grid, "at least 2 points on each axis, axis 1 has 1");
+  grid = good;
+  grid.Spacing[2] = std::nan("");
+  refused(grid, "spacing must be finite and positive, axis 2");
+  grid = good;
+  grid.Spacing[0] = -0.5;
+  refused(grid, "spacing must be finite and positive, axis 0");
+  grid = good;
+  grid.Direction(0, 1) = 0.5;
+  refused(grid, "direction matrix is not orthonormal");
+  grid = good;
+  grid.Components.pop_back();
+  refused(grid, "expected 6 components per point (162), got 161");
+}
+
+TEST(SampledTensorField, ChristoffelSymbolsOfTheSampledFieldAreTheFields)
+{
+  const AffineField field;
+  const riemann::TensorMetric metric(std::make_shared<SampledTensorField>(
+    Sample(field, 7, Vec3::Zero(), Vec3(3, 3, 3), Rotation())));
+  const Vec3 x(0.2, -0.3, 0.1);
+  Mat3Stack gamma;
+  ASSERT_TRUE(metric.Christoffel(x, gamma));
+  // Gamma^m_ij = 1/2 g^ml (d_i g_lj + d_j g_li - d_l g_ij), with the exact dg = B.
+  const Mat3 inverse = field(x).inverse();
+  for (int m = 0; m < 3; ++m)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        double exact = 0.0;
+        for (int l = 0; l < 3; ++l)
+        {
+          exact += 0.5 * inverse(m, l) * (field.B[i](l, j) + field.B[j](l, i) - field.B[l](i, j));
+        }
+        EXPECT_NEAR(gamma[m](i, j), exact, 1e-12) << m << i << j;
+      }
+    }
+  }
+}
