@@ -13,7 +13,10 @@
 //   refused with a message that says what is wrong;
 // - through TensorMetric, the Christoffel symbols of a sampled affine field
 //   are those of the field itself.
+// PrepareTensorSamples: inverse and scale exact; bad samples counted and the
+// first named (index, position, eigenvalue); repair clamps to the floor.
 #include "SampledTensorField.h"
+#include "SampledTensorSamples.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -350,4 +353,158 @@ TEST(SampledTensorField, ChristoffelSymbolsOfTheSampledFieldAreTheFields)
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// PrepareTensorSamples: the data's tensors to metric samples.
+
+namespace
+{
+/// A 3 x 3 x 3 grid of the same sample `g`, spacing 0.5 from (1, 2, 3).
+SampledTensorGrid Uniform(const Mat3& g)
+{
+  SampledTensorGrid grid;
+  grid.Dimensions = { 3, 3, 3 };
+  grid.Spacing = Vec3(0.5, 0.5, 0.5);
+  grid.Origin = Vec3(1, 2, 3);
+  for (int p = 0; p < 27; ++p)
+  {
+    for (double c : { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) })
+    {
+      grid.Components.push_back(c);
+    }
+  }
+  return grid;
+}
+
+Mat3 SampleOf(const SampledTensorGrid& grid, int point)
+{
+  const double* c = grid.Components.data() + 6 * point;
+  Mat3 g;
+  g << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
+  return g;
+}
+
+void SetSample(SampledTensorGrid& grid, int point, const Mat3& g)
+{
+  double* c = grid.Components.data() + 6 * point;
+  const double values[6] = { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) };
+  std::copy(values, values + 6, c);
+}
+
+Mat3 Diffusion()
+{
+  Mat3 d; // a fibre along (1, 1, 0): fast diffusion there
+  d << 1.6, 1.4, 0.0, 1.4, 1.6, 0.0, 0.0, 0.0, 0.3;
+  return d;
+}
+} // namespace
+
+TEST(SampledTensorSamples, InverseAndScaleMakeTheDiffusionTensorsMetric)
+{
+  SampledTensorGrid grid = Uniform(Diffusion());
+  riemann::SampledTensorOptions options;
+  options.Inverse = true;
+  options.Scale = 2.0;
+  riemann::SampledTensorReport report;
+  ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
+  EXPECT_EQ(report.NotPositiveDefinite, 0);
+  for (int p = 0; p < 27; ++p)
+  {
+    EXPECT_LT(
+      (SampleOf(grid, p) * Diffusion() - 2.0 * Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  // Along the fibre the metric is small: length^2 of (1, 1, 0) is 2 * 2 / 3.
+  const Vec3 fibre(1, 1, 0);
+  EXPECT_NEAR(fibre.dot(SampleOf(grid, 0) * fibre), 4.0 / 3.0, 1e-12);
+}
+
+TEST(SampledTensorSamples, PositiveSamplesWithoutOptionsAreKeptBitwise)
+{
+  SampledTensorGrid grid = Uniform(Diffusion());
+  const std::vector<double> before = grid.Components;
+  ASSERT_EQ(riemann::PrepareTensorSamples(grid, riemann::SampledTensorOptions()), "");
+  EXPECT_EQ(grid.Components, before);
+}
+
+TEST(SampledTensorSamples, BadSamplesAreCountedAndTheFirstIsNamed)
+{
+  SampledTensorGrid grid = Uniform(Diffusion());
+  // Point (2, 1, 0) (index 5) is at (2, 2.5, 3); (0, 0, 2) (index 18) at (1, 2, 4).
+  Mat3 indefinite = Diffusion();
+  indefinite(2, 2) = -0.1;
+  SetSample(grid, 5, indefinite);
+  SetSample(grid, 18, Mat3::Zero());
+  riemann::SampledTensorReport report;
+  std::string message =
+    riemann::PrepareTensorSamples(grid, riemann::SampledTensorOptions(), &report);
+  EXPECT_NE(message.find("2 of 27 samples are not positive definite; the first is sample "
+                         "(2, 1, 0) at (2, 2.5, 3), smallest eigenvalue -0.1"),
+    std::string::npos)
+    << message;
+  EXPECT_NE(message.find("\"repair\": \"clamp\""), std::string::npos) << message;
+  EXPECT_EQ(report.NotPositiveDefinite, 2);
+  EXPECT_EQ(report.FirstBad, (std::array<int, 3>{ 2, 1, 0 }));
+
+  SampledTensorGrid withNaN = Uniform(Diffusion());
+  Mat3 nan = Diffusion();
+  nan(0, 1) = nan(1, 0) = std::nan("");
+  SetSample(withNaN, 18, nan);
+  message = riemann::PrepareTensorSamples(withNaN, riemann::SampledTensorOptions(), &report);
+  EXPECT_NE(message.find("1 of 27 samples are not finite (NaN or infinite components); the "
+                         "first is sample (0, 0, 2) at (1, 2, 4)"),
+    std::string::npos)
+    << message;
+
+  riemann::SampledTensorOptions options;
+  options.Repair = true; // NaN cannot be repaired
+  EXPECT_NE(riemann::PrepareTensorSamples(withNaN, options).find("not finite"), std::string::npos);
+
+  SampledTensorGrid zeros = Uniform(Mat3::Zero());
+  EXPECT_EQ(
+    riemann::PrepareTensorSamples(zeros, options), "no sample is positive definite (27 samples)");
+}
+
+TEST(SampledTensorSamples, RepairClampsEigenvaluesToTheFloor)
+{
+  SampledTensorGrid grid = Uniform(Diffusion());
+  Mat3 indefinite = Diffusion();
+  indefinite(2, 2) = -0.1;
+  SetSample(grid, 5, indefinite);
+  SetSample(grid, 18, Mat3::Zero()); // background
+  riemann::SampledTensorOptions options;
+  options.Repair = true;
+  options.RelativeFloor = 0.01;
+  options.Inverse = true;
+  riemann::SampledTensorReport report;
+  ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
+  EXPECT_EQ(report.NotPositiveDefinite, 2);
+  EXPECT_EQ(report.Repaired, 2);
+  // The largest eigenvalue of the data is 3.0 (Diffusion's along the fibre):
+  // the floor 0.03, so the background's metric is I / 0.03.
+  EXPECT_LT((SampleOf(grid, 18) - Mat3::Identity() / 0.03).cwiseAbs().maxCoeff(), 1e-9);
+  for (int p = 0; p < 27; ++p)
+  {
+    EXPECT_GT(MinimumEigenvalue(SampleOf(grid, p)), 0.0);
+  }
+  // Untouched samples are only inverted.
+  EXPECT_LT((SampleOf(grid, 0) * Diffusion() - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(SampledTensorSamples, BadOptionsAreRefused)
+{
+  SampledTensorGrid grid = Uniform(Diffusion());
+  riemann::SampledTensorOptions options;
+  options.Scale = 0.0;
+  EXPECT_EQ(riemann::PrepareTensorSamples(grid, options),
+    "the scale must be a finite positive number, got 0");
+  options.Scale = 1.0;
+  options.RelativeFloor = 1.5;
+  EXPECT_NE(
+    riemann::PrepareTensorSamples(grid, options).find("repair floor must be between 0 and 1"),
+    std::string::npos);
+  grid.Components.resize(10);
+  EXPECT_NE(riemann::PrepareTensorSamples(grid, riemann::SampledTensorOptions())
+              .find("expected 6 components per point"),
+    std::string::npos);
 }

@@ -1,0 +1,184 @@
+#include "SampledTensorSamples.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace riemann
+{
+namespace
+{
+Mat3 SampleAt(const SampledTensorGrid& grid, long long point)
+{
+  const double* c = grid.Components.data() + 6 * point;
+  Mat3 g;
+  g << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
+  return g;
+}
+
+void StoreAt(SampledTensorGrid& grid, long long point, const Mat3& g)
+{
+  double* c = grid.Components.data() + 6 * point;
+  c[0] = g(0, 0);
+  c[1] = g(1, 1);
+  c[2] = g(2, 2);
+  c[3] = 0.5 * (g(0, 1) + g(1, 0));
+  c[4] = 0.5 * (g(1, 2) + g(2, 1));
+  c[5] = 0.5 * (g(0, 2) + g(2, 0));
+}
+
+std::array<int, 3> IndexOf(const SampledTensorGrid& grid, long long point)
+{
+  const long long nx = grid.Dimensions[0];
+  const long long ny = grid.Dimensions[1];
+  return { static_cast<int>(point % nx), static_cast<int>((point / nx) % ny),
+    static_cast<int>(point / (nx * ny)) };
+}
+
+/// "sample (i, j, k) at (x, y, z)".
+std::string Where(const SampledTensorGrid& grid, const std::array<int, 3>& index)
+{
+  const Vec3 x = grid.Origin +
+    grid.Direction *
+      Vec3(index[0] * grid.Spacing[0], index[1] * grid.Spacing[1], index[2] * grid.Spacing[2]);
+  std::ostringstream text;
+  text << "sample (" << index[0] << ", " << index[1] << ", " << index[2] << ") at (" << x[0] << ", "
+       << x[1] << ", " << x[2] << ")";
+  return text.str();
+}
+} // namespace
+
+std::string SampledTensorOptions::Check() const
+{
+  std::ostringstream problem;
+  if (!std::isfinite(this->Scale) || !(this->Scale > 0.0))
+  {
+    problem << "the scale must be a finite positive number, got " << this->Scale;
+  }
+  else if (!(this->RelativeFloor > 0.0 && this->RelativeFloor < 1.0))
+  {
+    problem << "the repair floor must be between 0 and 1 (a fraction of the largest "
+               "eigenvalue), got "
+            << this->RelativeFloor;
+  }
+  return problem.str();
+}
+
+std::string PrepareTensorSamples(
+  SampledTensorGrid& grid, const SampledTensorOptions& options, SampledTensorReport* report)
+{
+  SampledTensorReport found;
+  std::string problem = grid.Check();
+  if (problem.empty())
+  {
+    problem = options.Check();
+  }
+  if (!problem.empty())
+  {
+    if (report)
+    {
+      *report = found;
+    }
+    return problem;
+  }
+  const long long count = grid.NumberOfPoints();
+  // Pass 1: finiteness, definiteness, and the largest eigenvalue (the floor's scale).
+  double largest = 0.0;
+  long long firstNonFinite = -1, firstIndefinite = -1;
+  double indefiniteEigenvalue = 0.0;
+  for (long long point = 0; point < count; ++point)
+  {
+    const Mat3 g = SampleAt(grid, point);
+    if (!g.allFinite())
+    {
+      ++found.NonFinite;
+      firstNonFinite = firstNonFinite < 0 ? point : firstNonFinite;
+      continue;
+    }
+    const Vec3 eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues();
+    largest = std::max(largest, eigenvalues[2]);
+    if (!(eigenvalues[0] > 0.0))
+    {
+      ++found.NotPositiveDefinite;
+      if (firstIndefinite < 0)
+      {
+        firstIndefinite = point;
+        indefiniteEigenvalue = eigenvalues[0];
+      }
+    }
+  }
+  const long long firstBad = firstNonFinite >= 0 ? firstNonFinite : firstIndefinite;
+  if (firstBad >= 0)
+  {
+    found.FirstBad = IndexOf(grid, firstBad);
+    found.FirstBadEigenvalue = firstNonFinite >= 0 ? std::nan("") : indefiniteEigenvalue;
+  }
+  std::ostringstream message;
+  if (found.NonFinite > 0)
+  {
+    message << found.NonFinite << " of " << count
+            << " samples are not finite (NaN or infinite components); the first is "
+            << Where(grid, found.FirstBad);
+  }
+  else if (!(largest > 0.0))
+  {
+    message << "no sample is positive definite (" << count << " samples)";
+  }
+  else if (found.NotPositiveDefinite > 0 && !options.Repair)
+  {
+    message << found.NotPositiveDefinite << " of " << count
+            << " samples are not positive definite; the first is " << Where(grid, found.FirstBad)
+            << ", smallest eigenvalue " << found.FirstBadEigenvalue
+            << " (\"repair\": \"clamp\" raises every eigenvalue to " << options.RelativeFloor
+            << " of the largest)";
+  }
+  if (!message.str().empty())
+  {
+    if (report)
+    {
+      *report = found;
+    }
+    return message.str();
+  }
+
+  // Pass 2: clamp (with Repair), invert, scale, through each sample's eigenvectors.
+  const double floor = options.RelativeFloor * largest;
+  for (long long point = 0; point < count; ++point)
+  {
+    const Mat3 g = SampleAt(grid, point);
+    const Eigen::SelfAdjointEigenSolver<Mat3> solver(g);
+    Vec3 eigenvalues = solver.eigenvalues();
+    bool clamped = false;
+    if (options.Repair)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        if (eigenvalues[i] < floor)
+        {
+          eigenvalues[i] = floor;
+          clamped = true;
+        }
+      }
+    }
+    found.Repaired += clamped ? 1 : 0;
+    if (!clamped && !options.Inverse && options.Scale == 1.0)
+    {
+      continue; // kept exactly as given
+    }
+    if (options.Inverse)
+    {
+      eigenvalues = eigenvalues.cwiseInverse();
+    }
+    const Mat3& v = solver.eigenvectors();
+    StoreAt(grid, point, options.Scale * (v * eigenvalues.asDiagonal() * v.transpose()));
+  }
+  if (report)
+  {
+    *report = found;
+  }
+  return {};
+}
+} // namespace riemann

@@ -1,0 +1,64 @@
+/**
+ * @file SampledTensorSamples.h
+ * @brief From the tensors a file holds to the metric samples of a
+ * SampledTensorField (issue 17): checked, optionally repaired, inverted and
+ * scaled, with a report of what was wrong and where.
+ *
+ * Diffusion MRI gives the diffusion tensor D; geodesic tractography uses
+ * g = D^-1 (`inverse`), so that geodesics run along the fibres, where
+ * diffusion is fast and g small. Background voxels hold zero or tiny
+ * tensors: `repair` clamps every eigenvalue to a floor (a fraction of the
+ * largest eigenvalue in the data), after which their inverse is a wall of
+ * large g rather than an error.
+ */
+#ifndef RiemannSampledTensorSamples_h
+#define RiemannSampledTensorSamples_h
+
+#include "SampledTensorField.h"
+
+#include <string>
+
+namespace riemann
+{
+/// What the "sampled" family does to the data's tensors, in this order.
+struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
+{
+  /// Clamp eigenvalues to `RelativeFloor` times the data's largest one,
+  /// instead of refusing samples that are not positive definite.
+  bool Repair = false;
+  double RelativeFloor = 1e-3;
+  /// Use each sample's inverse (a diffusion tensor's metric).
+  bool Inverse = false;
+  /// Multiply the metric by this (after the inverse).
+  double Scale = 1.0;
+
+  /// What is wrong with the options, or "".
+  std::string Check() const;
+};
+
+/// What PrepareTensorSamples found.
+struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorReport
+{
+  long long NonFinite = 0;
+  /// Samples with an eigenvalue <= 0 (before any repair).
+  long long NotPositiveDefinite = 0;
+  /// Samples whose eigenvalues were clamped (with Repair).
+  long long Repaired = 0;
+  /// Grid index of the first bad sample (non-finite, else not positive definite).
+  std::array<int, 3> FirstBad = { -1, -1, -1 };
+  /// The smallest eigenvalue found there, NaN when not finite.
+  double FirstBadEigenvalue = 0.0;
+};
+
+/**
+ * Check every sample of `grid` and turn it into a metric sample in place,
+ * as `options` say. Returns "" on success, else what is wrong: how many
+ * samples are not finite or not positive definite, and where the first one
+ * is (its grid index, its position in space and its smallest eigenvalue),
+ * with the "repair" hint for the latter. `report` (optional) gets the counts.
+ */
+RIEMANNCOMMONMETRIC_EXPORT std::string PrepareTensorSamples(SampledTensorGrid& grid,
+  const SampledTensorOptions& options, SampledTensorReport* report = nullptr);
+} // namespace riemann
+
+#endif
