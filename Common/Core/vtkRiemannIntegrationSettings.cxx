@@ -67,8 +67,7 @@ std::string vtkRiemannIntegrationSettings::CheckSettings() const
   if (this->MaximumNumberOfSteps < 1)
   {
     std::ostringstream message;
-    message << "MaximumNumberOfSteps is " << this->MaximumNumberOfSteps
-            << ": expected at least 1";
+    message << "MaximumNumberOfSteps is " << this->MaximumNumberOfSteps << ": expected at least 1";
     return message.str();
   }
   return std::string();

@@ -133,8 +133,8 @@ public:
    * never null) becomes `settings`, registered by `owner`; null or the same
    * object changes nothing. Returns whether it changed.
    */
-  VTK_WRAPEXCLUDE static bool Share(
-    vtkObject* owner, vtkRiemannIntegrationSettings*& slot, vtkRiemannIntegrationSettings* settings);
+  VTK_WRAPEXCLUDE static bool Share(vtkObject* owner, vtkRiemannIntegrationSettings*& slot,
+    vtkRiemannIntegrationSettings* settings);
 
 protected:
   vtkRiemannIntegrationSettings() = default;

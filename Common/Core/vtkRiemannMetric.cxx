@@ -1,14 +1,29 @@
 #include "vtkRiemannMetric.h"
 
 #include "MetricDefinition.h"
+#include "RiemannTensorImage.h"
+#include "SampledTensorSamples.h"
+#include "TensorMetric.h"
 #include "vtkObjectFactory.h"
 
+#include <vtksys/SystemTools.hxx>
+
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
 
 vtkStandardNewMacro(vtkRiemannMetric);
 
 namespace
 {
+/// The core reads "sampled" definitions' files through VTK's readers: this
+/// library installs the reader when it loads.
+const bool SampledTensorReaderInstalled = []()
+{
+  riemann::SetSampledTensorReader(&riemann::ReadTensorGridFile);
+  return true;
+}();
+
 /// Copy a 3x3 matrix into a row-major double[9] (the wrapped API's layout).
 void CopyRowMajor(const riemann::Mat3& m, double* out)
 {
@@ -22,6 +37,11 @@ vtkRiemannMetric::~vtkRiemannMetric() = default;
 
 bool vtkRiemannMetric::SetDefinition(const char* json)
 {
+  return this->SetDefinitionIn(json, std::string());
+}
+
+bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& baseDirectory)
+{
   if (!json)
   {
     this->LastError = "no definition given (null)";
@@ -30,7 +50,7 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   std::shared_ptr<const riemann::Metric> metric;
   try
   {
-    metric = riemann::ParseMetricDefinition(json, this->Time);
+    metric = riemann::ParseMetricDefinition(json, this->Time, baseDirectory);
   }
   catch (const riemann::MetricDefinitionError& e)
   {
@@ -40,6 +60,52 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   // Atomic: a filter running on another thread may be copying the pointer.
   std::atomic_store(&this->Metric, metric);
   this->Definition = json;
+  this->BaseDirectory = baseDirectory;
+  this->FromTensorData = false;
+  this->LastError.clear();
+  this->Modified();
+  return true;
+}
+
+bool vtkRiemannMetric::SetTensorData(
+  vtkImageData* image, const char* arrayName, bool inverse, double scale, bool repair)
+{
+  std::shared_ptr<const riemann::Metric> metric;
+  try
+  {
+    riemann::SampledTensorGrid grid =
+      riemann::TensorGridFromImage(image, arrayName ? arrayName : "");
+    riemann::SampledTensorOptions options;
+    options.Inverse = inverse;
+    options.Scale = scale;
+    options.Repair = repair;
+    const std::string problem = riemann::PrepareTensorSamples(grid, options);
+    if (!problem.empty())
+    {
+      throw std::runtime_error(problem);
+    }
+    metric = std::make_shared<riemann::TensorMetric>(
+      std::make_shared<riemann::SampledTensorField>(std::move(grid)));
+    const std::string invalid = metric->Validate();
+    if (!invalid.empty())
+    {
+      throw std::runtime_error(invalid);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    this->LastError = std::string("tensor data: ") + e.what();
+    return false;
+  }
+  std::atomic_store(&this->Metric, metric);
+  std::ostringstream definition;
+  definition << "{\"type\": \"sampled\", \"file\": \"(in memory)\", \"array\": \""
+             << (arrayName ? arrayName : "") << "\", \"inverse\": " << (inverse ? "true" : "false")
+             << ", \"scale\": " << scale << ", \"repair\": \"" << (repair ? "clamp" : "none")
+             << "\"}";
+  this->Definition = definition.str();
+  this->BaseDirectory.clear();
+  this->FromTensorData = true;
   this->LastError.clear();
   this->Modified();
   return true;
@@ -67,6 +133,8 @@ void vtkRiemannMetric::ShallowCopy(vtkRiemannMetric* other)
   }
   std::atomic_store(&this->Metric, other->GetMetric());
   this->Definition = other->Definition;
+  this->BaseDirectory = other->BaseDirectory;
+  this->FromTensorData = other->FromTensorData;
   this->Time = other->Time;
   this->LastError.clear();
   this->Modified();
@@ -80,13 +148,14 @@ bool vtkRiemannMetric::SetTime(double t)
   }
   const double previous = this->Time;
   this->Time = t;
-  if (this->Definition.empty())
+  if (this->Definition.empty() || this->FromTensorData)
   {
     this->Modified();
     return true;
   }
   const std::string definition = this->Definition;
-  if (!this->SetDefinition(definition.c_str()))
+  const std::string directory = this->BaseDirectory;
+  if (!this->SetDefinitionIn(definition.c_str(), directory))
   {
     this->Time = previous;
     this->LastError = "at t = " + std::to_string(t) + ": " + this->LastError;
@@ -112,7 +181,7 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
     this->LastError = e.what();
     return false;
   }
-  if (!this->SetDefinition(text.c_str()))
+  if (!this->SetDefinitionIn(text.c_str(), vtksys::SystemTools::GetFilenamePath(path)))
   {
     this->LastError = std::string(path) + ": " + this->LastError;
     return false;

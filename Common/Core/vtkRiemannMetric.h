@@ -34,6 +34,8 @@ namespace riemann
 class Metric;
 }
 
+class vtkImageData;
+
 class RIEMANNCOMMONCORE_EXPORT vtkRiemannMetric : public vtkObject
 {
 public:
@@ -50,6 +52,22 @@ public:
   bool SetDefinition(const char* json);
   bool SetDefinitionFile(const char* path);
   ///@}
+
+  /**
+   * Set the metric from a tensor volume in memory, as the "sampled" family
+   * does from a file (Documentation/MetricFormat.md): the point-data array
+   * `arrayName` of `image` ("" or null: its active tensors, else its one
+   * array of 6 or 9 components), on the image's origin, spacing and
+   * direction, interpolated by the cubic B-spline of SampledTensorField;
+   * `inverse` uses each tensor's inverse (diffusion tensors), `scale`
+   * multiplies the metric, `repair` clamps eigenvalues that are not
+   * positive to a floor instead of refusing the data. Returns false, and
+   * GetLastError() says why (how many samples are bad and where), on bad
+   * data. The definition text then records the options; the data are not
+   * re-read at SetTime (nothing of them is animated).
+   */
+  bool SetTensorData(vtkImageData* image, const char* arrayName, bool inverse = false,
+    double scale = 1.0, bool repair = false);
 
   ///@{
   /**
@@ -121,8 +139,15 @@ private:
   vtkRiemannMetric(const vtkRiemannMetric&) = delete;
   void operator=(const vtkRiemannMetric&) = delete;
 
+  /// Parse `json` with relative data files read from `baseDirectory`.
+  bool SetDefinitionIn(const char* json, const std::string& baseDirectory);
+
   std::shared_ptr<const riemann::Metric> Metric;
   std::string Definition;
+  /// The folder of the definition's file (relative "sampled" files).
+  std::string BaseDirectory;
+  /// True when the metric came from SetTensorData (no text to parse again).
+  bool FromTensorData = false;
   std::string LastError;
   double Time = 0.0;
 };

@@ -1,5 +1,7 @@
 #include "MetricDefinition.h"
 
+#include "SampledTensorSamples.h"
+
 #include "BumpTranslationMap.h"
 #include "ConformalMetric.h"
 #include "DiffeoMetric.h"
@@ -64,6 +66,17 @@ thread_local double ParseTime = 0.0;
  * there with its own reason, and `riemann info` reports it at a point.
  */
 thread_local bool ParseHasExpressions = false;
+
+/// The folder relative data files are read from (ParseMetricDefinition's
+/// `baseDirectory`), kept like ParseTime.
+thread_local std::string ParseBaseDirectory;
+
+/// The reader of "sampled" definitions (SetSampledTensorReader).
+SampledTensorReader& InstalledSampledTensorReader()
+{
+  static SampledTensorReader reader;
+  return reader;
+}
 
 double Number(const Json& value, const std::string& path);
 
@@ -464,6 +477,88 @@ std::shared_ptr<const TensorField> TensorExpressions(
   }
 }
 
+/// A string member, or `fallback` when absent.
+std::string StringOr(
+  const Json& object, const char* key, const std::string& path, const std::string& fallback)
+{
+  if (!object.contains(key))
+  {
+    return fallback;
+  }
+  const Json& value = object.at(key);
+  if (!value.is_string())
+  {
+    Fail(path + "." + key, "expected a string, got " + Describe(value));
+  }
+  return value.get<std::string>();
+}
+
+/// {"type": "sampled", ...}: a tensor volume read by the installed reader.
+std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string& path)
+{
+  CheckKeys(root, path, { "type", "file", "array", "inverse", "scale", "repair", "outside" });
+  const Json& fileValue = Required(root, "file", path);
+  if (!fileValue.is_string() || fileValue.get<std::string>().empty())
+  {
+    Fail(path + ".file", "expected the name of a tensor volume file, got " + Describe(fileValue));
+  }
+  SampledTensorOptions options;
+  if (root.contains("inverse"))
+  {
+    if (!root.at("inverse").is_boolean())
+    {
+      Fail(path + ".inverse", "expected true or false, got " + Describe(root.at("inverse")));
+    }
+    options.Inverse = root.at("inverse").get<bool>();
+  }
+  options.Scale = NumberOr(root, "scale", path, 1.0);
+  const std::string repair = StringOr(root, "repair", path, "none");
+  if (repair != "none" && repair != "clamp")
+  {
+    Fail(path + ".repair", "expected \"none\" or \"clamp\", got \"" + repair + "\"");
+  }
+  options.Repair = repair == "clamp";
+  const std::string problem = options.Check();
+  if (!problem.empty())
+  {
+    Fail(path + ".scale", problem);
+  }
+  const std::string outside = StringOr(root, "outside", path, "euclidean");
+  if (outside != "euclidean")
+  {
+    Fail(path + ".outside",
+      "expected \"euclidean\" (g = I outside the volume), got \"" + outside +
+        "\" (rays that stop at the volume's faces are not supported yet)");
+  }
+  const SampledTensorReader& reader = InstalledSampledTensorReader();
+  if (!reader)
+  {
+    Fail(path,
+      "sampled metrics are read through VTK (vtkRiemannMetric: the riemann tool, "
+      "riemann-studio, Python); this program installed no reader");
+  }
+  std::string file = fileValue.get<std::string>();
+  if (file.front() != '/' && !ParseBaseDirectory.empty())
+  {
+    file = ParseBaseDirectory + "/" + file;
+  }
+  SampledTensorGrid grid;
+  try
+  {
+    grid = reader(file, StringOr(root, "array", path, ""));
+  }
+  catch (const std::exception& e)
+  {
+    Fail(path + ".file", e.what());
+  }
+  const std::string bad = PrepareTensorSamples(grid, options);
+  if (!bad.empty())
+  {
+    Fail(path + ".file", file + ": " + bad);
+  }
+  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid)));
+}
+
 std::shared_ptr<const Metric> Build(const Json& root)
 {
   const std::string path = "metric";
@@ -499,6 +594,10 @@ std::shared_ptr<const Metric> Build(const Json& root)
   {
     return std::make_shared<DiffeoMetric>(Diffeomorphism(root, path, 0, ExpressionInputs()));
   }
+  if (type == "sampled")
+  {
+    return SampledMetric(root, path);
+  }
   if (type == "tensor" && root.contains("g"))
   {
     CheckKeys(root, path, { "type", "g", "parameters" });
@@ -516,12 +615,34 @@ std::shared_ptr<const Metric> Build(const Json& root)
   }
   Fail(path + ".type",
     "unknown metric type \"" + type +
-      "\"; expected \"graph\", \"diffeo\", \"conformal\", \"tensor\" or \"euclidean\"");
+      "\"; expected \"graph\", \"diffeo\", \"conformal\", \"tensor\", \"sampled\" or "
+      "\"euclidean\"");
 }
 } // namespace
 
+void SetSampledTensorReader(SampledTensorReader reader)
+{
+  InstalledSampledTensorReader() = std::move(reader);
+}
+
 std::shared_ptr<const Metric> ParseMetricDefinition(const std::string& json, double time)
 {
+  return ParseMetricDefinition(json, time, ParseBaseDirectory);
+}
+
+std::shared_ptr<const Metric> ParseMetricDefinition(
+  const std::string& json, double time, const std::string& baseDirectory)
+{
+  struct DirectoryScope
+  {
+    std::string Saved;
+    explicit DirectoryScope(const std::string& directory)
+      : Saved(ParseBaseDirectory)
+    {
+      ParseBaseDirectory = directory;
+    }
+    ~DirectoryScope() { ParseBaseDirectory = this->Saved; }
+  } directoryScope(baseDirectory);
   if (!std::isfinite(time))
   {
     throw MetricDefinitionError("the time t must be a finite number");
@@ -589,9 +710,11 @@ std::string ReadMetricDefinitionFile(const std::string& path)
 std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path, double time)
 {
   const std::string text = ReadMetricDefinitionFile(path);
+  const size_t slash = path.rfind('/');
   try
   {
-    return ParseMetricDefinition(text, time);
+    return ParseMetricDefinition(
+      text, time, slash == std::string::npos ? std::string() : path.substr(0, slash));
   }
   catch (const MetricDefinitionError& e)
   {

@@ -17,6 +17,12 @@
  *   {"type": "diffeo", "preset": "identity"}
  *   {"type": "diffeo", "compose": [ {diffeo}, {diffeo}, ... ]}   Phi = Phi_1 o Phi_2 o ...
  *   {"type": "tensor", "matrix": [[..],[..],[..]]}         constant g
+ *   {"type": "sampled", "file": "D.vti", "array": "Tensors", "inverse": true,
+ *                       "scale": 1.0, "repair": "clamp", "outside": "euclidean"}
+ *                        g from a tensor volume (SampledTensorField.h): "file"
+ *                        relative to the metric file's folder, read by the
+ *                        reader the VTK layer installs (SetSampledTensorReader);
+ *                        "array" defaults to the active tensors
  *
  * where <scalar terms> are any of
  *   "gaussians": [{"amplitude": a, "center": [x,y,z], "sigma": s or [sx,sy,sz]}, ...]
@@ -47,7 +53,9 @@
 #define RiemannMetricDefinition_h
 
 #include "Metric.h"
+#include "SampledTensorField.h"
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -68,6 +76,29 @@ public:
  */
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
   const std::string& json, double time = 0.0);
+
+/**
+ * The same, with the folder that relative data files of the definition
+ * ("sampled": "file") are read from ("" for the working directory).
+ */
+RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
+  const std::string& json, double time, const std::string& baseDirectory);
+
+/**
+ * Reads the tensors of a {"type": "sampled"} definition: the grid of array
+ * `array` ("": the data's active tensors) of file `path`, its tensors as
+ * they are stored (PrepareTensorSamples turns them into the metric). Throws
+ * std::exception with a message that names the file and what is wrong.
+ */
+using SampledTensorReader =
+  std::function<SampledTensorGrid(const std::string& path, const std::string& array)>;
+
+/**
+ * Install the reader of "sampled" definitions (the VTK layer installs one
+ * for VTK's formats when it loads: vtkRiemannMetric). Without one, such
+ * definitions are refused with a message that says so.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void SetSampledTensorReader(SampledTensorReader reader);
 
 /// The text of a metric file (refusing unreadable or absurdly large files).
 RIEMANNCOMMONMETRIC_EXPORT std::string ReadMetricDefinitionFile(const std::string& path);

@@ -1,0 +1,35 @@
+/**
+ * @file RiemannTensorImage.h
+ * @brief Tensor volumes as the metric core's grids (issue 17): a
+ * vtkImageData's tensor array, or a file of one, to a SampledTensorGrid.
+ * The reader behind {"type": "sampled"} (vtkRiemannMetric installs it) and
+ * vtkRiemannMetric::SetTensorData.
+ */
+#ifndef RiemannTensorImage_h
+#define RiemannTensorImage_h
+
+#include "SampledTensorField.h"
+
+#include <string>
+
+class vtkImageData;
+
+namespace riemann
+{
+/**
+ * The grid of `image`'s point-data tensor array `arrayName` ("": the
+ * active tensors, else the one array of 6 or 9 components): its origin,
+ * spacing and direction, and its tensors, 6 components in VTK's order (XX,
+ * YY, ZZ, XY, YZ, XZ) or 9 (row-major, which must be symmetric). Throws
+ * std::runtime_error saying what is missing or wrong.
+ */
+SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& arrayName);
+
+/**
+ * Read `path` (VTK XML image data .vti, or legacy .vtk structured points)
+ * and return TensorGridFromImage of it; errors name the file.
+ */
+SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string& arrayName);
+}
+
+#endif

@@ -1,0 +1,250 @@
+// {"type": "sampled"} and vtkRiemannMetric::SetTensorData: tensor volumes
+// as metrics, read with VTK's readers. Exact answers:
+// - an affine tensor field written to a .vti (rotated grid, unequal
+//   spacings) and read through a metric file naming it relatively is g
+//   itself inside the volume (the cubic B-spline reproduces affine fields),
+//   and the identity outside;
+// - "inverse" of a constant diffusion tensor is its inverse, "scale"
+//   multiplies, the same through a legacy .vtk file, a 9-component array
+//   and SetTensorData;
+// - bad data and bad definitions are refused with messages that say what
+//   and where: a missing file, a missing or misshapen array (listing the
+//   arrays), an asymmetric 9-component tensor, non-positive-definite
+//   samples (how many, the first's index, position and eigenvalue), an
+//   unknown format, "outside": "stop".
+#include "vtkRiemannMetric.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStructuredPointsWriter.h"
+#include "vtkXMLImageDataWriter.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+namespace
+{
+namespace fs = std::filesystem;
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+
+/// g = A + x_0 B0 + x_1 B1 + x_2 B2, positive definite near the origin.
+Mat3 Affine(const Vec3& x)
+{
+  Mat3 a, b0, b1, b2;
+  a << 3.0, 0.4, -0.2, 0.4, 2.5, 0.3, -0.2, 0.3, 2.0;
+  b0 << 0.2, 0.1, 0.0, 0.1, -0.1, 0.05, 0.0, 0.05, 0.15;
+  b1 << -0.1, 0.0, 0.08, 0.0, 0.2, -0.1, 0.08, -0.1, 0.1;
+  b2 << 0.05, -0.07, 0.0, -0.07, 0.1, 0.0, 0.0, 0.0, -0.2;
+  return a + x[0] * b0 + x[1] * b1 + x[2] * b2;
+}
+
+Mat3 Diffusion()
+{
+  Mat3 d;
+  d << 1.6, 1.4, 0.0, 1.4, 1.6, 0.0, 0.0, 0.0, 0.3;
+  return d;
+}
+
+Mat3 Rotation()
+{
+  return Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+}
+
+/// A 9 x 8 x 7 image over a rotated box, with point data "Tensors" (6 or 9
+/// components of `field`) and a scalar "FA".
+vtkSmartPointer<vtkImageData> TensorImage(
+  const std::function<Mat3(const Vec3&)>& field, int components = 6)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(9, 8, 7);
+  image->SetSpacing(0.25, 0.3, 0.35);
+  image->SetOrigin(-1.0, -1.0, -1.0);
+  const Mat3 r = Rotation();
+  image->SetDirectionMatrix(
+    r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2));
+  vtkNew<vtkDoubleArray> tensors;
+  tensors->SetName("Tensors");
+  tensors->SetNumberOfComponents(components);
+  tensors->SetNumberOfTuples(image->GetNumberOfPoints());
+  vtkNew<vtkDoubleArray> fa;
+  fa->SetName("FA");
+  fa->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    image->GetPoint(p, x);
+    const Mat3 g = field(Vec3(x[0], x[1], x[2]));
+    if (components == 6)
+    {
+      const double values[6] = { g(0, 0), g(1, 1), g(2, 2), g(0, 1), g(1, 2), g(0, 2) };
+      tensors->SetTypedTuple(p, values);
+    }
+    else
+    {
+      const double values[9] = { g(0, 0), g(0, 1), g(0, 2), g(1, 0), g(1, 1), g(1, 2), g(2, 0),
+        g(2, 1), g(2, 2) };
+      tensors->SetTypedTuple(p, values);
+    }
+    fa->SetValue(p, 0.5);
+  }
+  image->GetPointData()->AddArray(tensors);
+  image->GetPointData()->AddArray(fa);
+  return image;
+}
+
+fs::path Folder()
+{
+  const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
+  fs::path folder = fs::path(output ? output : fs::temp_directory_path().string()) / "sampled";
+  fs::create_directories(folder);
+  return folder;
+}
+
+void WriteVti(vtkImageData* image, const fs::path& path)
+{
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+}
+
+/// A metric file `name` next to the data holding `json`; returns its path.
+fs::path MetricFile(const std::string& name, const std::string& json)
+{
+  const fs::path path = Folder() / name;
+  std::ofstream(path) << json;
+  return path;
+}
+
+Mat3 MetricAt(vtkRiemannMetric* metric, const Vec3& x)
+{
+  double g[9];
+  EXPECT_TRUE(metric->EvaluateMetricTensor(x.data(), g));
+  return Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(g);
+}
+
+/// The definition's error, or "" if it was accepted.
+std::string ErrorOf(const std::string& json)
+{
+  vtkNew<vtkRiemannMetric> metric;
+  const fs::path path = MetricFile("bad.json", json);
+  return metric->SetDefinitionFile(path.c_str()) ? std::string() : metric->GetLastError();
+}
+} // namespace
+
+TEST(SampledMetric, AffineFieldFromAVtiFileIsReproduced)
+{
+  WriteVti(TensorImage(Affine), Folder() / "affine.vti");
+  vtkNew<vtkRiemannMetric> metric;
+  const fs::path path =
+    MetricFile("affine.json", R"({"type": "sampled", "file": "affine.vti", "array": "Tensors"})");
+  ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+  EXPECT_EQ(metric->GetFamilyName(), "tensor");
+  // Inside, one cell from the faces: g itself. Grid point (4, 4, 3) and around.
+  for (const Vec3& index : { Vec3(4, 4, 3), Vec3(2.3, 5.1, 1.7), Vec3(6.2, 1.5, 4.9) })
+  {
+    const Vec3 x = Vec3(-1, -1, -1) + Rotation() * index.cwiseProduct(Vec3(0.25, 0.3, 0.35));
+    EXPECT_LT((MetricAt(metric, x) - Affine(x)).cwiseAbs().maxCoeff(), 1e-12) << index.transpose();
+  }
+  EXPECT_EQ(MetricAt(metric, Vec3(5, 5, 5)), Mat3::Identity()); // outside: Euclidean
+  // SetTime re-reads the definition from the same folder.
+  EXPECT_TRUE(metric->SetTime(0.5)) << metric->GetLastError();
+}
+
+TEST(SampledMetric, InverseAndScaleThroughEveryFormat)
+{
+  const Mat3 expected = 2.0 * Diffusion().inverse();
+  const Vec3 x(-0.4, -0.2, 0.1);
+  // .vti, 6 components, default array (the only 6- or 9-component one).
+  WriteVti(TensorImage([](const Vec3&) { return Diffusion(); }), Folder() / "dti.vti");
+  vtkNew<vtkRiemannMetric> metric;
+  fs::path path = MetricFile(
+    "dti.json", R"({"type": "sampled", "file": "dti.vti", "inverse": true, "scale": 2})");
+  ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+  EXPECT_LT((MetricAt(metric, x) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  // Legacy .vtk, 9 components (it keeps no direction: an axis-aligned grid).
+  {
+    vtkSmartPointer<vtkImageData> image = TensorImage([](const Vec3&) { return Diffusion(); }, 9);
+    image->SetDirectionMatrix(1, 0, 0, 0, 1, 0, 0, 0, 1);
+    vtkNew<vtkStructuredPointsWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName((Folder() / "dti9.vtk").c_str());
+    writer->SetFileTypeToBinary();
+    ASSERT_EQ(writer->Write(), 1);
+  }
+  path = MetricFile("dti9.json",
+    R"({"type": "sampled", "file": "dti9.vtk", "array": "Tensors", "inverse": true, "scale": 2})");
+  ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+  EXPECT_LT((MetricAt(metric, x) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  // In memory.
+  ASSERT_TRUE(metric->SetTensorData(
+    TensorImage([](const Vec3&) { return Diffusion(); }), "Tensors", true, 2.0))
+    << metric->GetLastError();
+  EXPECT_LT((MetricAt(metric, x) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_TRUE(metric->SetTime(0.3));
+  EXPECT_LT((MetricAt(metric, x) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_NE(std::string(metric->GetDefinition()).find("\"inverse\": true"), std::string::npos);
+}
+
+TEST(SampledMetric, BadDataAndDefinitionsSayWhatAndWhere)
+{
+  WriteVti(TensorImage(Affine), Folder() / "affine.vti");
+  std::string error = ErrorOf(R"({"type": "sampled", "file": "missing.vti"})");
+  EXPECT_NE(error.find("metric.file: "), std::string::npos) << error;
+  EXPECT_NE(error.find("missing.vti: no such file"), std::string::npos) << error;
+
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "array": "D"})");
+  EXPECT_NE(error.find("no point-data array \"D\"; the arrays are Tensors (6 components), FA (1 "
+                       "component)"),
+    std::string::npos)
+    << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "array": "FA"})");
+  EXPECT_NE(error.find("array \"FA\" has 1 components; a tensor has 6"), std::string::npos)
+    << error;
+
+  {
+    vtkSmartPointer<vtkImageData> image = TensorImage(Affine, 9);
+    vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
+    tensors->SetComponent(10, 1, 7.0); // (0, 1) no longer equals (1, 0)
+    WriteVti(image, Folder() / "asymmetric.vti");
+  }
+  error = ErrorOf(R"({"type": "sampled", "file": "asymmetric.vti"})");
+  EXPECT_NE(error.find("the tensor of point 10 is not symmetric"), std::string::npos) << error;
+
+  {
+    vtkSmartPointer<vtkImageData> image = TensorImage(Affine);
+    vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
+    tensors->SetComponent(9 + 2 * 72, 2, -1.0); // point (0, 1, 2): ZZ = -1
+    WriteVti(image, Folder() / "indefinite.vti");
+  }
+  error = ErrorOf(R"({"type": "sampled", "file": "indefinite.vti"})");
+  EXPECT_NE(error.find("1 of 504 samples are not positive definite; the first is sample (0, 1, 2)"),
+    std::string::npos)
+    << error;
+  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "indefinite.vti", "repair": "clamp"})"), "");
+
+  std::ofstream(Folder() / "tensors.txt") << "not a volume";
+  error = ErrorOf(R"({"type": "sampled", "file": "tensors.txt"})");
+  EXPECT_NE(error.find("unknown tensor volume format \".txt\""), std::string::npos) << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "outside": "stop"})");
+  EXPECT_NE(error.find("metric.outside: "), std::string::npos) << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "scale": -1})");
+  EXPECT_NE(error.find("the scale must be a finite positive number"), std::string::npos) << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "inverse": "yes"})");
+  EXPECT_NE(error.find("metric.inverse: expected true or false"), std::string::npos) << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "smoothing": 2})");
+  EXPECT_NE(error.find("smoothing"), std::string::npos) << error;
+
+  vtkNew<vtkRiemannMetric> metric;
+  EXPECT_FALSE(metric->SetTensorData(nullptr, "Tensors"));
+  EXPECT_NE(std::string(metric->GetLastError()).find("tensor data: no image"), std::string::npos);
+}
