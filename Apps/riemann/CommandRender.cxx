@@ -448,9 +448,9 @@ vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
   }
   auto metric = vtkSmartPointer<vtkRiemannMetric>::New();
   const std::shared_ptr<const riemann::Scene> snapshot = scene->GetSceneSnapshot();
-  const bool ok = snapshot->ParsedMetric
-    ? metric->SetParsedDefinition(snapshot->MetricDefinition, snapshot->ParsedMetric)
-    : metric->SetDefinition(DefaultMetric);
+  const bool ok = snapshot->ParsedMetric ? metric->SetParsedDefinition(snapshot->MetricDefinition,
+                                             snapshot->ParsedMetric, snapshot->MetricDirectory)
+                                         : metric->SetDefinition(DefaultMetric);
   if (!ok)
   {
     throw Failure(std::string("bad metric in the scene: ") + metric->GetLastError());

@@ -111,15 +111,17 @@ bool vtkRiemannMetric::SetTensorData(
   return true;
 }
 
-bool vtkRiemannMetric::SetParsedDefinition(
-  const std::string& json, std::shared_ptr<const riemann::Metric> metricAtTimeZero)
+bool vtkRiemannMetric::SetParsedDefinition(const std::string& json,
+  std::shared_ptr<const riemann::Metric> metricAtTimeZero, const std::string& baseDirectory)
 {
   if (!metricAtTimeZero || this->Time != 0.0)
   {
-    return this->SetDefinition(json.c_str());
+    return this->SetDefinitionIn(json.c_str(), baseDirectory);
   }
   std::atomic_store(&this->Metric, metricAtTimeZero);
   this->Definition = json;
+  this->BaseDirectory = baseDirectory;
+  this->FromTensorData = false;
   this->LastError.clear();
   this->Modified();
   return true;

@@ -83,9 +83,12 @@ public:
    * Take a definition already parsed by the core at time 0 (a scene's metric:
    * riemann::Scene::ParsedMetric) instead of parsing `json` again; parses it
    * when the time is not 0. Same result and return value as SetDefinition.
+   * `baseDirectory`: where its relative data files are (the scene's
+   * riemann::Scene::MetricDirectory).
    */
-  VTK_WRAPEXCLUDE bool SetParsedDefinition(
-    const std::string& json, std::shared_ptr<const riemann::Metric> metricAtTimeZero);
+  VTK_WRAPEXCLUDE bool SetParsedDefinition(const std::string& json,
+    std::shared_ptr<const riemann::Metric> metricAtTimeZero,
+    const std::string& baseDirectory = std::string());
 
   /// The JSON text of the current definition ("" when none has been set).
   /**

@@ -175,6 +175,9 @@ struct Scene
   /// That metric at t = 0, parsed while the scene was checked (null if none),
   /// so that a user of the scene need not parse it again.
   std::shared_ptr<const Metric> ParsedMetric;
+  /// The folder that metric's relative data files ("sampled") are read from:
+  /// its file's, or the scene's for a metric written in the scene.
+  std::string MetricDirectory;
   /// Triangles of the mesh objects (shared: scenes are copied, meshes are big).
   std::vector<std::shared_ptr<const TriangleMesh>> Meshes;
 
@@ -212,7 +215,8 @@ RIEMANNRENDERINGCORE_EXPORT void SetMesh(
 RIEMANNRENDERINGCORE_EXPORT const std::shared_ptr<const TriangleMesh>& ObjectMesh(
   const Scene& scene, std::size_t object);
 
-/// Append a mesh object with `material` (its bounds: the mesh's, unless `keepBounds`); returns its index.
+/// Append a mesh object with `material` (its bounds: the mesh's, unless `keepBounds`); returns its
+/// index.
 RIEMANNRENDERINGCORE_EXPORT std::size_t AddMesh(Scene& scene,
   std::shared_ptr<const TriangleMesh> mesh, const Material& material, bool keepBounds = false);
 

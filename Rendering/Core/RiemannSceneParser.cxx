@@ -152,8 +152,9 @@ std::filesystem::path Resolve(const std::string& name, const std::string& baseDi
 // Parts of the scene
 //------------------------------------------------------------------------------
 std::string MetricText(const Json& value, const std::string& path, const std::string& baseDirectory,
-  std::shared_ptr<const Metric>& parsed)
+  std::shared_ptr<const Metric>& parsed, std::string& metricDirectory)
 {
+  metricDirectory = baseDirectory;
   std::string text;
   std::string where;
   if (value.is_string())
@@ -174,6 +175,7 @@ std::string MetricText(const Json& value, const std::string& path, const std::st
       Fail(path, e.what());
     }
     where = file.string() + ": ";
+    metricDirectory = file.parent_path().string();
   }
   else if (value.is_object())
   {
@@ -186,7 +188,7 @@ std::string MetricText(const Json& value, const std::string& path, const std::st
   // A bad metric is a bad scene: say so now, not when the renderer builds it.
   try
   {
-    parsed = ParseMetricDefinition(text);
+    parsed = ParseMetricDefinition(text, 0.0, metricDirectory);
   }
   catch (const MetricDefinitionError& e)
   {
@@ -417,8 +419,7 @@ void ParseGrid(const Json& object, const std::string& path, SceneObject& result,
     if (!(farthest <= MaximumLatticeIndex))
     {
       Fail(path + ".extent",
-        std::string("reaches more than ") +
-          std::to_string(static_cast<int>(MaximumLatticeIndex)) +
+        std::string("reaches more than ") + std::to_string(static_cast<int>(MaximumLatticeIndex)) +
           " spacings from the origin along " + AxisName(axis) +
           "; use a larger spacing or an extent nearer the origin");
     }
@@ -606,7 +607,7 @@ void ParseObjects(
       Fail(itemPath,
         std::string("more than ") + std::to_string(limits[type]) + " " + plural[type] +
           (type == static_cast<int>(ObjectType::Mesh) ? std::string(" (the CPU tracer's limit)")
-                                                     : std::string(" (the GPU pass's limit)")));
+                                                      : std::string(" (the GPU pass's limit)")));
     }
     scene.Objects.push_back(object);
   }
@@ -638,8 +639,8 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   Scene scene;
   if (root.contains("metric"))
   {
-    scene.MetricDefinition =
-      MetricText(root.at("metric"), path + ".metric", baseDirectory, scene.ParsedMetric);
+    scene.MetricDefinition = MetricText(root.at("metric"), path + ".metric", baseDirectory,
+      scene.ParsedMetric, scene.MetricDirectory);
   }
   if (root.contains("camera"))
   {
