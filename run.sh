@@ -35,8 +35,9 @@ XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 # ccache (when installed; step 1 installs it) for the three builds: GCC, the
 # sanitizer build and the fuzzer build that Fuzz.Build runs. Paths under the
 # checkout are hashed relative to it and the build folder is not hashed, so
-# a fresh clone elsewhere (what CI builds) reuses the objects of an earlier
-# build of the same sources.
+# a fresh clone elsewhere (what CI builds) reuses the library objects of an
+# earlier build of the same sources. The test executables are compiled again:
+# their RIEMANN_TEST_DATA_DIR define holds the checkout's absolute path.
 export CCACHE_BASEDIR="$ROOT" CCACHE_NOHASHDIR=1
 
 PACKAGES=(
