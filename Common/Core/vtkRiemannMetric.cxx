@@ -3,7 +3,6 @@
 #include "MetricDefinition.h"
 #include "RiemannTensorImage.h"
 #include "SampledTensorSamples.h"
-#include "TensorMetric.h"
 #include "vtkObjectFactory.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -73,19 +72,12 @@ bool vtkRiemannMetric::SetTensorData(
   std::shared_ptr<const riemann::Metric> metric;
   try
   {
-    riemann::SampledTensorGrid grid =
-      riemann::TensorGridFromImage(image, arrayName ? arrayName : "");
     riemann::SampledTensorOptions options;
     options.Inverse = inverse;
     options.Scale = scale;
     options.Repair = repair;
-    const std::string problem = riemann::PrepareTensorSamples(grid, options);
-    if (!problem.empty())
-    {
-      throw std::runtime_error(problem);
-    }
-    metric = std::make_shared<riemann::TensorMetric>(
-      std::make_shared<riemann::SampledTensorField>(std::move(grid)));
+    metric = riemann::MakeSampledTensorMetric(
+      riemann::TensorGridFromImage(image, arrayName ? arrayName : ""), options);
     const std::string invalid = metric->Validate();
     if (!invalid.empty())
     {

@@ -551,12 +551,14 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   {
     Fail(path + ".file", e.what());
   }
-  const std::string bad = PrepareTensorSamples(grid, options);
-  if (!bad.empty())
+  try
   {
-    Fail(path + ".file", file + ": " + bad);
+    return MakeSampledTensorMetric(std::move(grid), options);
   }
-  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid)));
+  catch (const std::invalid_argument& e)
+  {
+    Fail(path + ".file", file + ": " + e.what());
+  }
 }
 
 std::shared_ptr<const Metric> Build(const Json& root)

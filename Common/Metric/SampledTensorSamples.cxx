@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace riemann
 {
@@ -180,5 +181,16 @@ std::string PrepareTensorSamples(
     *report = found;
   }
   return {};
+}
+
+std::shared_ptr<const Metric> MakeSampledTensorMetric(
+  SampledTensorGrid grid, const SampledTensorOptions& options)
+{
+  const std::string problem = PrepareTensorSamples(grid, options);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid)));
 }
 } // namespace riemann

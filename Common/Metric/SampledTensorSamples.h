@@ -16,6 +16,7 @@
 
 #include "SampledTensorField.h"
 
+#include <memory>
 #include <string>
 
 namespace riemann
@@ -59,6 +60,15 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorReport
  */
 RIEMANNCOMMONMETRIC_EXPORT std::string PrepareTensorSamples(SampledTensorGrid& grid,
   const SampledTensorOptions& options, SampledTensorReport* report = nullptr);
+
+/**
+ * The metric of a tensor volume: PrepareTensorSamples, then TensorMetric
+ * over the SampledTensorField of the samples. What {"type": "sampled"} and
+ * vtkRiemannMetric::SetTensorData build. Throws std::invalid_argument with
+ * PrepareTensorSamples' message.
+ */
+RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> MakeSampledTensorMetric(
+  SampledTensorGrid grid, const SampledTensorOptions& options);
 } // namespace riemann
 
 #endif
