@@ -143,10 +143,10 @@ void RunConjugate(const ConjugateArguments& args)
   {
     throw Failure("--surface " + args.Surface + ": the surface must be a .vtp or .pvtp file", 2);
   }
-  const OutputLayout pointsLayout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout pointsLayout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
   const OutputLayout surfaceLayout = args.Surface.empty()
     ? OutputLayout::SingleFile
-    : ChooseOutputLayout("--surface", args.Surface, args.Gather);
+    : ChooseOutputLayout("--surface", args.Surface, args.Gather, "pvtp");
   double seed[3], axis[3];
   ParseVector3(args.Seed, "--seed", seed);
   ParseVector3(args.ConeAxis, "--cone-axis", axis);

@@ -89,10 +89,10 @@ void RunExpmap(const ExpmapArguments& args)
     throw Failure(
       "--wavefronts " + args.Wavefronts + ": the wavefronts must be a .vtp or .pvtp file", 2);
   }
-  const OutputLayout raysLayout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout raysLayout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
   const OutputLayout wavefrontsLayout = args.Wavefronts.empty()
     ? OutputLayout::SingleFile
-    : ChooseOutputLayout("--wavefronts", args.Wavefronts, args.Gather);
+    : ChooseOutputLayout("--wavefronts", args.Wavefronts, args.Gather, "pvtp");
   if (!args.Wavefronts.empty() && args.Radii.empty())
   {
     throw Failure("--wavefronts needs --radii R1,R2,...", 2);

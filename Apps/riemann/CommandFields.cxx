@@ -174,7 +174,7 @@ void RunFields(const FieldsArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vti, .pvti or .csv", 2);
   }
-  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvti");
   // Checked while parsing (the validators below); parsed here.
   double bounds[6];
   int dims[3];

@@ -209,7 +209,7 @@ void RunTrace(const TraceArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vtp, .pvtp or .csv", 2);
   }
-  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather);
+  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
   static const std::map<std::string, int> propagations = {
     { "forward", vtkRiemannGeodesicTracer::FORWARD },
     { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH }

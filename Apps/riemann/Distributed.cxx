@@ -523,7 +523,8 @@ std::vector<char> GatherBytes(const std::vector<char>& bytes)
   return all;
 }
 
-OutputLayout ChooseOutputLayout(const std::string& option, const std::string& path, bool gather)
+OutputLayout ChooseOutputLayout(const std::string& option, const std::string& path, bool gather,
+  const std::string& piecesExtension)
 {
   const std::string extension = Extension(path);
   if (extension == "pvtp" || extension == "pvti")
@@ -543,8 +544,7 @@ OutputLayout ChooseOutputLayout(const std::string& option, const std::string& pa
   if (!gather)
   {
     throw Failure(option + " " + path + ": " + std::to_string(NumberOfRanks()) +
-        " ranks write their pieces in VTK's parallel format (." +
-        (extension == "vti" || extension == "csv" ? std::string("pvti") : std::string("pvtp")) +
+        " ranks write their pieces in VTK's parallel format (." + piecesExtension +
         "), or add --gather for one file written by rank 0",
       2);
   }

@@ -134,9 +134,11 @@ enum class OutputLayout
 /**
  * The layout of output `path` (given with `option`): .pvti/.pvtp are pieces;
  * other files need one process or --gather under mpirun (a usage error
- * otherwise, which names both ways).
+ * otherwise, which names both ways: `piecesExtension`, the command's
+ * parallel format, "pvti" or "pvtp", and --gather).
  */
-OutputLayout ChooseOutputLayout(const std::string& option, const std::string& path, bool gather);
+OutputLayout ChooseOutputLayout(const std::string& option, const std::string& path, bool gather,
+  const std::string& piecesExtension);
 
 /// What the --output help of every command says of .pvti/.pvtp.
 constexpr const char* PiecesHelp =
