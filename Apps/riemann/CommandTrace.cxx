@@ -38,7 +38,7 @@ namespace cli
 namespace
 {
 /// The largest TerminationReason code (GeodesicTrace.h), for the summary's counts.
-constexpr int MaximumReason = HitSurface;
+constexpr int MaximumReason = OutOfData;
 
 struct TraceArguments
 {

@@ -66,16 +66,23 @@ bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& base
   return true;
 }
 
-bool vtkRiemannMetric::SetTensorData(
-  vtkImageData* image, const char* arrayName, bool inverse, double scale, bool repair)
+bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName, bool inverse,
+  double scale, bool repair, const char* outside)
 {
   std::shared_ptr<const riemann::Metric> metric;
+  const std::string outsideName = outside ? outside : "euclidean";
   try
   {
+    if (outsideName != "euclidean" && outsideName != "stop")
+    {
+      throw std::invalid_argument(
+        "outside: expected \"euclidean\" or \"stop\", got \"" + outsideName + "\"");
+    }
     riemann::SampledTensorOptions options;
     options.Inverse = inverse;
     options.Scale = scale;
     options.Repair = repair;
+    options.StopOutside = outsideName == "stop";
     metric = riemann::MakeSampledTensorMetric(
       riemann::TensorGridFromImage(image, arrayName ? arrayName : ""), options);
     const std::string invalid = metric->Validate();
@@ -94,7 +101,7 @@ bool vtkRiemannMetric::SetTensorData(
   definition << "{\"type\": \"sampled\", \"file\": \"(in memory)\", \"array\": \""
              << (arrayName ? arrayName : "") << "\", \"inverse\": " << (inverse ? "true" : "false")
              << ", \"scale\": " << scale << ", \"repair\": \"" << (repair ? "clamp" : "none")
-             << "\"}";
+             << "\", \"outside\": \"" << outsideName << "\"}";
   this->Definition = definition.str();
   this->BaseDirectory.clear();
   this->FromTensorData = true;

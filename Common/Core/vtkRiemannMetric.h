@@ -61,13 +61,15 @@ public:
    * direction, interpolated by the cubic B-spline of SampledTensorField;
    * `inverse` uses each tensor's inverse (diffusion tensors), `scale`
    * multiplies the metric, `repair` clamps eigenvalues that are not
-   * positive to a floor instead of refusing the data. Returns false, and
+   * positive to a floor instead of refusing the data, and `outside` is
+   * "euclidean" (g = I beyond the volume) or "stop" (geodesics and rays stop
+   * where they leave it, TerminationReason 10). Returns false, and
    * GetLastError() says why (how many samples are bad and where), on bad
    * data. The definition text then records the options; the data are not
    * re-read at SetTime (nothing of them is animated).
    */
   bool SetTensorData(vtkImageData* image, const char* arrayName, bool inverse = false,
-    double scale = 1.0, bool repair = false);
+    double scale = 1.0, bool repair = false, const char* outside = "euclidean");
 
   ///@{
   /**

@@ -25,6 +25,8 @@ const char* TerminationReasonName(int reason)
       return "degenerate metric";
     case HitSurface:
       return "hit a surface";
+    case OutOfData:
+      return "left the sampled data";
     default:
       return "unknown";
   }
@@ -80,9 +82,9 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
     path.SpeedDrift.push_back(drift);
   };
   record(0.0);
-  if (!InsideBounds(options, p))
+  if (const int stop = ReasonToStopAt(metric, options, p))
   {
-    path.Reason = OutOfDomain;
+    path.Reason = stop;
     return;
   }
 
@@ -131,9 +133,9 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
       drift = squaredSpeed / initialSquaredSpeed - 1.0;
     }
     record(drift);
-    if (!InsideBounds(options, y.head<3>()))
+    if (const int stop = ReasonToStopAt(metric, options, y.head<3>()))
     {
-      path.Reason = OutOfDomain;
+      path.Reason = stop;
       return;
     }
   }

@@ -25,7 +25,9 @@ enum TerminationReason : int
   OutOfSteps = 5,
   Stagnation = 6,
   DegenerateMetric = 8,
-  HitSurface = 9
+  HitSurface = 9,
+  /// Left the volume of a sampled metric with "outside": "stop" (Metric::InsideData).
+  OutOfData = 10
 };
 
 /// A short English name for a TerminationReason ("out of length", ...).
@@ -57,6 +59,19 @@ inline bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
   return !options.UseBounds ||
     (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
       x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
+}
+
+/**
+ * Why a geodesic at x stops before stepping on, or 0: OutOfDomain outside
+ * options.Bounds, OutOfData outside the metric's data.
+ */
+inline int ReasonToStopAt(const Metric& metric, const GeodesicOptions& options, const Vec3& x)
+{
+  if (!InsideBounds(options, x))
+  {
+    return OutOfDomain;
+  }
+  return metric.InsideData(x) ? 0 : OutOfData;
 }
 
 /**

@@ -24,6 +24,13 @@ void GlslBuilder::AddFunction(const std::string& code)
   this->Functions.push_back(code);
 }
 
+std::string GlslBuilder::AddTexture3D(const std::string& stem, GlslTexture3D texture)
+{
+  texture.Name = this->NewName(stem);
+  this->Textures.push_back(std::move(texture));
+  return this->Textures.back().Name;
+}
+
 std::string GlslBuilder::Source() const
 {
   std::ostringstream s;
@@ -32,6 +39,10 @@ std::string GlslBuilder::Source() const
   for (const GlslUniform& u : this->Uniforms)
   {
     s << "uniform " << u.Type << " " << u.Name << ";\n";
+  }
+  for (const GlslTexture3D& t : this->Textures)
+  {
+    s << "uniform sampler3D " << t.Name << ";\n";
   }
   for (const std::string& f : this->Functions)
   {
@@ -44,6 +55,11 @@ MetricGlsl EmitMetricGlsl(const Metric& metric)
 {
   GlslBuilder builder;
   metric.EmitGlsl(builder);
-  return { builder.Source(), builder.GetUniforms() };
+  const std::string& inside = builder.GetInsideDataFunction();
+  builder.AddFunction("bool rt_metric_inside(vec3 p)\n"
+                      "{\n"
+                      "  return " +
+    (inside.empty() ? std::string("true") : inside + "(p)") + ";\n}\n");
+  return { builder.Source(), builder.GetUniforms(), builder.GetTextures() };
 }
 } // namespace riemann

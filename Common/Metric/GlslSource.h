@@ -16,14 +16,21 @@
  *   bool rt_metric_tensor(vec3 p, out mat3 g);             // g_ij at p
  *   bool rt_metric_acceleration(vec3 p, vec3 v, out vec3 a); // -Gamma(v, v)
  *
- * both returning false where the metric is degenerate. GLSL mat3 values are
- * column-major: M[j][i] is row i, column j.
+ * both returning false where the metric is degenerate, and
+ *
+ *   bool rt_metric_inside(vec3 p);                         // Metric::InsideData
+ *
+ * Sampled metrics also read 3D float textures (GlslTexture3D), listed next to
+ * the uniforms: data, like them, so two volumes of the same kind share the
+ * program. GLSL mat3 values are column-major: M[j][i] is row i, column j.
  */
 #ifndef RiemannGlslSource_h
 #define RiemannGlslSource_h
 
 #include "RiemannCommonMetricExport.h"
 
+#include <array>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +47,22 @@ struct GlslUniform
   std::string Type;
   /// 1, 3 or 9 values (mat3: column-major, as glUniformMatrix3fv expects).
   std::vector<double> Values;
+};
+
+/**
+ * A sampler3D uniform of the generated source and the texels it reads: a
+ * float texture of Dimensions[0] x [1] x [2] texels of `Components` values
+ * each (x fastest), read with texelFetch (no filtering, edges clamped by the
+ * code). `Values` is shared with the metric that made it, so emitting the
+ * source every frame copies nothing, and a renderer uploads a texture again
+ * only when the pointer changes.
+ */
+struct GlslTexture3D
+{
+  std::string Name;
+  std::array<int, 3> Dimensions = { 0, 0, 0 };
+  int Components = 3;
+  std::shared_ptr<const std::vector<float>> Values;
 };
 
 /// A metric (or provider) that the GLSL backend cannot express; what() says which.
@@ -63,14 +86,25 @@ public:
     const std::string& stem, const std::string& type, std::vector<double> values);
   /// Append a function definition (callees must be added before callers).
   void AddFunction(const std::string& code);
+  /// Declare a sampler3D uniform (name from NewName) reading `texture`; returns the name.
+  std::string AddTexture3D(const std::string& stem, GlslTexture3D texture);
+  /**
+   * Name the function `bool NAME(vec3 p)` that says where the metric's data
+   * holds (Metric::InsideData); without one, rt_metric_inside is true.
+   */
+  void SetInsideDataFunction(const std::string& name) { this->InsideDataFunction = name; }
 
   /// Uniform declarations followed by the functions.
   std::string Source() const;
   const std::vector<GlslUniform>& GetUniforms() const { return this->Uniforms; }
+  const std::vector<GlslTexture3D>& GetTextures() const { return this->Textures; }
+  const std::string& GetInsideDataFunction() const { return this->InsideDataFunction; }
 
 private:
   int Counter = 0;
   std::vector<GlslUniform> Uniforms;
+  std::vector<GlslTexture3D> Textures;
+  std::string InsideDataFunction;
   std::vector<std::string> Functions;
 };
 
@@ -79,6 +113,7 @@ struct MetricGlsl
 {
   std::string Source;
   std::vector<GlslUniform> Uniforms;
+  std::vector<GlslTexture3D> Textures;
 };
 
 /// Emit the metric part of the shader; throws GlslUnsupportedError.

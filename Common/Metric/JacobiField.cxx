@@ -288,15 +288,9 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
   {
     return stoppedByVisitor;
   }
-  const auto inside = [&](const Vec3& x)
+  if (const int stop = ReasonToStopAt(metric, options, p))
   {
-    return !options.UseBounds ||
-      (x[0] >= options.Bounds[0] && x[0] <= options.Bounds[1] && x[1] >= options.Bounds[2] &&
-        x[1] <= options.Bounds[3] && x[2] >= options.Bounds[4] && x[2] <= options.Bounds[5]);
-  };
-  if (!inside(p))
-  {
-    return OutOfDomain;
+    return stop;
   }
 
   const std::vector<double> stops = jacobi_detail::LandingStops(landings, options.MaximumLength);
@@ -345,9 +339,9 @@ int TraceJacobiFields(const Metric& metric, const Vec3& p, const Vec3& direction
     {
       return stoppedByVisitor;
     }
-    if (!inside(y.segment<3>(0)))
+    if (const int stop = ReasonToStopAt(metric, options, y.segment<3>(0)))
     {
-      return OutOfDomain;
+      return stop;
     }
   }
 }

@@ -145,9 +145,9 @@ private:
     {
       return 0;
     }
-    if (!InsideBounds(options, seed.Point))
+    if (const int stop = ReasonToStopAt(this->TheMetric, options, seed.Point))
     {
-      return OutOfDomain;
+      return stop;
     }
     SetStateLane(this->State, l, y);
     this->Stepper.StartLane(l, options.Step, options.MinimumStep, options.MaximumStep);
@@ -240,9 +240,9 @@ private:
       {
         this->EndLane(l, 0);
       }
-      else if (!InsideBounds(this->Options, y.head<3>()))
+      else if (const int stop = ReasonToStopAt(this->TheMetric, this->Options, y.head<3>()))
       {
-        this->EndLane(l, OutOfDomain);
+        this->EndLane(l, stop);
       }
     }
   }

@@ -104,6 +104,19 @@ public:
   double InnerProduct(const Vec3& p, const Vec3& u, const Vec3& w) const;
 
   /**
+   * Whether p is where the metric's data holds. A sampled metric with
+   * "outside": "stop" is false beyond its volume, and geodesics and rays
+   * stop there (TerminationReason OutOfData); every other metric is defined
+   * everywhere (true). g stays defined beyond, so a step that crosses the
+   * boundary completes before the stop.
+   */
+  virtual bool InsideData(const Vec3& p) const
+  {
+    (void)p;
+    return true;
+  }
+
+  /**
    * Check the definition where its providers vary (and on a coarse grid over
    * [-5, 5]^3): g finite and positive definite, maps diffeomorphisms. Returns
    * an empty string when valid, else a message that says where and why not.

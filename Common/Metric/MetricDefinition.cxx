@@ -524,12 +524,14 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
     Fail(path + ".scale", problem);
   }
   const std::string outside = StringOr(root, "outside", path, "euclidean");
-  if (outside != "euclidean")
+  if (outside != "euclidean" && outside != "stop")
   {
     Fail(path + ".outside",
-      "expected \"euclidean\" (g = I outside the volume), got \"" + outside +
-        "\" (rays that stop at the volume's faces are not supported yet)");
+      "expected \"euclidean\" (g = I outside the volume) or \"stop\" (geodesics and rays "
+      "stop where they leave it), got \"" +
+        outside + "\"");
   }
+  options.StopOutside = outside == "stop";
   const SampledTensorReader& reader = InstalledSampledTensorReader();
   if (!reader)
   {

@@ -308,9 +308,9 @@ private:
     Vec6 y;
     y << p, lane.Sign * v;
     lane.Record(y, 0.0);
-    if (!InsideBounds(this->Options, p))
+    if (const int stop = ReasonToStopAt(this->TheMetric, this->Options, p))
     {
-      path.Reason = OutOfDomain;
+      path.Reason = stop;
       return false;
     }
     SetStateLane(this->State, l, y);
@@ -426,9 +426,9 @@ private:
         drift = squaredSpeed / this->Lanes[l].InitialSquaredSpeed - 1.0;
       }
       this->Lanes[l].Record(y, drift);
-      if (!InsideBounds(this->Options, y.head<3>()))
+      if (const int stop = ReasonToStopAt(this->TheMetric, this->Options, y.head<3>()))
       {
-        this->EndLane(l, OutOfDomain);
+        this->EndLane(l, stop);
       }
     }
   }

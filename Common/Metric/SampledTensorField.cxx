@@ -1,5 +1,7 @@
 #include "SampledTensorField.h"
 
+#include "GlslSource.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -122,8 +124,9 @@ std::string SampledTensorGrid::Check() const
   return {};
 }
 
-SampledTensorField::SampledTensorField(SampledTensorGrid grid)
+SampledTensorField::SampledTensorField(SampledTensorGrid grid, bool stopOutside)
   : Grid(std::move(grid))
+  , StopOutside(stopOutside)
 {
   const std::string problem = this->Grid.Check();
   if (!problem.empty())
@@ -163,15 +166,31 @@ bool SampledTensorField::EvaluateInGrid(
   const std::array<int, 3>& n = this->Grid.Dimensions;
   int cell[3];
   double t[3];
+  bool continued[3] = { false, false, false };
   for (int a = 0; a < 3; ++a)
   {
+    double inBox = u[a];
     if (!(u[a] >= 0.0 && u[a] <= n[a] - 1))
     {
-      return false;
+      if (!this->StopOutside || std::isnan(u[a]))
+      {
+        return false;
+      }
+      // The face's value, constant along this axis.
+      inBox = std::clamp(u[a], 0.0, n[a] - 1.0);
+      continued[a] = true;
     }
-    CellOf(u[a], n[a], cell[a], t[a]);
+    CellOf(inBox, n[a], cell[a], t[a]);
   }
-  const SplineWeights w[3] = { SplineWeights(t[0]), SplineWeights(t[1]), SplineWeights(t[2]) };
+  SplineWeights w[3] = { SplineWeights(t[0]), SplineWeights(t[1]), SplineWeights(t[2]) };
+  for (int a = 0; a < 3; ++a)
+  {
+    if (continued[a])
+    {
+      std::fill(std::begin(w[a].First), std::end(w[a].First), 0.0);
+      std::fill(std::begin(w[a].Second), std::end(w[a].Second), 0.0);
+    }
+  }
   // Sums over the 4 x 4 x 4 samples around the cell: the value, the three
   // first derivatives and the six second ones, each of six components.
   double value[6] = {};
@@ -310,8 +329,203 @@ std::string SampledTensorField::Describe() const
 {
   std::ostringstream text;
   text << "samples on a " << this->Grid.Dimensions[0] << "x" << this->Grid.Dimensions[1] << "x"
-       << this->Grid.Dimensions[2] << " grid (cubic B-spline)";
+       << this->Grid.Dimensions[2] << " grid (cubic B-spline"
+       << (this->StopOutside ? ", rays stop outside)" : ", Euclidean outside)");
   return text.str();
+}
+
+std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
+{
+  // Step 1: the samples as two float textures, once per field.
+  std::call_once(this->TexelsMade,
+    [this]()
+    {
+      const std::size_t n = static_cast<std::size_t>(this->Grid.NumberOfPoints());
+      auto diagonal = std::make_shared<std::vector<float>>(3 * n);
+      auto offDiagonal = std::make_shared<std::vector<float>>(3 * n);
+      const double* c = this->Grid.Components.data();
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        for (int m = 0; m < 3; ++m)
+        {
+          (*diagonal)[3 * i + m] = static_cast<float>(c[6 * i + m]);
+          (*offDiagonal)[3 * i + m] = static_cast<float>(c[6 * i + 3 + m]);
+        }
+      }
+      this->DiagonalTexels = diagonal;
+      this->OffDiagonalTexels = offDiagonal;
+    });
+  GlslTexture3D texture;
+  texture.Dimensions = this->Grid.Dimensions;
+  texture.Components = 3;
+  texture.Values = this->DiagonalTexels;
+  const std::string diagonal = builder.AddTexture3D("tensor_diagonal", texture);
+  texture.Values = this->OffDiagonalTexels;
+  const std::string offDiagonal = builder.AddTexture3D("tensor_off_diagonal", texture);
+
+  // Step 2: the grid's geometry as uniforms: u = W (p - origin), u in [0, n - 1].
+  const Vec3 last(
+    this->Grid.Dimensions[0] - 1.0, this->Grid.Dimensions[1] - 1.0, this->Grid.Dimensions[2] - 1.0);
+  const std::string origin = builder.AddUniform("grid_origin", "vec3",
+    std::vector<double>(this->Grid.Origin.data(), this->Grid.Origin.data() + 3));
+  const std::string toGrid = builder.AddUniform("world_to_grid", "mat3",
+    std::vector<double>(this->WorldToGrid.data(), this->WorldToGrid.data() + 9));
+  const std::string lastIndex =
+    builder.AddUniform("grid_last", "vec3", std::vector<double>(last.data(), last.data() + 3));
+  const std::string inBox =
+    "all(greaterThanEqual(u, vec3(0.0))) && all(lessThanEqual(u, " + lastIndex + "))";
+
+  // Step 3: where the data holds (only asked for when rays stop outside).
+  if (this->StopOutside)
+  {
+    const std::string inside = builder.NewName("sampled_inside");
+    builder.AddFunction("bool " + inside + "(vec3 p)\n{\n  vec3 u = " + toGrid + " * (p - " +
+      origin + ");\n  return " + inBox + ";\n}\n");
+    builder.SetInsideDataFunction(inside);
+  }
+
+  // Step 4: the spline, as EvaluateInGrid (order 1) and the chain rule of Evaluate().
+  const std::string weights = builder.NewName("bspline_weights");
+  builder.AddFunction("void " + weights +
+    "(float t, bool continued, out float w[4], out float dw[4])\n"
+    "{\n"
+    "  float s = 1.0 - t;\n"
+    "  float t2 = t * t;\n"
+    "  float t3 = t2 * t;\n"
+    "  w[0] = s * s * s / 6.0;\n"
+    "  w[1] = (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0;\n"
+    "  w[2] = (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0;\n"
+    "  w[3] = t3 / 6.0;\n"
+    "  // Constant along an axis beyond the faces (\"outside\": \"stop\").\n"
+    "  float k = continued ? 0.0 : 1.0;\n"
+    "  dw[0] = k * (-0.5 * s * s);\n"
+    "  dw[1] = k * (1.5 * t2 - 2.0 * t);\n"
+    "  dw[2] = k * (-1.5 * t2 + t + 0.5);\n"
+    "  dw[3] = k * (0.5 * t2);\n"
+    "}\n");
+  // One row of four samples along x, written out without a loop: with the
+  // 4 x 4 x 4 sum as nested loops, Mesa's llvmpipe ended rays of more than a
+  // few hundred RK4 steps early (the same shader with fewer steps matched the
+  // CPU), consistent with its loop limiter counting every inner iteration of
+  // the invocation. Straight-line code has no loop to limit. sums: value and
+  // x, y, z grid derivatives of the diagonal (XX, YY, ZZ) and off-diagonal
+  // (XY, YZ, XZ) components.
+  const std::string row = builder.NewName("sampled_row");
+  std::string rowCode = "void " + row +
+    "(int i0, int lastX, int jj, int kk, float wx[4], float dwx[4], float wyz, float dyz, "
+    "float ydz, inout vec3 sums[8])\n"
+    "{\n";
+  for (int a = 0; a < 4; ++a)
+  {
+    const std::string n = std::to_string(a);
+    rowCode += "  {\n"
+               "    ivec3 index = ivec3(clamp(i0 + " +
+      n +
+      ", 0, lastX), jj, kk);\n"
+      "    vec3 sd = texelFetch(" +
+      diagonal +
+      ", index, 0).rgb;\n"
+      "    vec3 so = texelFetch(" +
+      offDiagonal +
+      ", index, 0).rgb;\n"
+      "    float w = wx[" +
+      n + "] * wyz;\n    float wdx = dwx[" + n + "] * wyz;\n    float wdy = wx[" + n +
+      "] * dyz;\n    float wdz = wx[" + n +
+      "] * ydz;\n"
+      "    sums[0] += w * sd;\n"
+      "    sums[1] += w * so;\n"
+      "    sums[2] += wdx * sd;\n"
+      "    sums[3] += wdx * so;\n"
+      "    sums[4] += wdy * sd;\n"
+      "    sums[5] += wdy * so;\n"
+      "    sums[6] += wdz * sd;\n"
+      "    sums[7] += wdz * so;\n"
+      "  }\n";
+  }
+  builder.AddFunction(rowCode + "}\n");
+
+  const std::string name = builder.NewName("sampled_tensor");
+  // The symmetric matrix of diagonal d (XX, YY, ZZ) and off-diagonal o (XY, YZ, XZ).
+  const auto symmetric = [](const std::string& d, const std::string& o)
+  {
+    return "mat3(" + d + ".x, " + o + ".x, " + o + ".z, " + o + ".x, " + d + ".y, " + o + ".y, " +
+      o + ".z, " + o + ".y, " + d + ".z)";
+  };
+  // "euclidean" evaluates at the clamped point too, then puts g = I outside
+  // (one exit for every point).
+  const std::string euclideanOutside = this->StopOutside ? ""
+                                                         : "  if (any(continued))\n"
+                                                           "  {\n"
+                                                           "    g = mat3(1.0);\n"
+                                                           "    dg0 = mat3(0.0);\n"
+                                                           "    dg1 = mat3(0.0);\n"
+                                                           "    dg2 = mat3(0.0);\n"
+                                                           "  }\n";
+  std::string rows;
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int b = 0; b < 4; ++b)
+    {
+      const std::string sb = std::to_string(b);
+      const std::string sc = std::to_string(c);
+      rows += "  " + row + "(cell.x - 1, last.x, clamp(cell.y + " + std::to_string(b - 1) +
+        ", 0, last.y), clamp(cell.z + " + std::to_string(c - 1) + ", 0, last.z), wx, dwx, wy[" +
+        sb + "] * wz[" + sc + "], dwy[" + sb + "] * wz[" + sc + "], wy[" + sb + "] * dwz[" + sc +
+        "], sums);\n";
+    }
+  }
+  builder.AddFunction("void " + name +
+    "(vec3 p, out mat3 g, out mat3 dg0, out mat3 dg1, out mat3 dg2)\n"
+    "{\n"
+    "  vec3 u = " +
+    toGrid + " * (p - " + origin +
+    ");\n"
+    "  // Beyond a face: the face's value, constant along that axis.\n"
+    "  vec3 inBox = clamp(u, vec3(0.0), " +
+    lastIndex +
+    ");\n"
+    "  bvec3 continued = notEqual(u, inBox);\n"
+    "  u = inBox;\n"
+    "  ivec3 last = ivec3(" +
+    lastIndex +
+    " + 0.5);\n"
+    "  ivec3 cell = min(ivec3(floor(u)), last - 1);\n"
+    "  vec3 t = u - vec3(cell);\n"
+    "  float wx[4], wy[4], wz[4], dwx[4], dwy[4], dwz[4];\n"
+    "  " +
+    weights + "(t.x, continued.x, wx, dwx);\n  " + weights + "(t.y, continued.y, wy, dwy);\n  " +
+    weights +
+    "(t.z, continued.z, wz, dwz);\n"
+    "  vec3 sums[8] = vec3[8](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), "
+    "vec3(0.0), vec3(0.0), vec3(0.0));\n" +
+    rows +
+    "  // Symmetric from (XX, YY, ZZ) and (XY, YZ, XZ).\n"
+    "  g = " +
+    symmetric("sums[0]", "sums[1]") +
+    ";\n"
+    "  mat3 gu[3];\n"
+    "  gu[0] = " +
+    symmetric("sums[2]", "sums[3]") +
+    ";\n"
+    "  gu[1] = " +
+    symmetric("sums[4]", "sums[5]") +
+    ";\n"
+    "  gu[2] = " +
+    symmetric("sums[6]", "sums[7]") +
+    ";\n"
+    "  // d/dp_k = sum_a W(a, k) d/du_a; W(a, k) is " +
+    toGrid +
+    "[k][a].\n"
+    "  dg0 = " +
+    toGrid + "[0][0] * gu[0] + " + toGrid + "[0][1] * gu[1] + " + toGrid +
+    "[0][2] * gu[2];\n"
+    "  dg1 = " +
+    toGrid + "[1][0] * gu[0] + " + toGrid + "[1][1] * gu[1] + " + toGrid +
+    "[1][2] * gu[2];\n"
+    "  dg2 = " +
+    toGrid + "[2][0] * gu[0] + " + toGrid + "[2][1] * gu[1] + " + toGrid + "[2][2] * gu[2];\n" +
+    euclideanOutside + "}\n");
+  return name;
 }
 
 void SampledTensorField::AppendSamplePoints(std::vector<Vec3>& points) const

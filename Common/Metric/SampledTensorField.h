@@ -30,7 +30,11 @@
  * tensors (XX, YY, ZZ, XY, YZ, XZ), point index i + nx (j + ny k).
  *
  * Outside the grid's box (grid coordinates outside [0, n - 1] on an axis)
- * the field is Euclidean (g = I): Inside() says where the data holds.
+ * the field is Euclidean (g = I): Inside() says where the data holds. With
+ * `stopOutside` ("outside": "stop") the field is instead continued by its
+ * value on the box's faces (constant along the outward axes), and
+ * InsideData() is false there, so geodesics and rays stop at the first point
+ * beyond the faces (OutOfData); the step that crosses a face sees no jump.
  */
 #ifndef RiemannSampledTensorField_h
 #define RiemannSampledTensorField_h
@@ -38,6 +42,8 @@
 #include "TensorMetric.h"
 
 #include <array>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace riemann
@@ -70,15 +76,25 @@ class RIEMANNCOMMONMETRIC_EXPORT SampledTensorField : public TensorField
 {
 public:
   /// Throws std::invalid_argument with SampledTensorGrid::Check()'s message.
-  explicit SampledTensorField(SampledTensorGrid grid);
+  explicit SampledTensorField(SampledTensorGrid grid, bool stopOutside = false);
 
   void Evaluate(const Vec3& p, bool withDerivatives, Mat3& g, Mat3Stack& dg) const override;
   bool EvaluateSecond(
     const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   std::string Describe() const override;
+  /**
+   * The same spline in GLSL: the samples as two RGB float 3D textures
+   * (XX, YY, ZZ and XY, YZ, XZ), the 64 texels around the cell read with
+   * texelFetch and weighted in the shader, so the GPU's g is the CPU's up to
+   * float rounding. With StopOutside, also the InsideData test.
+   */
+  std::string EmitGlsl(GlslBuilder& builder) const override;
 
   /// Whether p is in the grid's box, where the samples define g.
   bool Inside(const Vec3& p) const;
+  /// Inside() when rays stop outside the box, else true (g = I is data too).
+  bool InsideData(const Vec3& p) const override { return !this->StopOutside || this->Inside(p); }
+  bool GetStopOutside() const { return this->StopOutside; }
   /// The grid coordinates (i, j, k as reals) of world point p.
   Vec3 GridCoordinates(const Vec3& p) const;
   const SampledTensorGrid& GetGrid() const { return this->Grid; }
@@ -88,11 +104,16 @@ protected:
 
 private:
   /// g and its derivatives in grid coordinates up to `order` (0, 1 or 2) at
-  /// grid point u; false outside the box.
+  /// grid point u; false outside the box, unless StopOutside continues it.
   bool EvaluateInGrid(
     const Vec3& u, int order, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const;
 
   SampledTensorGrid Grid;
+  bool StopOutside = false;
+  /// The samples in float for the GPU, made on the first EmitGlsl().
+  mutable std::once_flag TexelsMade;
+  mutable std::shared_ptr<const std::vector<float>> DiagonalTexels;
+  mutable std::shared_ptr<const std::vector<float>> OffDiagonalTexels;
   /// d(grid coordinate a)/d(world k) = Direction(k, a) / Spacing(a): row a.
   Mat3 WorldToGrid;
 };

@@ -191,6 +191,6 @@ std::shared_ptr<const Metric> MakeSampledTensorMetric(
   {
     throw std::invalid_argument(problem);
   }
-  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid)));
+  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid), options.StopOutside));
 }
 } // namespace riemann

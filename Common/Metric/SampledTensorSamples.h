@@ -32,6 +32,9 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
   bool Inverse = false;
   /// Multiply the metric by this (after the inverse).
   double Scale = 1.0;
+  /// "outside": "stop": geodesics and rays stop where they leave the volume
+  /// (else g = I there).
+  bool StopOutside = false;
 
   /// What is wrong with the options, or "".
   std::string Check() const;

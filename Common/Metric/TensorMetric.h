@@ -46,6 +46,12 @@ public:
   virtual LaneMask EvaluateSecondPacket(
     const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const;
   virtual std::string Describe() const = 0;
+  /// Where the field's data holds (Metric::InsideData); everywhere by default.
+  virtual bool InsideData(const Vec3& p) const
+  {
+    (void)p;
+    return true;
+  }
   virtual void AppendSamplePoints(std::vector<Vec3>& points) const { (void)points; }
   /**
    * Emit a GLSL function
@@ -90,6 +96,7 @@ public:
   LaneMask TensorSecondDerivativesPacket(
     const PacketVec3& x, PacketTensorJet& jet, LaneMask lanes) const override;
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
+  bool InsideData(const Vec3& p) const override { return this->Field->InsideData(p); }
   void EmitGlsl(GlslBuilder& builder) const override;
 
 protected:

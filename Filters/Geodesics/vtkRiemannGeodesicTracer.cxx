@@ -37,7 +37,9 @@ static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
     static_cast<int>(vtkRiemannGeodesicTracer::HIT_SURFACE) ==
       static_cast<int>(riemann::HitSurface) &&
     static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) ==
-      static_cast<int>(riemann::OutOfLength),
+      static_cast<int>(riemann::OutOfLength) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_DATA) ==
+      static_cast<int>(riemann::OutOfData),
   "termination codes must match the core");
 static_assert(vtkRiemannIntegrationSettings::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),

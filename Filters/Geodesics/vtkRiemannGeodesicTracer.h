@@ -27,7 +27,7 @@
  * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1 for the unit-speed velocity:
  * exactly 0 for an exact geodesic, so it monitors the integration error)
  * and cell data `SeedIds` and `ReasonForTermination` (vtkStreamTracer's codes
- * plus DEGENERATE_METRIC and HIT_SURFACE).
+ * plus DEGENERATE_METRIC, HIT_SURFACE and OUT_OF_DATA).
  *
  * With ComputeTransverseJacobian on, each geodesic is integrated together with
  * two Jacobi fields J_a (J_a(0) = 0, J_a'(0) g-orthonormal and g-orthogonal to
@@ -74,7 +74,7 @@ public:
     BOTH = 2
   };
 
-  /// vtkStreamTracer's ReasonForTermination codes (1-6) and ours (8, 9).
+  /// vtkStreamTracer's ReasonForTermination codes (1-6) and ours (8-10).
   enum ReasonForTermination
   {
     OUT_OF_DOMAIN = 1,
@@ -84,7 +84,9 @@ public:
     OUT_OF_STEPS = 5,
     STAGNATION = 6,
     DEGENERATE_METRIC = 8,
-    HIT_SURFACE = 9
+    HIT_SURFACE = 9,
+    /// Left a sampled metric's volume with "outside": "stop".
+    OUT_OF_DATA = 10
   };
 
   ///@{

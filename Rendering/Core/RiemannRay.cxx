@@ -34,6 +34,7 @@ void RayMarcher::Start(const Vec3& p, const Vec3& v)
   this->Termination = NotInitialized;
   this->Done = false;
   this->DidHit = false;
+  this->LeftData = false;
   this->LastHit = SceneHit();
 }
 
@@ -46,13 +47,19 @@ bool RayMarcher::Advance(const Metric& metric)
   }
   double taken = 0.0;
   const auto status = this->Stepper.Advance(metric, this->State, remaining, taken);
-  return this->EndStep(status, taken);
+  return this->EndStep(status, taken, metric.InsideData(this->State.head<3>()));
 }
 
 bool RayMarcher::BeginStep(double& remaining)
 {
   if (this->Done)
   {
+    return false;
+  }
+  if (this->LeftData)
+  {
+    this->Termination = OutOfData;
+    this->Done = true;
     return false;
   }
   remaining = this->Settings.MaximumLength - this->ArcLength;
@@ -73,7 +80,7 @@ bool RayMarcher::BeginStep(double& remaining)
   return true;
 }
 
-bool RayMarcher::EndStep(IntegrationStep::Status status, double taken)
+bool RayMarcher::EndStep(IntegrationStep::Status status, double taken, bool insideData)
 {
   this->Taken = taken;
   if (status != DormandPrince45::Accepted)
@@ -91,6 +98,7 @@ bool RayMarcher::EndStep(IntegrationStep::Status status, double taken)
     return false;
   }
   ++this->StepCount;
+  this->LeftData = !insideData;
   return true;
 }
 
@@ -151,7 +159,8 @@ void AdvanceRayPacket(const Metric& metric, RayMarcher* const* rays, int count, 
       rays[l]->State[i] = y.Component(i)[l];
     }
     advanced[l] = rays[l]->EndStep(
-      HasLane(stepped, l) ? IntegrationStep::Accepted : IntegrationStep::Degenerate, h[l]);
+      HasLane(stepped, l) ? IntegrationStep::Accepted : IntegrationStep::Degenerate, h[l],
+      metric.InsideData(rays[l]->State.head<3>()));
   }
 }
 

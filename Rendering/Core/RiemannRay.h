@@ -8,18 +8,20 @@
  * each step the segment from the previous point to the new one is intersected
  * with the scene (IntersectSegment); the ray stops at the first hit, at
  * MaximumLength (the last step is shortened to land on it), after
- * MaximumSteps, or where the metric degenerates. The GLSL in
+ * MaximumSteps, where the metric degenerates, or after the step that leaves
+ * a sampled metric's data ("outside": "stop"; its segment is still
+ * intersected, and the ray is shaded as escaped). The GLSL in
  * vtkRiemannRayTracePass follows the same rules.
  */
 #ifndef RiemannRay_h
 #define RiemannRay_h
 
 #include "RiemannRenderingCoreExport.h" // For export macro
-#include "RiemannSceneIntersection.h"
 #include "RiemannScene.h"
+#include "RiemannSceneIntersection.h"
 
 #include "GeodesicTrace.h" // For TerminationReason
-#include "Integrators.h" // For GeodesicStepper
+#include "Integrators.h"   // For GeodesicStepper
 #include "Metric.h"
 #include "PacketKernels.h" // For AdvanceRayPacket
 
@@ -38,7 +40,8 @@ struct RayPath
   double Length = 0.0;
   /// Velocity at the hit or at the end (dx/ds).
   Vec3 FinalVelocity = Vec3::Zero();
-  /// HitSurface, OutOfLength, OutOfSteps, DegenerateMetric, Stagnation, UnexpectedValue.
+  /// HitSurface, OutOfLength, OutOfSteps, OutOfData, DegenerateMetric, Stagnation,
+  /// UnexpectedValue.
   int Reason = NotInitialized;
   int Steps = 0;
 };
@@ -65,8 +68,8 @@ RIEMANNRENDERINGCORE_EXPORT void AdvanceRayPacket(
  * while (ray.Advance(metric))         // false: ended (length, steps, failure)
  * {
  *   SceneHit hit;
- *   if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit)) { ray.Hit(hit); break; }
- *   ray.Miss();
+ *   if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit)) { ray.Hit(hit); break;
+ * } ray.Miss();
  * }
  * @endcode
  */
@@ -110,8 +113,9 @@ private:
     const Metric& metric, RayMarcher* const* rays, int count, bool* advanced);
   /// Advance's checks before a step: false (and Done) when the ray ends.
   bool BeginStep(double& remaining);
-  /// Advance's checks after a step taken with `status`.
-  bool EndStep(IntegrationStep::Status status, double taken);
+  /// Advance's checks after a step taken with `status`; `insideData` is
+  /// Metric::InsideData at the new point (the next BeginStep ends the ray if not).
+  bool EndStep(IntegrationStep::Status status, double taken, bool insideData);
 
   RaySettings Settings;
   GeodesicStepper Stepper;
@@ -123,6 +127,8 @@ private:
   int Termination = NotInitialized;
   bool Done = true;
   bool DidHit = false;
+  /// The last step left the metric's data: the ray ends before the next one.
+  bool LeftData = false;
   SceneHit LastHit;
   Vec3 HitVelocity = Vec3::Zero();
 };
@@ -134,8 +140,8 @@ class MeshIntersector;
  * only the end state is kept (no allocation). With `meshes` (the scene's
  * triangle meshes in Embree) each segment is intersected with them too.
  */
-RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& scene,
-  const Vec3& p, const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
+RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p,
+  const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
   const MeshIntersector* meshes = nullptr);
 
 /**
@@ -143,9 +149,9 @@ RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& sce
  * paths[i], PacketWidth at a time through the packet engine
  * (AdvanceRayPacket): the same paths, to rounding. Single-threaded.
  */
-RIEMANNRENDERINGCORE_EXPORT void TraceRays(const Metric& metric, const Scene& scene,
-  const Vec3& p, const Vec3* v, int count, const RaySettings& settings, RayPath* paths,
-  bool recordPath = true, const MeshIntersector* meshes = nullptr);
+RIEMANNRENDERINGCORE_EXPORT void TraceRays(const Metric& metric, const Scene& scene, const Vec3& p,
+  const Vec3* v, int count, const RaySettings& settings, RayPath* paths, bool recordPath = true,
+  const MeshIntersector* meshes = nullptr);
 } // namespace riemann
 
 #endif

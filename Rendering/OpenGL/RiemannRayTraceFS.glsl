@@ -162,6 +162,11 @@ int rt_trace(vec3 x, vec3 v, out vec3 hitPosition, out vec3 hitNormal, out int h
       return RT_RAY_HIT;
     }
     s += taken;
+    if (!rt_metric_inside(x))
+    {
+      // Left a sampled metric's data ("outside": "stop"): escaped, as on the CPU.
+      break;
+    }
   }
   hitPosition = x;
   arcLength = s;

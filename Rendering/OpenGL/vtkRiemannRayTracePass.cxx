@@ -8,12 +8,13 @@
 #include "GlslSource.h"
 #include "Metric.h"
 #include "ObserverCamera.h"
-#include "RiemannImageIO.h"
 #include "RiemannActorMesh.h"
+#include "RiemannImageIO.h"
 #include "RiemannMeshTextures.h"
+#include "RiemannMetricTextures.h"
 #include "RiemannScene.h"
-#include "RiemannShading.h"
 #include "RiemannSceneUniforms.h"
+#include "RiemannShading.h"
 
 // GLSL embedded at build time (vtk_encode_string).
 #include "RiemannRayTraceFS.h"
@@ -235,6 +236,8 @@ public:
 
   /// The scene's triangle meshes as buffer textures.
   riemann::MeshTextures Meshes;
+  /// A sampled metric's tensor volume as 3D textures.
+  riemann::MetricTextures MetricVolumes;
   /// The renderer's actors as one mesh (UseRendererProps).
   riemann::RendererActorMeshes Actors;
 
@@ -329,6 +332,7 @@ public:
     this->EnvironmentPath.clear();
     this->EnvironmentError.clear();
     this->Meshes.Release(window);
+    this->MetricVolumes.Release(window);
     if (this->HitFramebuffer)
     {
       this->HitFramebuffer->ReleaseGraphicsResources(window);
@@ -455,13 +459,15 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
     return;
   }
   vtkShaderProgram* program = this->ReadyProgram(frame);
-  if (!program || !this->SetMetricUniforms(program, frame))
+  if (!program || !this->SetMetricUniforms(program, frame) ||
+    !this->ActivateMetricTextures(program, frame))
   {
     return;
   }
   this->SetSceneUniforms(program, frame);
   if (!this->ActivateMeshes(program, frame))
   {
+    this->Internals->MetricVolumes.Deactivate();
     return;
   }
   this->SetObserverUniforms(program, frame);
@@ -482,6 +488,7 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
     this->Internals->IdleEnvironmentUnit = -1;
   }
   this->Internals->Meshes.Deactivate();
+  this->Internals->MetricVolumes.Deactivate();
   this->LastError.clear();
 }
 
@@ -602,8 +609,8 @@ bool vtkRiemannRayTracePass::AddRendererActors(FrameState& frame)
   }
   catch (const std::exception& e)
   {
-    this->Fail(std::string("cannot draw the renderer's actors: ") + e.what(), frame.Window,
-      frame.Viewport);
+    this->Fail(
+      std::string("cannot draw the renderer's actors: ") + e.what(), frame.Window, frame.Viewport);
     return false;
   }
   this->NumberOfRenderedProps = this->Internals->Actors.GetNumberOfActors();
@@ -678,7 +685,8 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
   }
   found->second.LastUse = ++internals.UseCounter;
   frame.Quad = found->second.Quad.get();
-  vtkShaderProgram* program = frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
+  vtkShaderProgram* program =
+    frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
   if (!program)
   {
     this->Fail("the ray-tracing shader could not be bound", frame.Window, frame.Viewport);
@@ -784,8 +792,7 @@ void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const F
 }
 
 //------------------------------------------------------------------------------
-void vtkRiemannRayTracePass::SetObserverUniforms(
-  vtkShaderProgram* program, const FrameState& frame)
+void vtkRiemannRayTracePass::SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame)
 {
   // The g-orthonormal frame at the eye.
   float v3[3];
@@ -832,14 +839,33 @@ bool vtkRiemannRayTracePass::ActivateMeshes(vtkShaderProgram* program, const Fra
   return true;
 }
 
+bool vtkRiemannRayTracePass::ActivateMetricTextures(
+  vtkShaderProgram* program, const FrameState& frame)
+{
+  // Uploaded when the volume changes, not per frame.
+  riemann::MetricTextures& volumes = this->Internals->MetricVolumes;
+  std::string error;
+  if (!volumes.Update(frame.MetricGlsl.Textures, frame.Window, error))
+  {
+    this->Fail("cannot draw the sampled metric: " + error, frame.Window, frame.Viewport);
+    return false;
+  }
+  volumes.Activate(program);
+  return true;
+}
+
+int vtkRiemannRayTracePass::GetNumberOfMetricTextureUploads() const
+{
+  return this->Internals->MetricVolumes.GetNumberOfUploads();
+}
+
 int vtkRiemannRayTracePass::GetNumberOfMeshBuilds() const
 {
   return this->Internals->Meshes.GetNumberOfBuilds();
 }
 
 //------------------------------------------------------------------------------
-bool vtkRiemannRayTracePass::ActivateEnvironment(
-  vtkShaderProgram* program, const FrameState& frame)
+bool vtkRiemannRayTracePass::ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame)
 {
   vtkInternals& internals = *this->Internals;
   const std::string& path = frame.Scene->EnvironmentImage;

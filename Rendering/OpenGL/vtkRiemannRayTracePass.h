@@ -217,6 +217,9 @@ public:
   /// Hierarchies of the scene's meshes this pass has built and uploaded (one per new set of meshes).
   int GetNumberOfMeshBuilds() const;
 
+  /// 3D textures of sampled metrics this pass has uploaded (two per new tensor volume).
+  int GetNumberOfMetricTextureUploads() const;
+
   ///@{
   /**
    * GLSL inserted after the metric, scene and integrator functions and
@@ -276,6 +279,7 @@ private:
   bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
   void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
   void SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame);
+  bool ActivateMetricTextures(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateMeshes(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame);
   void DrawView(vtkShaderProgram* program, const FrameState& frame);

@@ -11,7 +11,7 @@
 //   and where: a missing file, a missing or misshapen array (listing the
 //   arrays), an asymmetric 9-component tensor, non-positive-definite
 //   samples (how many, the first's index, position and eigenvalue), an
-//   unknown format, "outside": "stop".
+//   unknown format, an unknown "outside".
 #include "vtkRiemannMetric.h"
 
 #include "vtkDoubleArray.h"
@@ -235,8 +235,9 @@ TEST(SampledMetric, BadDataAndDefinitionsSayWhatAndWhere)
   std::ofstream(Folder() / "tensors.txt") << "not a volume";
   error = ErrorOf(R"({"type": "sampled", "file": "tensors.txt"})");
   EXPECT_NE(error.find("unknown tensor volume format \".txt\""), std::string::npos) << error;
-  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "outside": "stop"})");
-  EXPECT_NE(error.find("metric.outside: "), std::string::npos) << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "outside": "wrap"})");
+  EXPECT_NE(error.find("metric.outside: expected \"euclidean\""), std::string::npos) << error;
+  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "affine.vti", "outside": "stop"})"), "");
   error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "scale": -1})");
   EXPECT_NE(error.find("the scale must be a finite positive number"), std::string::npos) << error;
   error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "inverse": "yes"})");

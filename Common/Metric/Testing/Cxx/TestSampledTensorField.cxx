@@ -11,10 +11,17 @@
 //   divides the error of g and of dg by 4 (observed order 2 +- 0.25);
 // - outside the grid's box the field is Euclidean; malformed grids are
 //   refused with a message that says what is wrong;
+// - with "outside": "stop" the field beyond a face is the face's value,
+//   constant outward, and every tracer (TraceGeodesic, the packet engine,
+//   the Jacobi traces, scalar and packet) stops at its first point beyond the
+//   faces with OutOfData, each point before it inside;
 // - through TensorMetric, the Christoffel symbols of a sampled affine field
 //   are those of the field itself.
 // PrepareTensorSamples: inverse and scale exact; bad samples counted and the
 // first named (index, position, eigenvalue); repair clamps to the floor.
+#include "GeodesicTrace.h"
+#include "JacobiField.h"
+#include "PacketTrace.h"
 #include "SampledTensorField.h"
 #include "SampledTensorSamples.h"
 
@@ -293,6 +300,93 @@ TEST(SampledTensorField, OutsideTheGridIsEuclidean)
     EXPECT_EQ(dg[k], Mat3::Zero());
     EXPECT_EQ(d2g[k][1], Mat3::Zero());
   }
+}
+
+TEST(SampledTensorField, StopOutsideContinuesTheFacesAndEndsEveryTracer)
+{
+  // The smooth field on [-1, 1]^3, rays stopping outside it.
+  const auto field = [](const Vec3& x) { return SmoothField(x); };
+  riemann::SampledTensorOptions options;
+  options.StopOutside = true;
+  const auto metric =
+    riemann::MakeSampledTensorMetric(Sample(field, 9, Vec3::Zero(), Vec3(2, 2, 2)), options);
+  const SampledTensorField sampled(Sample(field, 9, Vec3::Zero(), Vec3(2, 2, 2)), true);
+  // Beyond the face x = 1: the face's value, constant along x.
+  Mat3 face;
+  Mat3 beyond;
+  Mat3Stack faceDg;
+  Mat3Stack beyondDg;
+  sampled.Evaluate(Vec3(1.0, 0.3, -0.2), true, face, faceDg);
+  sampled.Evaluate(Vec3(1.7, 0.3, -0.2), true, beyond, beyondDg);
+  EXPECT_EQ(face, beyond);
+  EXPECT_EQ(beyondDg[0], Mat3::Zero());
+  EXPECT_EQ(faceDg[1], beyondDg[1]);
+  EXPECT_TRUE(sampled.InsideData(Vec3(1.0, 0.3, -0.2)));
+  EXPECT_FALSE(sampled.InsideData(Vec3(1.0001, 0.3, -0.2)));
+  EXPECT_TRUE(metric->InsideData(Vec3(0.2, 0.3, -0.2)));
+  EXPECT_FALSE(metric->InsideData(Vec3(0.2, 0.3, -1.2)));
+
+  riemann::GeodesicOptions options2;
+  options2.Step = 0.01;
+  options2.MaximumLength = 20.0;
+  const Vec3 start(0.1, -0.2, 0.3);
+  const Vec3 directions[3] = { Vec3(1, 0.2, 0), Vec3(-0.3, 1, 0.5), Vec3(0.1, -0.4, -1) };
+  // TraceGeodesic and the packet engine.
+  std::vector<riemann::GeodesicSeed> seeds;
+  for (const Vec3& d : directions)
+  {
+    riemann::GeodesicSeed seed;
+    seed.Point = start;
+    ASSERT_TRUE(riemann::UnitSpeedVelocity(*metric, start, d, seed.Velocity));
+    seeds.push_back(seed);
+  }
+  std::vector<riemann::GeodesicPath> packet(seeds.size());
+  riemann::TraceGeodesics(*metric, seeds.data(), seeds.size(), options2, packet.data());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+  {
+    SCOPED_TRACE(i);
+    riemann::GeodesicPath path;
+    riemann::TraceGeodesic(*metric, start, seeds[i].Velocity, options2, path);
+    for (const riemann::GeodesicPath* p : { &path, &packet[i] })
+    {
+      EXPECT_EQ(p->Reason, riemann::OutOfData);
+      ASSERT_GE(p->Points.size(), 2u);
+      EXPECT_FALSE(sampled.Inside(p->Points.back()));
+      for (std::size_t k = 0; k + 1 < p->Points.size(); ++k)
+      {
+        ASSERT_TRUE(sampled.Inside(p->Points[k])) << k;
+      }
+      // The last step crossed a face: less than one step of arc length out.
+      EXPECT_LT(p->ArcLength.back(), options2.MaximumLength);
+    }
+    EXPECT_EQ(path.Points.size(), packet[i].Points.size());
+  }
+  // The Jacobi traces, scalar and packet.
+  std::vector<riemann::JacobiSeed> jacobiSeeds;
+  for (const Vec3& d : directions)
+  {
+    riemann::JacobiSeed seed;
+    seed.Point = start;
+    seed.Direction = d;
+    jacobiSeeds.push_back(seed);
+  }
+  std::vector<riemann::JacobiTrace> traces(jacobiSeeds.size());
+  riemann::TraceJacobiFields(
+    *metric, jacobiSeeds.data(), jacobiSeeds.size(), options2, traces.data());
+  for (std::size_t i = 0; i < jacobiSeeds.size(); ++i)
+  {
+    SCOPED_TRACE(i);
+    riemann::JacobiTrace scalar;
+    riemann::TraceJacobiFields(*metric, start, directions[i], options2, scalar);
+    for (const riemann::JacobiTrace* t : { &scalar, &traces[i] })
+    {
+      EXPECT_EQ(t->Reason, riemann::OutOfData);
+      ASSERT_GE(t->Samples.size(), 2u);
+      EXPECT_FALSE(sampled.Inside(t->Samples.back().Point));
+      EXPECT_TRUE(sampled.Inside(t->Samples[t->Samples.size() - 2].Point));
+    }
+  }
+  EXPECT_STREQ(riemann::TerminationReasonName(riemann::OutOfData), "left the sampled data");
 }
 
 TEST(SampledTensorField, MalformedGridsAreRefusedWithWhatIsWrong)
