@@ -1,5 +1,7 @@
 #include "RiemannTensorImage.h"
 
+#include "RiemannMedicalTensorImages.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
@@ -160,10 +162,37 @@ SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string&
   {
     throw std::runtime_error(path + ": no such file");
   }
+  const std::string lower = vtksys::SystemTools::LowerCase(path);
+  const auto endsWith = [&lower](const std::string& end)
+  {
+    return lower.size() >= end.size() &&
+      lower.compare(lower.size() - end.size(), end.size(), end) == 0;
+  };
   const std::string extension =
     vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
   vtkSmartPointer<vtkImageData> image;
-  if (extension == ".vti")
+  std::string array = arrayName;
+  const bool nifti = endsWith(".nii") || endsWith(".nii.gz");
+  const bool nrrd = endsWith(".nrrd") || endsWith(".nhdr");
+  if (nifti || nrrd)
+  {
+    // One tensor per voxel, named by the reader: there is no array to choose.
+    if (!array.empty() && array != "Tensors")
+    {
+      throw std::runtime_error(path + ": a " + (nifti ? "NIfTI" : "NRRD") +
+        " file holds one tensor volume; leave \"array\" out (got \"" + array + "\")");
+    }
+    try
+    {
+      image = nifti ? ReadNiftiTensorImage(path) : ReadNrrdTensorImage(path);
+    }
+    catch (const std::runtime_error& e)
+    {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+    array = "Tensors";
+  }
+  else if (extension == ".vti")
   {
     vtkNew<vtkXMLImageDataReader> reader;
     if (!reader->CanReadFile(path.c_str()))
@@ -187,8 +216,8 @@ SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string&
   }
   else
   {
-    throw std::runtime_error(
-      path + ": unknown tensor volume format \"" + extension + "\" (read: .vti, .vtk)");
+    throw std::runtime_error(path + ": unknown tensor volume format \"" + extension +
+      "\" (read: .vti, .vtk, .nii, .nii.gz, .nrrd, .nhdr)");
   }
   if (!image || image->GetNumberOfPoints() == 0)
   {
@@ -196,7 +225,7 @@ SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string&
   }
   try
   {
-    return TensorGridFromImage(image, arrayName);
+    return TensorGridFromImage(image, array);
   }
   catch (const std::runtime_error& e)
   {

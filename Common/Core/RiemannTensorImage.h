@@ -26,7 +26,8 @@ namespace riemann
 SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& arrayName);
 
 /**
- * Read `path` (VTK XML image data .vti, or legacy .vtk structured points)
+ * Read `path` (VTK XML image data .vti, legacy .vtk structured points,
+ * NIfTI .nii/.nii.gz or NRRD .nrrd/.nhdr: RiemannMedicalTensorImages.h)
  * and return TensorGridFromImage of it; errors name the file.
  */
 SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string& arrayName);

@@ -11,12 +11,21 @@
 //   and where: a missing file, a missing or misshapen array (listing the
 //   arrays), an asymmetric 9-component tensor, non-positive-definite
 //   samples (how many, the first's index, position and eigenvalue), an
-//   unknown format, an unknown "outside".
+//   unknown format, an unknown "outside";
+// - NIfTI and NRRD: the affine field in a NIfTI file with intent SYMMATRIX
+//   (NIfTI's lower-triangle order) placed by a rotated q-form is g itself
+//   in world coordinates; a 4D FSL-style file (six volumes, dtifit's order,
+//   scl_slope 2) and raw NRRD files (Teem's order, 6 and 7 components) give the
+//   inverse of their diffusion tensor; wrong component counts are refused.
 #include "vtkRiemannMetric.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNIFTIImageHeader.h"
+#include "vtkNIFTIImageWriter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkStructuredPointsWriter.h"
@@ -25,6 +34,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -248,4 +258,129 @@ TEST(SampledMetric, BadDataAndDefinitionsSayWhatAndWhere)
   vtkNew<vtkRiemannMetric> metric;
   EXPECT_FALSE(metric->SetTensorData(nullptr, "Tensors"));
   EXPECT_NE(std::string(metric->GetLastError()).find("tensor data: no image"), std::string::npos);
+}
+
+namespace
+{
+/// A 9 x 8 x 7 voxel image at the origin (VTK axes), each voxel's tuple the
+/// `order` components (indices into the row-major 3 x 3) of `field` at
+/// world point `place`(voxel position).
+vtkSmartPointer<vtkImageData> VoxelImage(const std::function<Mat3(const Vec3&)>& field,
+  const std::vector<int>& order, const std::function<Vec3(const Vec3&)>& place, double scale = 1.0)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(9, 8, 7);
+  image->SetSpacing(0.25, 0.3, 0.35);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("NIFTI");
+  values->SetNumberOfComponents(static_cast<int>(order.size()));
+  values->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    image->GetPoint(p, x);
+    const Mat3 g = field(place(Vec3(x[0], x[1], x[2])));
+    for (std::size_t c = 0; c < order.size(); ++c)
+    {
+      values->SetComponent(p, static_cast<int>(c), g(order[c] / 3, order[c] % 3) / scale);
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+} // namespace
+
+TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
+{
+  // NIfTI, intent SYMMATRIX (XX XY YY XZ YZ ZZ), a rotated q-form with an
+  // offset: g at world points is the affine field there.
+  const Mat3 r = Rotation();
+  const Vec3 offset(-1.0, -0.5, -1.0);
+  const auto world = [&](const Vec3& voxel) -> Vec3 { return r * voxel + offset; };
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(VoxelImage(Affine, { 0, 3, 4, 6, 7, 8 }, world));
+    vtkNew<vtkMatrix4x4> qform;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        qform->SetElement(i, j, r(i, j));
+      }
+      qform->SetElement(i, 3, offset[i]);
+    }
+    writer->SetQFormMatrix(qform);
+    vtkNew<vtkNIFTIImageHeader> header;
+    header->SetIntentCode(vtkNIFTIImageHeader::IntentSymMatrix);
+    writer->SetNIFTIHeader(header);
+    writer->SetFileName((Folder() / "affine.nii.gz").c_str());
+    writer->Write();
+  }
+  vtkNew<vtkRiemannMetric> metric;
+  fs::path path = MetricFile("nifti.json", R"({"type": "sampled", "file": "affine.nii.gz"})");
+  ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+  for (const Vec3& voxel : { Vec3(1.0, 1.2, 0.9), Vec3(0.6, 1.5, 1.4), Vec3(1.4, 0.7, 0.8) })
+  {
+    const Vec3 x = world(voxel);
+    // Float samples: g to float rounding.
+    EXPECT_LT((MetricAt(metric, x) - Affine(x)).cwiseAbs().maxCoeff(), 2e-6) << voxel.transpose();
+  }
+
+  // FSL dtifit: six volumes (XX XY XZ YY YZ ZZ), values stored halved with
+  // scl_slope 2; the metric is the inverse of D.
+  const Mat3 expected = Diffusion().inverse();
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(VoxelImage([](const Vec3&) { return Diffusion(); }, { 0, 1, 2, 4, 5, 8 },
+      [](const Vec3& v) { return v; }, 2.0));
+    writer->SetTimeDimension(6);
+    writer->SetRescaleSlope(2.0);
+    writer->SetFileName((Folder() / "dtifit_tensor.nii").c_str());
+    writer->Write();
+  }
+  path =
+    MetricFile("fsl.json", R"({"type": "sampled", "file": "dtifit_tensor.nii", "inverse": true})");
+  ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+  EXPECT_LT((MetricAt(metric, Vec3(0.8, 0.9, 1.0)) - expected).cwiseAbs().maxCoeff(), 1e-5);
+
+  // NRRD, Teem's order, raw doubles: 6 components, and 7 with a confidence
+  // first. (VTK 9.1's vtkNrrdReader misreads ASCII-encoded doubles.)
+  for (const bool masked : { false, true })
+  {
+    SCOPED_TRACE(masked ? "masked" : "6 components");
+    const std::uint16_t probe = 1;
+    const bool little = *reinterpret_cast<const unsigned char*>(&probe) == 1;
+    std::ofstream nrrd(Folder() / "dti.nrrd", std::ios::binary);
+    nrrd << "NRRD0004\ntype: double\ndimension: 4\nsizes: " << (masked ? 7 : 6)
+         << " 3 3 3\nspacings: nan 0.5 0.5 0.5\nkinds: "
+         << (masked ? "3D-masked-symmetric-matrix" : "3D-symmetric-matrix")
+         << " domain domain domain\nendian: " << (little ? "little" : "big")
+         << "\nencoding: raw\n\n";
+    const Mat3 d = Diffusion();
+    for (int voxel = 0; voxel < 27; ++voxel)
+    {
+      std::vector<double> tuple = { d(0, 0), d(0, 1), d(0, 2), d(1, 1), d(1, 2), d(2, 2) };
+      if (masked)
+      {
+        tuple.insert(tuple.begin(), 1.0);
+      }
+      nrrd.write(reinterpret_cast<const char*>(tuple.data()),
+        static_cast<std::streamsize>(tuple.size() * sizeof(double)));
+    }
+    nrrd.close();
+    path = MetricFile("nrrd.json", R"({"type": "sampled", "file": "dti.nrrd", "inverse": true})");
+    ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+    EXPECT_LT((MetricAt(metric, Vec3(0.4, 0.5, 0.6)) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  }
+
+  // A NIfTI image of 4 values per voxel is not a tensor volume.
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(VoxelImage(Affine, { 0, 1, 2, 3 }, [](const Vec3& v) { return v; }));
+    writer->SetFileName((Folder() / "four.nii").c_str());
+    writer->Write();
+  }
+  const std::string error = ErrorOf(R"({"type": "sampled", "file": "four.nii"})");
+  EXPECT_NE(error.find("four.nii: the NIfTI image has 4 values per voxel"), std::string::npos)
+    << error;
 }

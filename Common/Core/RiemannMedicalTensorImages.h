@@ -1,0 +1,47 @@
+/**
+ * @file RiemannMedicalTensorImages.h
+ * @brief Diffusion-tensor volumes in the formats medical imaging writes them
+ * (issue 17): NIfTI-1 (.nii, .nii.gz, through vtkNIFTIImageReader) and NRRD
+ * (.nrrd, .nhdr, through vtkNrrdReader), as a vtkImageData placed in world
+ * coordinates with a 6-component "Tensors" array in VTK's order (XX, YY, ZZ,
+ * XY, YZ, XZ): what TensorGridFromImage reads.
+ */
+#ifndef RiemannMedicalTensorImages_h
+#define RiemannMedicalTensorImages_h
+
+#include "vtkSmartPointer.h" // For the returned images
+
+#include <string>
+
+class vtkImageData;
+
+namespace riemann
+{
+/**
+ * Read a NIfTI tensor volume. Placement: the q-form when the file has one
+ * (qform_code > 0), else the s-form, else the voxel grid at the origin
+ * (the matrices map voxel centres to the file's world axes, RAS for
+ * scanner data). An s-form with shear or unequal column norms beyond the
+ * voxel sizes is refused. Components: six per voxel, stored as the vector
+ * dimension (dim[5]) or as six volumes (dim[4]); with intent NIFTI_INTENT_SYMMATRIX
+ * (1005) in NIfTI's lower-triangle order (XX, XY, YY, XZ, YZ, ZZ), else in
+ * FSL dtifit's order (XX, XY, XZ, YY, YZ, ZZ); or nine, row-major.
+ * scl_slope and scl_inter are applied. The tensors are taken in the world
+ * axes of the placement. Throws std::runtime_error saying what is wrong.
+ */
+vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path);
+
+/**
+ * Read a NRRD tensor volume: 6 components per voxel in Teem's order (XX,
+ * XY, XZ, YY, YZ, ZZ: kind "3D-symmetric-matrix"), 7 (Teem's
+ * "3D-masked-symmetric-matrix": a confidence value first, dropped) or 9
+ * (row-major), on the axis that comes first. Placed by the spacings and
+ * origin vtkNrrdReader reads (it does not read "space directions" as a
+ * rotation: such files are placed axis-aligned; it also misreads ASCII
+ * encoded doubles, so raw or gzip encodings are the ones to use). Throws
+ * std::runtime_error.
+ */
+vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path);
+}
+
+#endif
