@@ -136,7 +136,7 @@ void ParseMetric(const Json& metric, ProjectData& project)
   {
     Fail("metric.parameter-values", e.what());
   }
-  if (!check->SetDefinition(effective.c_str()))
+  if (!check->SetDefinition(effective.c_str(), project.Folder.c_str()))
   {
     Fail("metric.text", check->GetLastError());
   }
@@ -145,7 +145,8 @@ void ParseMetric(const Json& metric, ProjectData& project)
 void ParseScene(const Json& scene, const std::string& folder, ProjectData& project)
 {
   project.SceneFile = scene.contains("file") ? String(scene.at("file"), "scene.file") : "";
-  if (!project.SceneFile.empty() && QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
+  if (!project.SceneFile.empty() &&
+    QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
   {
     project.SceneFile = QDir(QString::fromStdString(folder))
                           .absoluteFilePath(QString::fromStdString(project.SceneFile))
@@ -176,12 +177,14 @@ void ParseScene(const Json& scene, const std::string& folder, ProjectData& proje
 
 void ParseInside(const Json& inside, ProjectData& project)
 {
-  project.Backend = inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
+  project.Backend =
+    inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
   if (project.Backend != "gpu" && project.Backend != "cpu")
   {
     Fail("inside.backend", "expected \"gpu\" or \"cpu\"");
   }
-  const double samples = inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
+  const double samples =
+    inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
   if (samples < 1 || samples > 4096 || samples != std::floor(samples))
   {
     Fail("inside.samples", "expected a whole number in [1, 4096]");
@@ -237,7 +240,8 @@ void ParseItems(const Json& items, ProjectData& project)
     const std::string where = "items[" + std::to_string(i) + "]";
     ItemState state;
     state.Kind = String(Member(items[i], "kind", where), where + ".kind");
-    state.Name = items[i].contains("name") ? String(items[i].at("name"), where + ".name") : state.Kind;
+    state.Name =
+      items[i].contains("name") ? String(items[i].at("name"), where + ".name") : state.Kind;
     if (items[i].contains("visible"))
     {
       if (!items[i].at("visible").is_boolean())
@@ -318,13 +322,15 @@ nlohmann::json ProjectToJson(const ProjectData& project)
     layout["outside-camera"] = CameraToJson(project.OutsideCamera);
   }
   return { { "riemann-studio", 1 },
-    { "metric", { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
-                  { "time", project.Time } } },
+    { "metric",
+      { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
+        { "time", project.Time } } },
     { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
     { "observer", CameraToJson(project.Observer) },
-    { "inside", { { "backend", project.Backend }, { "samples", project.Samples },
-                  { "use-scene-settings", project.UseSceneSettings },
-                  { "integration", project.Integration } } },
+    { "inside",
+      { { "backend", project.Backend }, { "samples", project.Samples },
+        { "use-scene-settings", project.UseSceneSettings },
+        { "integration", project.Integration } } },
     { "items", items }, { "layout", layout } };
 }
 
@@ -367,6 +373,7 @@ ProjectData ParseProject(const std::string& text, const std::string& folder)
     }
   }
   ProjectData project;
+  project.Folder = folder;
   ParseMetric(Member(root, "metric", "project"), project);
   if (root.contains("scene"))
   {
@@ -419,6 +426,8 @@ QString ApplyProject(const ProjectData& project, StudioDocument& document)
   {
     return QStringLiteral("scene: ") + error;
   }
+  // A relative "file" in the metric (a sampled volume) is the project folder's.
+  document.SetMetricDirectory(project.Folder);
   MetricStatus status = document.SetMetricText(project.MetricText);
   for (const auto& value : project.ParameterValues)
   {

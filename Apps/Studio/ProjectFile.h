@@ -8,8 +8,8 @@
  *   "metric": {"text": "...", "parameter-values": {"/parameters/a": 0.7}, "time": 0.25},
  *   "scene": {"file": "scene.json", "text": "..."},  // file relative to the project's folder;
  *                                                    // both "" for the default grid
- *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 60},
- *   "inside": {"backend": "gpu", "samples": 1, "use-scene-settings": true,
+ *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0],
+ * "view-angle": 60}, "inside": {"backend": "gpu", "samples": 1, "use-scene-settings": true,
  *              "integration": {"IntegratorType": "rk4", "InitialIntegrationStep": 0.02, ...}},
  *   "items": [{"kind": "geodesics", "name": "Geodesics1", "visible": true, "settings": {...}}],
  *   "layout": {"views": "both", "outside-camera": {...}}
@@ -62,6 +62,8 @@ struct ItemState
 struct ProjectData
 {
   std::string MetricText;
+  /// The project file's folder: relative data files of the metric are read from it.
+  std::string Folder;
   std::map<std::string, double> ParameterValues;
   double Time = 0.0;
   std::string SceneFile;

@@ -22,7 +22,8 @@ namespace
 bool SameParameters(const std::vector<MetricParameter>& a, const std::vector<MetricParameter>& b)
 {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-    [](const MetricParameter& p, const MetricParameter& q) {
+    [](const MetricParameter& p, const MetricParameter& q)
+    {
       return p.Pointer == q.Pointer && p.Name == q.Name && p.Value == q.Value &&
         p.Animated == q.Animated;
     });
@@ -69,7 +70,7 @@ MetricStatus StudioDocument::Install(
     status.Message = QString::fromStdString(e.what());
     return status;
   }
-  if (!this->CurrentMetric->SetDefinition(effective.c_str()))
+  if (!this->CurrentMetric->SetDefinition(effective.c_str(), this->MetricFolder.c_str()))
   {
     const std::string message = this->CurrentMetric->GetLastError();
     status.Message = QString::fromStdString(message);
@@ -90,8 +91,8 @@ MetricStatus StudioDocument::SetMetricText(const std::string& text)
     auto old = std::find_if(this->TextParameters.begin(), this->TextParameters.end(),
       [&](const MetricParameter& p) { return p.Pointer == parameter.Pointer; });
     auto value = this->Values.find(parameter.Pointer);
-    if (!parameter.Animated && old != this->TextParameters.end() &&
-      old->Value == parameter.Value && value != this->Values.end())
+    if (!parameter.Animated && old != this->TextParameters.end() && old->Value == parameter.Value &&
+      value != this->Values.end())
     {
       values.insert(*value);
     }
@@ -177,6 +178,7 @@ QString StudioDocument::SetSceneText(const std::string& text)
   }
   if (scene->HasMetricDefinition())
   {
+    this->MetricFolder = scene->GetSceneSnapshot()->MetricDirectory;
     const MetricStatus status = this->SetMetricText(scene->GetMetricDefinition());
     if (!status.Ok())
     {
@@ -265,12 +267,14 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
   }
   PipelineItem* added = item.get();
   this->ItemList.push_back(std::move(item));
-  QObject::connect(added, &PipelineItem::SettingsChanged, this, [this, added](bool needsRun) {
-    if (needsRun)
+  QObject::connect(added, &PipelineItem::SettingsChanged, this,
+    [this, added](bool needsRun)
     {
-      this->Run(added);
-    }
-  });
+      if (needsRun)
+      {
+        this->Run(added);
+      }
+    });
   Q_EMIT this->ItemAdded(added);
   this->Run(added);
   return added;
@@ -278,7 +282,8 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
 
 PipelineItem* StudioDocument::AddItem(const std::string& kind)
 {
-  return this->AddItem(MakePipelineItem(kind, this->UniqueName(PipelineItemLabel(kind).remove(' '))));
+  return this->AddItem(
+    MakePipelineItem(kind, this->UniqueName(PipelineItemLabel(kind).remove(' '))));
 }
 
 void StudioDocument::RemoveItem(PipelineItem* item)
@@ -352,7 +357,8 @@ void StudioDocument::Run(PipelineItem* item)
   }
   vtkSmartPointer<vtkAlgorithm> job = item->MakeJob(this->MakeJobInputs());
   this->Runner.Start(item, job, item->Name(),
-    [this, item](vtkAlgorithm* finished, bool ok, const QString& error) {
+    [this, item](vtkAlgorithm* finished, bool ok, const QString& error)
+    {
       if (this->IndexOf(item) < 0)
       {
         return; // removed meanwhile

@@ -58,6 +58,10 @@ public:
   /// plain-number parameters (by JSON pointer) and the time t in [0, 1].
   MetricStatus SetMetricText(const std::string& text);
   const std::string& MetricText() const { return this->Text; }
+  /// The folder a relative "file" of the text (a sampled metric's volume) is
+  /// read from: the metric file's, the scene's metric's or the project's.
+  void SetMetricDirectory(const std::string& folder) { this->MetricFolder = folder; }
+  const std::string& MetricDirectory() const { return this->MetricFolder; }
   /// The definition in use: the text with the parameter values applied.
   std::string EffectiveMetricText() const;
   const std::vector<MetricParameter>& Parameters() const { return this->TextParameters; }
@@ -145,6 +149,7 @@ private:
   int Width = 640;
   int Height = 480;
   std::string Text;
+  std::string MetricFolder;
   std::vector<MetricParameter> TextParameters;
   std::map<std::string, double> Values;
   std::vector<std::unique_ptr<PipelineItem>> ItemList;

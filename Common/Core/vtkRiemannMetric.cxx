@@ -39,6 +39,11 @@ bool vtkRiemannMetric::SetDefinition(const char* json)
   return this->SetDefinitionIn(json, std::string());
 }
 
+bool vtkRiemannMetric::SetDefinition(const char* json, const char* dataDirectory)
+{
+  return this->SetDefinitionIn(json, dataDirectory ? dataDirectory : "");
+}
+
 bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& baseDirectory)
 {
   if (!json)

@@ -54,6 +54,17 @@ public:
   ///@}
 
   /**
+   * SetDefinition() with the folder that relative data files of the
+   * definition (a "sampled" metric's "file") are read from: what
+   * SetDefinitionFile() does with the file's folder, for a definition held
+   * elsewhere (an editor's text, a project). Null or "": the working
+   * directory.
+   */
+  bool SetDefinition(const char* json, const char* dataDirectory);
+  /// The folder the current definition's relative data files were read from ("" if none).
+  const char* GetDataDirectory() const { return this->BaseDirectory.c_str(); }
+
+  /**
    * Set the metric from a tensor volume in memory, as the "sampled" family
    * does from a file (Documentation/MetricFormat.md): the point-data array
    * `arrayName` of `image` ("" or null: its active tensors, else its one

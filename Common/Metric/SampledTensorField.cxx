@@ -451,8 +451,8 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
     return "mat3(" + d + ".x, " + o + ".x, " + o + ".z, " + o + ".x, " + d + ".y, " + o + ".y, " +
       o + ".z, " + o + ".y, " + d + ".z)";
   };
-  // "euclidean" evaluates at the clamped point too, then puts g = I outside
-  // (one exit for every point).
+  // "euclidean": g = I outside the box, without reading a texel (rays spend
+  // most of their steps outside a small volume).
   const std::string euclideanOutside = this->StopOutside ? ""
                                                          : "  if (any(continued))\n"
                                                            "  {\n"
@@ -460,6 +460,7 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
                                                            "    dg0 = mat3(0.0);\n"
                                                            "    dg1 = mat3(0.0);\n"
                                                            "    dg2 = mat3(0.0);\n"
+                                                           "    return;\n"
                                                            "  }\n";
   std::string rows;
   for (int c = 0; c < 4; ++c)
@@ -484,7 +485,8 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
     "  vec3 inBox = clamp(u, vec3(0.0), " +
     lastIndex +
     ");\n"
-    "  bvec3 continued = notEqual(u, inBox);\n"
+    "  bvec3 continued = notEqual(u, inBox);\n" +
+    euclideanOutside +
     "  u = inBox;\n"
     "  ivec3 last = ivec3(" +
     lastIndex +
@@ -523,8 +525,9 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
     toGrid + "[1][0] * gu[0] + " + toGrid + "[1][1] * gu[1] + " + toGrid +
     "[1][2] * gu[2];\n"
     "  dg2 = " +
-    toGrid + "[2][0] * gu[0] + " + toGrid + "[2][1] * gu[1] + " + toGrid + "[2][2] * gu[2];\n" +
-    euclideanOutside + "}\n");
+    toGrid + "[2][0] * gu[0] + " + toGrid + "[2][1] * gu[1] + " + toGrid +
+    "[2][2] * gu[2];\n"
+    "}\n");
   return name;
 }
 
