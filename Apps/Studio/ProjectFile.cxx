@@ -101,9 +101,19 @@ CameraState ParseCamera(const Json& value, const std::string& where)
   return camera;
 }
 
-void ParseMetric(const Json& metric, ProjectData& project)
+void ParseMetric(const Json& metric, const std::string& folder, ProjectData& project)
 {
   project.MetricText = String(Member(metric, "text", "metric"), "metric.text");
+  // Relative data files of the metric (a sampled volume) are read from
+  // "folder" (relative to the project's), else from the project's folder.
+  project.MetricFolder = folder;
+  if (metric.contains("folder"))
+  {
+    const QString given = QString::fromStdString(String(metric.at("folder"), "metric.folder"));
+    project.MetricFolder = QFileInfo(given).isRelative()
+      ? QDir(QString::fromStdString(folder)).absoluteFilePath(given).toStdString()
+      : given.toStdString();
+  }
   if (metric.contains("parameter-values"))
   {
     const Json& values = metric.at("parameter-values");
@@ -136,7 +146,7 @@ void ParseMetric(const Json& metric, ProjectData& project)
   {
     Fail("metric.parameter-values", e.what());
   }
-  if (!check->SetDefinition(effective.c_str(), project.Folder.c_str()))
+  if (!check->SetDefinition(effective.c_str(), project.MetricFolder.c_str()))
   {
     Fail("metric.text", check->GetLastError());
   }
@@ -287,6 +297,7 @@ ProjectData CaptureProject(const StudioDocument& document)
 {
   ProjectData project;
   project.MetricText = document.MetricText();
+  project.MetricFolder = document.MetricDirectory();
   project.ParameterValues = document.ParameterValues();
   project.Time = document.Time();
   project.SceneFile = document.Scene()->GetDefinitionFile();
@@ -321,10 +332,13 @@ nlohmann::json ProjectToJson(const ProjectData& project)
   {
     layout["outside-camera"] = CameraToJson(project.OutsideCamera);
   }
-  return { { "riemann-studio", 1 },
-    { "metric",
-      { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
-        { "time", project.Time } } },
+  Json metric = { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
+    { "time", project.Time } };
+  if (!project.MetricFolder.empty())
+  {
+    metric["folder"] = project.MetricFolder;
+  }
+  return { { "riemann-studio", 1 }, { "metric", metric },
     { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
     { "observer", CameraToJson(project.Observer) },
     { "inside",
@@ -373,8 +387,7 @@ ProjectData ParseProject(const std::string& text, const std::string& folder)
     }
   }
   ProjectData project;
-  project.Folder = folder;
-  ParseMetric(Member(root, "metric", "project"), project);
+  ParseMetric(Member(root, "metric", "project"), folder, project);
   if (root.contains("scene"))
   {
     ParseScene(root.at("scene"), folder, project);
@@ -426,8 +439,8 @@ QString ApplyProject(const ProjectData& project, StudioDocument& document)
   {
     return QStringLiteral("scene: ") + error;
   }
-  // A relative "file" in the metric (a sampled volume) is the project folder's.
-  document.SetMetricDirectory(project.Folder);
+  // A relative "file" in the metric (a sampled volume) is read from its folder.
+  document.SetMetricDirectory(project.MetricFolder);
   MetricStatus status = document.SetMetricText(project.MetricText);
   for (const auto& value : project.ParameterValues)
   {

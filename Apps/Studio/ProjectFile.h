@@ -5,7 +5,8 @@
  * @code{.json}
  * {
  *   "riemann-studio": 1,
- *   "metric": {"text": "...", "parameter-values": {"/parameters/a": 0.7}, "time": 0.25},
+ *   "metric": {"text": "...", "parameter-values": {"/parameters/a": 0.7}, "time": 0.25,
+ *              "folder": "/data/dti"},  // where a sampled metric's relative "file" is
  *   "scene": {"file": "scene.json", "text": "..."},  // file relative to the project's folder;
  *                                                    // both "" for the default grid
  *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0],
@@ -62,8 +63,10 @@ struct ItemState
 struct ProjectData
 {
   std::string MetricText;
-  /// The project file's folder: relative data files of the metric are read from it.
-  std::string Folder;
+  /// The folder relative data files of the metric (a sampled volume) are
+  /// read from: "metric": {"folder"} (relative to the project's), else the
+  /// project's folder.
+  std::string MetricFolder;
   std::map<std::string, double> ParameterValues;
   double Time = 0.0;
   std::string SceneFile;
