@@ -9,10 +9,7 @@
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/bin/RiemannSampledFrameBenchmark \
 //     --width 480 --height 270
 // Options: --width W --height H --repetitions R --data DIR.
-#include "vtkDoubleArray.h"
-#include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRiemannMetric.h"
@@ -20,40 +17,16 @@
 #include "vtkRiemannScene.h"
 
 #include "RenderBenchmarkOptions.h"
+#include "SampledLensImage.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 namespace
 {
-/// The lens g = n^2 I, n = 1 + 0.5 exp(-|x|^2 / 2), on n^3 points over [-4, 4]^3.
-vtkSmartPointer<vtkImageData> SampledLens(int n)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  const double h = 8.0 / (n - 1);
-  image->SetOrigin(-4.0, -4.0, -4.0);
-  image->SetSpacing(h, h, h);
-  vtkNew<vtkDoubleArray> tensors;
-  tensors->SetName("Tensors");
-  tensors->SetNumberOfComponents(6);
-  tensors->SetNumberOfTuples(image->GetNumberOfPoints());
-  for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
-  {
-    double x[3];
-    image->GetPoint(id, x);
-    const double index = 1.0 + 0.5 * std::exp(-0.5 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
-    const double g[6] = { index * index, index * index, index * index, 0.0, 0.0, 0.0 };
-    tensors->SetTuple(id, g);
-  }
-  image->GetPointData()->AddArray(tensors);
-  return image;
-}
-
 /// Median seconds of `repetitions` frames (after one that compiles and uploads).
 double MedianFrame(vtkRenderWindow* window, int repetitions)
 {
@@ -111,7 +84,7 @@ int main(int argc, char** argv)
   std::fflush(stdout);
   for (int n : { 24, 48, 96 })
   {
-    if (!metric->SetTensorData(SampledLens(n), "Tensors"))
+    if (!metric->SetTensorData(SampledLensImage(n, -4.0, 4.0), "Tensors"))
     {
       std::fprintf(stderr, "%s\n", metric->GetLastError());
       return 1;

@@ -45,6 +45,7 @@
 
 #include "ImageComparison.h"
 #include "RenderingTestUtilities.h"
+#include "SampledLensImage.h"
 #include "UVSphereMesh.h"
 
 #include <gtest/gtest.h>
@@ -125,33 +126,23 @@ std::vector<unsigned char> GpuPixels(
     pixels->GetPointer(0), pixels->GetPointer(0) + 3 * width * height);
 }
 
-constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
-
-/// The Gaussian lens of showcase-lens.json, g = n^2 I with n = 1 + 0.5
-/// exp(-|x|^2 / 2), sampled on n^3 points over [lo, hi]^3 as a tensor volume.
-vtkSmartPointer<vtkImageData> SampledLens(int n, double lo, double hi)
+/// The CPU tracer's picture of a scene file (its camera) through `metric`.
+void TraceSceneOnTheCpu(vtkRiemannCPURayTracer* tracer, vtkRiemannMetric* metric,
+  vtkRiemannScene* scene, int width, int height)
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  const double h = (hi - lo) / (n - 1);
-  image->SetOrigin(lo, lo, lo);
-  image->SetSpacing(h, h, h);
-  vtkNew<vtkDoubleArray> tensors;
-  tensors->SetName("Tensors");
-  tensors->SetNumberOfComponents(6);
-  tensors->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
-  for (vtkIdType id = 0; id < tensors->GetNumberOfTuples(); ++id)
-  {
-    double x[3];
-    image->GetPoint(id, x);
-    const double index = 1.0 + 0.5 * std::exp(-0.5 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
-    const double g[6] = { index * index, index * index, index * index, 0.0, 0.0, 0.0 };
-    tensors->SetTuple(id, g);
-  }
-  image->GetPointData()->AddArray(tensors);
-  return image;
+  tracer->SetMetric(metric);
+  tracer->SetScene(scene);
+  vtkNew<vtkCamera> camera;
+  scene->ApplyCamera(camera);
+  tracer->SetCamera(camera);
+  tracer->SetWidth(width);
+  tracer->SetHeight(height);
+  tracer->Update();
 }
+
+constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
 constexpr const char* TwistJson = R"({"type": "diffeo", "preset": "twist", "rate": 1})";
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -264,14 +255,7 @@ TEST(CPURayTracer, RendersEveryShippedSceneAsTheGpu)
 
     vtkNew<vtkRiemannCPURayTracer> tracer;
     ErrorObserver cpuErrors(tracer);
-    tracer->SetMetric(metric);
-    tracer->SetScene(scene);
-    vtkNew<vtkCamera> camera;
-    scene->ApplyCamera(camera);
-    tracer->SetCamera(camera);
-    tracer->SetWidth(width);
-    tracer->SetHeight(height);
-    tracer->Update();
+    TraceSceneOnTheCpu(tracer, metric, scene, width, height);
     ASSERT_TRUE(cpuErrors.Messages.empty()) << cpuErrors.All();
     const std::vector<unsigned char> cpu = CpuPixels(tracer->GetOutput());
     const DifferenceStatistics s = Compare(gpu, cpu, 24);
@@ -760,7 +744,7 @@ TEST(CPURayTracer, SampledMetricsRenderOnTheGpuAsOnTheCpu)
     SCOPED_TRACE(c.Outside);
     vtkNew<vtkRiemannMetric> metric;
     ASSERT_TRUE(metric->SetTensorData(
-      SampledLens(24, c.Low, c.High), "Tensors", false, 1.0, false, c.Outside))
+      SampledLensImage(24, c.Low, c.High), "Tensors", false, 1.0, false, c.Outside))
       << metric->GetLastError();
     ErrorObserver* gpuErrors = nullptr;
     const std::vector<unsigned char> gpu = GpuPixels(metric, scene, width, height, &gpuErrors);
@@ -768,14 +752,7 @@ TEST(CPURayTracer, SampledMetricsRenderOnTheGpuAsOnTheCpu)
 
     vtkNew<vtkRiemannCPURayTracer> tracer;
     ErrorObserver cpuErrors(tracer);
-    tracer->SetMetric(metric);
-    tracer->SetScene(scene);
-    vtkNew<vtkCamera> camera;
-    scene->ApplyCamera(camera);
-    tracer->SetCamera(camera);
-    tracer->SetWidth(width);
-    tracer->SetHeight(height);
-    tracer->Update();
+    TraceSceneOnTheCpu(tracer, metric, scene, width, height);
     ASSERT_TRUE(cpuErrors.Messages.empty()) << cpuErrors.All();
     const DifferenceStatistics s = Compare(gpu, CpuPixels(tracer->GetOutput()), 24);
     std::cout << "sampled lens, outside " << c.Outside << ": mean " << s.Mean
@@ -808,7 +785,7 @@ TEST(CPURayTracer, SampledMetricTexturesAreUploadedOnceAndBoundedBySize)
   ASSERT_TRUE(scene->SetDefinitionFile((DataDirectory() / "scenes" / "showcase-lens.json").c_str()))
     << scene->GetLastError();
   vtkNew<vtkRiemannMetric> metric;
-  ASSERT_TRUE(metric->SetTensorData(SampledLens(8, -4.0, 4.0), "Tensors"))
+  ASSERT_TRUE(metric->SetTensorData(SampledLensImage(8, -4.0, 4.0), "Tensors"))
     << metric->GetLastError();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
