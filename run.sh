@@ -166,9 +166,11 @@ run_sanitize_tests() {
   # shipped scene at full size (5 and 1.5 minutes alone), whose code paths
   # the other CPU tracer, mesh and CLI tests cover; and the 10,000-direction
   # round-sphere conjugate locus (15 s here), whose code paths the other
-  # conjugate-point tests cover. Cli.riemann (its CPU renders have a 60 s
-  # limit each) runs last, alone.
-  local skip='CPURayTracer\.RendersEveryShippedSceneAsTheGpu|^Image\.mesh-two-bumps-cpu$|CausticSheets\.RoundSphereIsDouble'
+  # conjugate-point tests cover; and the sampled lens rendered on the GPU and
+  # the CPU (70 s here), whose sampled-metric paths the SampledTensorField,
+  # SampledMetric and texture-upload tests cover. Cli.riemann (its CPU
+  # renders have a 60 s limit each) runs last, alone.
+  local skip='CPURayTracer\.RendersEveryShippedSceneAsTheGpu|CPURayTracer\.SampledMetricsRenderOnTheGpuAsOnTheCpu|^Image\.mesh-two-bumps-cpu$|CausticSheets\.RoundSphereIsDouble'
   log "sanitize: ctest --test-dir build-asan -L Cxx -E '$skip' $*; then -L Cli"
   "${XVFB[@]}" env "${sanitizer_env[@]}" \
     ctest --test-dir "$ASAN_BUILD_DIR" --output-on-failure -j2 -L Cxx -E "$skip" "$@" \
