@@ -134,12 +134,30 @@ def fibre_angles(tracts, phantom):
     return {b: (float(np.mean(e["angles"])), float(np.mean(e["inside"])), e["tracts"]) for b, e in results.items()}
 
 
+def coloured_actor(port, array, lookup_table, cells):
+    """An actor of `port`'s output coloured by its cell or point array `array`
+    through `lookup_table` (over the table's range)."""
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(port)
+    if cells:
+        mapper.SetScalarModeToUseCellFieldData()
+    else:
+        mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray(array)
+    mapper.SetLookupTable(lookup_table)
+    mapper.SetScalarRange(lookup_table.GetTableRange())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    return actor
+
+
 def render(tracts, phantom, output, size):
     """Tubes coloured by bundle over the FA slice z = CROSS_Z, seen from above."""
     from vtkmodules.vtkFiltersGeometry import vtkImageDataGeometryFilter
     from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
-                                             vtkWindowToImageFilter)
+    from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkWindowToImageFilter
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
     seed_bundle = vtk_to_numpy(seeds().GetPointData().GetArray("SeedBundle"))
@@ -159,14 +177,7 @@ def render(tracts, phantom, output, size):
         bundle_colours.SetTableValue(i, *rgb, 1.0)
     bundle_colours.SetTableRange(1, 3)
     bundle_colours.Build()
-    tube_mapper = vtkPolyDataMapper()
-    tube_mapper.SetInputConnection(tubes.GetOutputPort())
-    tube_mapper.SetScalarModeToUseCellFieldData()
-    tube_mapper.SelectColorArray("Bundle")
-    tube_mapper.SetLookupTable(bundle_colours)
-    tube_mapper.SetScalarRange(1, 3)
-    tube_actor = vtkActor()
-    tube_actor.SetMapper(tube_mapper)
+    tube_actor = coloured_actor(tubes.GetOutputPort(), "Bundle", bundle_colours, cells=True)
 
     k = int(round((CROSS_Z - phantom.GetOrigin()[2]) / phantom.GetSpacing()[2]))
     nx, ny, _ = phantom.GetDimensions()
@@ -178,14 +189,7 @@ def render(tracts, phantom, output, size):
     grey.SetValueRange(0.1, 0.9)
     grey.SetTableRange(0, 0.9)
     grey.Build()
-    slice_mapper = vtkPolyDataMapper()
-    slice_mapper.SetInputConnection(slice_filter.GetOutputPort())
-    slice_mapper.SetScalarModeToUsePointFieldData()
-    slice_mapper.SelectColorArray("FractionalAnisotropy")
-    slice_mapper.SetLookupTable(grey)
-    slice_mapper.SetScalarRange(0, 0.9)
-    slice_actor = vtkActor()
-    slice_actor.SetMapper(slice_mapper)
+    slice_actor = coloured_actor(slice_filter.GetOutputPort(), "FractionalAnisotropy", grey, cells=False)
 
     renderer = vtkRenderer()
     renderer.SetBackground(0.08, 0.08, 0.1)

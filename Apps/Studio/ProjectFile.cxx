@@ -155,8 +155,7 @@ void ParseMetric(const Json& metric, const std::string& folder, ProjectData& pro
 void ParseScene(const Json& scene, const std::string& folder, ProjectData& project)
 {
   project.SceneFile = scene.contains("file") ? String(scene.at("file"), "scene.file") : "";
-  if (!project.SceneFile.empty() &&
-    QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
+  if (!project.SceneFile.empty() && QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
   {
     project.SceneFile = QDir(QString::fromStdString(folder))
                           .absoluteFilePath(QString::fromStdString(project.SceneFile))
@@ -187,14 +186,12 @@ void ParseScene(const Json& scene, const std::string& folder, ProjectData& proje
 
 void ParseInside(const Json& inside, ProjectData& project)
 {
-  project.Backend =
-    inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
+  project.Backend = inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
   if (project.Backend != "gpu" && project.Backend != "cpu")
   {
     Fail("inside.backend", "expected \"gpu\" or \"cpu\"");
   }
-  const double samples =
-    inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
+  const double samples = inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
   if (samples < 1 || samples > 4096 || samples != std::floor(samples))
   {
     Fail("inside.samples", "expected a whole number in [1, 4096]");
@@ -250,8 +247,7 @@ void ParseItems(const Json& items, ProjectData& project)
     const std::string where = "items[" + std::to_string(i) + "]";
     ItemState state;
     state.Kind = String(Member(items[i], "kind", where), where + ".kind");
-    state.Name =
-      items[i].contains("name") ? String(items[i].at("name"), where + ".name") : state.Kind;
+    state.Name = items[i].contains("name") ? String(items[i].at("name"), where + ".name") : state.Kind;
     if (items[i].contains("visible"))
     {
       if (!items[i].at("visible").is_boolean())
@@ -341,10 +337,9 @@ nlohmann::json ProjectToJson(const ProjectData& project)
   return { { "riemann-studio", 1 }, { "metric", metric },
     { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
     { "observer", CameraToJson(project.Observer) },
-    { "inside",
-      { { "backend", project.Backend }, { "samples", project.Samples },
-        { "use-scene-settings", project.UseSceneSettings },
-        { "integration", project.Integration } } },
+    { "inside", { { "backend", project.Backend }, { "samples", project.Samples },
+                  { "use-scene-settings", project.UseSceneSettings },
+                  { "integration", project.Integration } } },
     { "items", items }, { "layout", layout } };
 }
 

@@ -9,8 +9,8 @@
  *              "folder": "/data/dti"},  // where a sampled metric's relative "file" is
  *   "scene": {"file": "scene.json", "text": "..."},  // file relative to the project's folder;
  *                                                    // both "" for the default grid
- *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0],
- * "view-angle": 60}, "inside": {"backend": "gpu", "samples": 1, "use-scene-settings": true,
+ *   "observer": {"position": [0, 0, 7.5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 60},
+ *   "inside": {"backend": "gpu", "samples": 1, "use-scene-settings": true,
  *              "integration": {"IntegratorType": "rk4", "InitialIntegrationStep": 0.02, ...}},
  *   "items": [{"kind": "geodesics", "name": "Geodesics1", "visible": true, "settings": {...}}],
  *   "layout": {"views": "both", "outside-camera": {...}}

@@ -38,8 +38,7 @@ std::string Identifier(const std::string& name, std::set<std::string>& used)
   }
   std::string unique = id;
   for (int n = 2; used.count(unique) || unique == "metric" || unique == "scene" ||
-       unique == "camera" || unique == "riemann";
-       ++n)
+       unique == "camera" || unique == "riemann"; ++n)
   {
     unique = id + "_" + std::to_string(n);
   }
@@ -141,26 +140,20 @@ void WriteObserver(std::ostream& out, const StudioDocument& document)
   const char* integrators[] = { "euler", "rk4", "dp45" };
   out << "# The observer (the inside view's camera) and its rays.\n"
       << "camera = vtkCamera()\n"
-      << "camera.SetPosition"
-      << PythonTuple(
-           nlohmann::json(std::vector<double>(camera->GetPosition(), camera->GetPosition() + 3)))
-      << "\n"
-      << "camera.SetFocalPoint"
-      << PythonTuple(nlohmann::json(
-           std::vector<double>(camera->GetFocalPoint(), camera->GetFocalPoint() + 3)))
-      << "\n"
-      << "camera.SetViewUp"
-      << PythonTuple(
-           nlohmann::json(std::vector<double>(camera->GetViewUp(), camera->GetViewUp() + 3)))
-      << "\n"
+      << "camera.SetPosition" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetPosition(), camera->GetPosition() + 3))) << "\n"
+      << "camera.SetFocalPoint" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetFocalPoint(), camera->GetFocalPoint() + 3))) << "\n"
+      << "camera.SetViewUp" << PythonTuple(nlohmann::json(std::vector<double>(
+           camera->GetViewUp(), camera->GetViewUp() + 3))) << "\n"
       << "camera.SetViewAngle(" << PythonNumber(camera->GetViewAngle()) << ")\n"
       << "width, height = " << document.ViewWidth() << ", " << document.ViewHeight() << "\n"
       << "use_scene_settings = " << (document.UseSceneSettings() ? "True" : "False") << "\n"
       << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n"
       << "ray_settings.SetIntegratorTypeFromName(\"" << integrators[rays->GetIntegratorType()]
       << "\")\n"
-      << "ray_settings.SetInitialIntegrationStep("
-      << PythonNumber(rays->GetInitialIntegrationStep()) << ")\n"
+      << "ray_settings.SetInitialIntegrationStep(" << PythonNumber(rays->GetInitialIntegrationStep())
+      << ")\n"
       << "ray_settings.SetMaximumError(" << PythonNumber(rays->GetMaximumError()) << ")\n"
       << "ray_settings.SetMaximumPropagation(" << PythonNumber(rays->GetMaximumPropagation())
       << ")\n"

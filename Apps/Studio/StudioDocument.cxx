@@ -22,8 +22,7 @@ namespace
 bool SameParameters(const std::vector<MetricParameter>& a, const std::vector<MetricParameter>& b)
 {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-    [](const MetricParameter& p, const MetricParameter& q)
-    {
+    [](const MetricParameter& p, const MetricParameter& q) {
       return p.Pointer == q.Pointer && p.Name == q.Name && p.Value == q.Value &&
         p.Animated == q.Animated;
     });
@@ -91,8 +90,8 @@ MetricStatus StudioDocument::SetMetricText(const std::string& text)
     auto old = std::find_if(this->TextParameters.begin(), this->TextParameters.end(),
       [&](const MetricParameter& p) { return p.Pointer == parameter.Pointer; });
     auto value = this->Values.find(parameter.Pointer);
-    if (!parameter.Animated && old != this->TextParameters.end() && old->Value == parameter.Value &&
-      value != this->Values.end())
+    if (!parameter.Animated && old != this->TextParameters.end() &&
+      old->Value == parameter.Value && value != this->Values.end())
     {
       values.insert(*value);
     }
@@ -267,14 +266,12 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
   }
   PipelineItem* added = item.get();
   this->ItemList.push_back(std::move(item));
-  QObject::connect(added, &PipelineItem::SettingsChanged, this,
-    [this, added](bool needsRun)
+  QObject::connect(added, &PipelineItem::SettingsChanged, this, [this, added](bool needsRun) {
+    if (needsRun)
     {
-      if (needsRun)
-      {
-        this->Run(added);
-      }
-    });
+      this->Run(added);
+    }
+  });
   Q_EMIT this->ItemAdded(added);
   this->Run(added);
   return added;
@@ -282,8 +279,7 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
 
 PipelineItem* StudioDocument::AddItem(const std::string& kind)
 {
-  return this->AddItem(
-    MakePipelineItem(kind, this->UniqueName(PipelineItemLabel(kind).remove(' '))));
+  return this->AddItem(MakePipelineItem(kind, this->UniqueName(PipelineItemLabel(kind).remove(' '))));
 }
 
 void StudioDocument::RemoveItem(PipelineItem* item)
@@ -357,8 +353,7 @@ void StudioDocument::Run(PipelineItem* item)
   }
   vtkSmartPointer<vtkAlgorithm> job = item->MakeJob(this->MakeJobInputs());
   this->Runner.Start(item, job, item->Name(),
-    [this, item](vtkAlgorithm* finished, bool ok, const QString& error)
-    {
+    [this, item](vtkAlgorithm* finished, bool ok, const QString& error) {
       if (this->IndexOf(item) < 0)
       {
         return; // removed meanwhile

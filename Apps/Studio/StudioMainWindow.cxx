@@ -132,26 +132,23 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   this->BuildMenus();
 
   // The link between the views: a picked pixel's ray appears outside.
-  QObject::connect(
-    this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
+  QObject::connect(this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
   QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
     [this](const QString& message) { this->ShowMessage("Inside view: " + message, true); });
-  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this,
-    [this](double ms)
-    { this->FrameTime->setText(QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1)); });
-  QObject::connect(this->Doc, &StudioDocument::ItemFinished, this,
-    [this](PipelineItem* item, bool)
+  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
+    this->FrameTime->setText(QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1));
+  });
+  QObject::connect(this->Doc, &StudioDocument::ItemFinished, this, [this](PipelineItem* item, bool) {
+    const QString error = this->Doc->ItemError(item);
+    if (!error.isEmpty())
     {
-      const QString error = this->Doc->ItemError(item);
-      if (!error.isEmpty())
-      {
-        this->ShowMessage(item->Name() + ": " + error, true);
-      }
-      if (item == this->BrowserWidget->SelectedItem() && !this->PropertiesWidget->HasPendingEdits())
-      {
-        this->ShowSelection(); // new colouring arrays
-      }
-    });
+      this->ShowMessage(item->Name() + ": " + error, true);
+    }
+    if (item == this->BrowserWidget->SelectedItem() && !this->PropertiesWidget->HasPendingEdits())
+    {
+      this->ShowSelection(); // new colouring arrays
+    }
+  });
   QObject::connect(this->Doc, &StudioDocument::MetricChanged, this, &StudioMainWindow::UpdateTitle);
   this->UpdateTitle();
   this->BrowserWidget->SelectScene();
@@ -196,44 +193,39 @@ void StudioMainWindow::BuildDocks()
   QObject::connect(this->BrowserWidget, &PipelineBrowser::DeleteRequested, this,
     [this](PipelineItem* item) { this->Doc->RemoveItem(item); });
   QObject::connect(this->EditorWidget, &MetricEditor::Checked, this,
-    [this](bool ok, const QString& message)
-    { this->ShowMessage(ok ? QStringLiteral("Metric applied") : "Metric: " + message, !ok); });
+    [this](bool ok, const QString& message) {
+      this->ShowMessage(ok ? QStringLiteral("Metric applied") : "Metric: " + message, !ok);
+    });
   QObject::connect(this->ParameterWidget, &ParameterPanel::ValueApplied, this,
-    [this](bool ok, const QString& message)
-    {
+    [this](bool ok, const QString& message) {
       if (!ok)
       {
         this->ShowMessage("Parameter: " + message, true);
       }
     });
   QObject::connect(this->TimeWidget, &TimeBar::TimeApplied, this,
-    [this](bool ok, const QString& message)
-    {
+    [this](bool ok, const QString& message) {
       if (!ok)
       {
         this->ShowMessage("Time: " + message, true);
       }
     });
-  QObject::connect(this->TimeWidget, &TimeBar::ExportFramesRequested, this,
-    [this]()
+  QObject::connect(this->TimeWidget, &TimeBar::ExportFramesRequested, this, [this]() {
+    const QString folder = QFileDialog::getExistingDirectory(this, "Export Frames To");
+    if (folder.isEmpty())
     {
-      const QString folder = QFileDialog::getExistingDirectory(this, "Export Frames To");
-      if (folder.isEmpty())
-      {
-        return;
-      }
-      bool ok = false;
-      const int count = QInputDialog::getInt(
-        this, "Export Frames", "Number of frames (t from 0 to 1):", 25, 2, 10000, 1, &ok);
-      if (ok)
-      {
-        const QString error = this->ExportFrames(folder, count);
-        this->ShowMessage(error.isEmpty()
-            ? QStringLiteral("%1 frames written to %2").arg(count).arg(folder)
-            : error,
-          !error.isEmpty());
-      }
-    });
+      return;
+    }
+    bool ok = false;
+    const int count = QInputDialog::getInt(this, "Export Frames", "Number of frames (t from 0 to 1):",
+      25, 2, 10000, 1, &ok);
+    if (ok)
+    {
+      const QString error = this->ExportFrames(folder, count);
+      this->ShowMessage(error.isEmpty() ? QStringLiteral("%1 frames written to %2").arg(count).arg(folder)
+                                        : error, !error.isEmpty());
+    }
+  });
 }
 
 void StudioMainWindow::BuildStatusBar()
@@ -253,84 +245,62 @@ void StudioMainWindow::BuildStatusBar()
   this->statusBar()->addPermanentWidget(this->Progress);
   this->statusBar()->addPermanentWidget(this->Cancel);
   JobRunner* jobs = this->Doc->Jobs();
-  QObject::connect(jobs, &JobRunner::Progress, this,
-    [this](const QString& label, double fraction)
+  QObject::connect(jobs, &JobRunner::Progress, this, [this](const QString& label, double fraction) {
+    this->Progress->setFormat(label + " %p%");
+    this->Progress->setValue(static_cast<int>(fraction * 1000));
+  });
+  QObject::connect(jobs, &JobRunner::RunningChanged, this, [this](int running) {
+    this->Progress->setVisible(running > 0);
+    this->Cancel->setVisible(running > 0);
+    if (running == 0)
     {
-      this->Progress->setFormat(label + " %p%");
-      this->Progress->setValue(static_cast<int>(fraction * 1000));
-    });
-  QObject::connect(jobs, &JobRunner::RunningChanged, this,
-    [this](int running)
-    {
-      this->Progress->setVisible(running > 0);
-      this->Cancel->setVisible(running > 0);
-      if (running == 0)
-      {
-        this->Progress->setValue(0);
-      }
-    });
-  QObject::connect(this->Cancel, &QPushButton::clicked, this,
-    [this]()
-    {
-      this->Doc->Jobs()->CancelAll();
-      this->ShowMessage("Cancelled: the items keep their last results");
-    });
+      this->Progress->setValue(0);
+    }
+  });
+  QObject::connect(this->Cancel, &QPushButton::clicked, this, [this]() {
+    this->Doc->Jobs()->CancelAll();
+    this->ShowMessage("Cancelled: the items keep their last results");
+  });
 }
 
 void StudioMainWindow::BuildMenus()
 {
   // File
   QMenu* file = this->menuBar()->addMenu("&File");
-  file->addAction(
-    this->style()->standardIcon(QStyle::SP_DialogOpenButton), "&Open...", this,
-    [this]()
-    {
-      const QString path =
-        this->AskOpenPath("Open Project, Metric or Scene", "JSON (*.json);;All files (*)");
+  file->addAction(this->style()->standardIcon(QStyle::SP_DialogOpenButton), "&Open...", this,
+    [this]() {
+      const QString path = this->AskOpenPath("Open Project, Metric or Scene", "JSON (*.json);;All files (*)");
       if (!path.isEmpty())
       {
         this->OpenFile(path);
       }
-    },
-    QKeySequence::Open);
-  file->addAction(
-    "&Save Project", this,
-    [this]()
+    }, QKeySequence::Open);
+  file->addAction("&Save Project", this, [this]() {
+    const QString path = this->ProjectPath.isEmpty()
+      ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
+      : this->ProjectPath;
+    if (!path.isEmpty())
     {
-      const QString path = this->ProjectPath.isEmpty()
-        ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
-        : this->ProjectPath;
-      if (!path.isEmpty())
-      {
-        const QString error = this->SaveProject(path);
-        this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
-      }
-    },
-    QKeySequence::Save);
-  file->addAction(
-    "Save Project &As...", this,
-    [this]()
+      const QString error = this->SaveProject(path);
+      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+    }
+  }, QKeySequence::Save);
+  file->addAction("Save Project &As...", this, [this]() {
+    const QString path = this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json");
+    if (!path.isEmpty())
     {
-      const QString path =
-        this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json");
-      if (!path.isEmpty())
-      {
-        const QString error = this->SaveProject(path);
-        this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
-      }
-    },
-    QKeySequence::SaveAs);
-  file->addAction("Save &Metric As...", this,
-    [this]()
+      const QString error = this->SaveProject(path);
+      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+    }
+  }, QKeySequence::SaveAs);
+  file->addAction("Save &Metric As...", this, [this]() {
+    const QString path = this->AskSavePath("Save Metric (with the slider values)", "Metric (*.json)", "json");
+    if (!path.isEmpty())
     {
-      const QString path =
-        this->AskSavePath("Save Metric (with the slider values)", "Metric (*.json)", "json");
-      if (!path.isEmpty())
-      {
-        const QString error = this->SaveMetric(path);
-        this->ShowMessage(error.isEmpty() ? "Metric saved to " + path : error, !error.isEmpty());
-      }
-    });
+      const QString error = this->SaveMetric(path);
+      this->ShowMessage(error.isEmpty() ? "Metric saved to " + path : error, !error.isEmpty());
+    }
+  });
   QMenu* examples = file->addMenu("&Examples");
   for (const QString& folder : { QStringLiteral("metrics"), QStringLiteral("scenes") })
   {
@@ -343,55 +313,45 @@ void StudioMainWindow::BuildMenus()
     }
   }
   QMenu* exports = file->addMenu("E&xport");
-  exports->addAction("Selected Item's &Data...", this,
-    [this]()
+  exports->addAction("Selected Item's &Data...", this, [this]() {
+    PipelineItem* item = this->BrowserWidget->SelectedItem();
+    if (!item)
     {
-      PipelineItem* item = this->BrowserWidget->SelectedItem();
-      if (!item)
-      {
-        this->ShowMessage("Select an item in the pipeline browser first", true);
-        return;
-      }
-      const bool image = item->Kind() == "field";
-      const QString path = this->AskSavePath("Export " + item->Name(),
-        image ? "VTK image data (*.vti)" : "VTK poly data (*.vtp)", image ? "vti" : "vtp");
-      if (!path.isEmpty())
-      {
-        const QString error = this->ExportItemData(item, path);
-        this->ShowMessage(
-          error.isEmpty() ? item->Name() + " written to " + path : error, !error.isEmpty());
-      }
-    });
-  const std::pair<const char*, Shot> shots[] = { { "Screenshot of the &Inside View...",
-                                                   InsideShot },
-    { "Screenshot of the &Outside View...", OutsideShot },
-    { "Screenshot of &Both Views...", BothShot }, { "Screenshot of the &Window...", WindowShot } };
+      this->ShowMessage("Select an item in the pipeline browser first", true);
+      return;
+    }
+    const bool image = item->Kind() == "field";
+    const QString path = this->AskSavePath("Export " + item->Name(),
+      image ? "VTK image data (*.vti)" : "VTK poly data (*.vtp)", image ? "vti" : "vtp");
+    if (!path.isEmpty())
+    {
+      const QString error = this->ExportItemData(item, path);
+      this->ShowMessage(error.isEmpty() ? item->Name() + " written to " + path : error, !error.isEmpty());
+    }
+  });
+  const std::pair<const char*, Shot> shots[] = { { "Screenshot of the &Inside View...", InsideShot },
+    { "Screenshot of the &Outside View...", OutsideShot }, { "Screenshot of &Both Views...", BothShot },
+    { "Screenshot of the &Window...", WindowShot } };
   for (const auto& shot : shots)
   {
     const Shot what = shot.second;
-    exports->addAction(shot.first, this,
-      [this, what]()
-      {
-        const QString path = this->AskSavePath("Save Screenshot", "PNG image (*.png)", "png");
-        if (!path.isEmpty())
-        {
-          const QString error = this->SaveScreenshot(path, what);
-          this->ShowMessage(
-            error.isEmpty() ? "Screenshot saved to " + path : error, !error.isEmpty());
-        }
-      });
-  }
-  exports->addAction("&Python Script...", this,
-    [this]()
-    {
-      const QString path = this->AskSavePath("Export Python Script", "Python (*.py)", "py");
+    exports->addAction(shot.first, this, [this, what]() {
+      const QString path = this->AskSavePath("Save Screenshot", "PNG image (*.png)", "png");
       if (!path.isEmpty())
       {
-        const QString error = this->ExportPythonScript(path);
-        this->ShowMessage(
-          error.isEmpty() ? "Python script written to " + path : error, !error.isEmpty());
+        const QString error = this->SaveScreenshot(path, what);
+        this->ShowMessage(error.isEmpty() ? "Screenshot saved to " + path : error, !error.isEmpty());
       }
     });
+  }
+  exports->addAction("&Python Script...", this, [this]() {
+    const QString path = this->AskSavePath("Export Python Script", "Python (*.py)", "py");
+    if (!path.isEmpty())
+    {
+      const QString error = this->ExportPythonScript(path);
+      this->ShowMessage(error.isEmpty() ? "Python script written to " + path : error, !error.isEmpty());
+    }
+  });
   exports->addAction(this->TimeWidget->ExportAction());
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
@@ -402,20 +362,18 @@ void StudioMainWindow::BuildMenus()
   tools->setObjectName("PipelineToolBar");
   for (const std::string& kind : PipelineItemKinds())
   {
-    QAction* add = pipeline->addAction(
-      "Add " + PipelineItemLabel(kind), this, [this, kind]() { this->Doc->AddItem(kind); });
+    QAction* add = pipeline->addAction("Add " + PipelineItemLabel(kind), this,
+      [this, kind]() { this->Doc->AddItem(kind); });
     add->setObjectName(QString::fromStdString("Add:" + kind));
     tools->addAction(add);
   }
   pipeline->addSeparator();
-  pipeline->addAction("&Delete Selected Item", this,
-    [this]()
+  pipeline->addAction("&Delete Selected Item", this, [this]() {
+    if (PipelineItem* item = this->BrowserWidget->SelectedItem())
     {
-      if (PipelineItem* item = this->BrowserWidget->SelectedItem())
-      {
-        this->Doc->RemoveItem(item);
-      }
-    });
+      this->Doc->RemoveItem(item);
+    }
+  });
   tools->addSeparator();
 
   // View: layout, cameras, picking, backend.
@@ -424,14 +382,12 @@ void StudioMainWindow::BuildMenus()
   view->addAction("&Inside View Only", this, [this]() { this->SetViewLayout(InsideOnly); });
   view->addAction("&Outside View Only", this, [this]() { this->SetViewLayout(OutsideOnly); });
   view->addSeparator();
-  QAction* resetInside = view->addAction(
-    "Reset &Observer (the scene's camera)", this, [this]() { this->Doc->ResetObserver(); });
-  QAction* resetOutside = view->addAction("Reset Outside &Camera", this,
-    [this]()
-    {
-      this->OutsideWidget->ResetCamera();
-      this->OutsideWidget->RenderNow();
-    });
+  QAction* resetInside = view->addAction("Reset &Observer (the scene's camera)", this,
+    [this]() { this->Doc->ResetObserver(); });
+  QAction* resetOutside = view->addAction("Reset Outside &Camera", this, [this]() {
+    this->OutsideWidget->ResetCamera();
+    this->OutsideWidget->RenderNow();
+  });
   this->PickAction = view->addAction("&Pick Rays (click a pixel of the inside view)");
   this->PickAction->setCheckable(true);
   this->PickAction->setToolTip("Click a pixel of the inside view to see its ray in the outside "
@@ -443,22 +399,20 @@ void StudioMainWindow::BuildMenus()
   tools->addAction(this->PickAction);
 
   QMenu* help = this->menuBar()->addMenu("&Help");
-  help->addAction("&About Riemann Studio", this,
-    [this]()
-    {
-      QMessageBox::about(this, "About Riemann Studio",
-        "<b>Riemann Studio</b> (RiemannVTK)<br>Design a Riemannian metric on R<sup>3</sup> and see "
-        "it from inside (curved rays) and outside.<br>Ctrl+click the inside view to see a pixel's "
-        "ray. The metric format: Documentation/MetricFormat.md.");
-    });
+  help->addAction("&About Riemann Studio", this, [this]() {
+    QMessageBox::about(this, "About Riemann Studio",
+      "<b>Riemann Studio</b> (RiemannVTK)<br>Design a Riemannian metric on R<sup>3</sup> and see "
+      "it from inside (curved rays) and outside.<br>Ctrl+click the inside view to see a pixel's "
+      "ray. The metric format: Documentation/MetricFormat.md.");
+  });
 }
 
 void StudioMainWindow::ShowSelection()
 {
   if (PipelineItem* item = this->BrowserWidget->SelectedItem())
   {
-    this->PropertiesWidget->Show(QStringLiteral("<b>%1</b> (%2)")
-                                   .arg(item->Name(), QString::fromStdString(item->FilterClass())),
+    this->PropertiesWidget->Show(
+      QStringLiteral("<b>%1</b> (%2)").arg(item->Name(), QString::fromStdString(item->FilterClass())),
       item->Properties(), item->Settings(),
       [item](const nlohmann::json& settings) { return item->ApplySettings(settings); });
   }
@@ -468,10 +422,10 @@ void StudioMainWindow::ShowSelection()
   }
   else
   {
-    this->PropertiesWidget->Clear(
-      QStringLiteral(
-        "<b>Metric</b>: %1<br>Edit it in the Metric panel; its parameters get sliders there.")
-        .arg(QString::fromStdString(this->Doc->Metric()->GetDescription()).toHtmlEscaped()));
+    this->PropertiesWidget->Clear(QStringLiteral(
+      "<b>Metric</b>: %1<br>Edit it in the Metric panel; its parameters get sliders there.")
+                                    .arg(QString::fromStdString(this->Doc->Metric()->GetDescription())
+                                           .toHtmlEscaped()));
   }
 }
 
@@ -482,8 +436,7 @@ void StudioMainWindow::ShowInsideViewSettings()
   backend.Label = "Renderer";
   backend.Type = PropertySpec::Choice;
   backend.Choices = QStringList{ "gpu", "cpu" };
-  backend.Help =
-    "gpu: vtkRiemannRayTracePass (GLSL); cpu: vtkRiemannCPURayTracer (Embree, samples)";
+  backend.Help = "gpu: vtkRiemannRayTracePass (GLSL); cpu: vtkRiemannCPURayTracer (Embree, samples)";
   PropertySpec samples;
   samples.Key = "SamplesPerPixel";
   samples.Label = "Samples (CPU)";
@@ -503,19 +456,16 @@ void StudioMainWindow::ShowInsideViewSettings()
   }
   vtkRiemannIntegrationSettings* rays = this->Doc->RaySettings();
   const char* integrators[] = { "euler", "rk4", "dp45" };
-  const nlohmann::json values = {
-    { "Backend", this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu" },
+  const nlohmann::json values = { { "Backend", this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu" },
     { "SamplesPerPixel", this->InsideWidget->GetSamplesPerPixel() },
     { "UseSceneSettings", this->Doc->UseSceneSettings() },
     { "IntegratorType", integrators[rays->GetIntegratorType()] },
     { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
     { "MaximumError", rays->GetMaximumError() },
     { "MaximumPropagation", rays->GetMaximumPropagation() },
-    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() }
-  };
+    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() } };
   this->PropertiesWidget->Show("<b>Inside view</b> (the scene's rays)", specs, values,
-    [this](const nlohmann::json& changes)
-    {
+    [this](const nlohmann::json& changes) {
       vtkRiemannIntegrationSettings* settings = this->Doc->RaySettings();
       for (const auto& entry : changes.items())
       {
@@ -630,12 +580,11 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
         if (error.isEmpty())
         {
           this->EditorWidget->SetText(QString::fromStdString(this->Doc->MetricText()));
-          this->InsideWidget->SetBackend(
-            project.Backend == "cpu" ? InsideView::CPU : InsideView::GPU);
+          this->InsideWidget->SetBackend(project.Backend == "cpu" ? InsideView::CPU : InsideView::GPU);
           this->InsideWidget->SetSamplesPerPixel(project.Samples);
           this->SetViewLayout(project.Views == "inside" ? InsideOnly
-              : project.Views == "outside"              ? OutsideOnly
-                                                        : BothViews);
+              : project.Views == "outside"             ? OutsideOnly
+                                                       : BothViews);
           if (project.HasOutsideCamera)
           {
             project.OutsideCamera.To(this->OutsideWidget->Renderer()->GetActiveCamera());
@@ -692,8 +641,8 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
     this->ShowMessage(error, true);
     if (showDialog)
     {
-      QMessageBox::warning(
-        this, "Cannot open " + QFileInfo(path).fileName(), error + "\n\nNothing was changed.");
+      QMessageBox::warning(this, "Cannot open " + QFileInfo(path).fileName(),
+        error + "\n\nNothing was changed.");
     }
     return error;
   }
@@ -751,8 +700,7 @@ QString StudioMainWindow::ExportItemData(PipelineItem* item, const QString& path
     // Port 0 at the path given; other ports next to it (name-1.vtp, ...).
     const QString target = port == 0
       ? path
-      : info.dir().filePath(
-          info.completeBaseName() + QStringLiteral("-%1.").arg(port) + (image ? "vti" : "vtp"));
+      : info.dir().filePath(info.completeBaseName() + QStringLiteral("-%1.").arg(port) + (image ? "vti" : "vtp"));
     // Whole or not at all: write a temporary file next to it, then rename.
     const QString temporary = target + ".part";
     vtkSmartPointer<vtkXMLWriter> writer;
@@ -846,8 +794,7 @@ QString StudioMainWindow::ExportFrames(const QString& folder, int count)
     {
       this->Settle();
     }
-    error = this->SaveScreenshot(
-      QDir(folder).filePath(QString::asprintf("frame-%04d.png", k)), InsideShot);
+    error = this->SaveScreenshot(QDir(folder).filePath(QString::asprintf("frame-%04d.png", k)), InsideShot);
     this->Progress->setVisible(true);
     this->Progress->setValue(1000 * (k + 1) / count);
     QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
@@ -890,8 +837,7 @@ QString StudioMainWindow::AskOpenPath(const QString& title, const QString& filte
   return QFileDialog::getOpenFileName(this, title, QString(), filter);
 }
 
-QString StudioMainWindow::AskSavePath(
-  const QString& title, const QString& filter, const QString& suffix)
+QString StudioMainWindow::AskSavePath(const QString& title, const QString& filter, const QString& suffix)
 {
   QString path = QFileDialog::getSaveFileName(this, title, QString(), filter);
   if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
@@ -905,9 +851,8 @@ void StudioMainWindow::UpdateTitle()
 {
   const QString project = this->ProjectPath.isEmpty() ? QStringLiteral("untitled")
                                                       : QFileInfo(this->ProjectPath).fileName();
-  this->setWindowTitle(
-    QStringLiteral("%1 - %2 - Riemann Studio")
-      .arg(project, QString::fromStdString(this->Doc->Metric()->GetDescription())));
+  this->setWindowTitle(QStringLiteral("%1 - %2 - Riemann Studio")
+                         .arg(project, QString::fromStdString(this->Doc->Metric()->GetDescription())));
 }
 
 void StudioMainWindow::closeEvent(QCloseEvent* event)

@@ -11,7 +11,6 @@
 #include "vtkNrrdReader.h"
 #include "vtkPointData.h"
 
-#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -21,55 +20,38 @@ namespace riemann
 {
 namespace
 {
-/// Where each of VTK's six components (XX, YY, ZZ, XY, YZ, XZ) is in a
-/// file's tuple of `count` values, for the component orders of the formats.
-using ComponentMap = std::array<int, 6>;
-constexpr ComponentMap NiftiSymmetricMatrix = { 0, 2, 5, 1, 4, 3 }; // XX XY YY XZ YZ ZZ
-constexpr ComponentMap UpperTriangle = { 0, 3, 5, 1, 4, 2 };        // XX XY XZ YY YZ ZZ
+/// Which values of a file's tuple become the "Tensors" components: VTK's
+/// six (XX, YY, ZZ, XY, YZ, XZ) from the formats' orders, or all nine of a
+/// row-major tensor (TensorGridFromImage checks that it is symmetric).
+using ComponentPicks = std::vector<int>;
+const ComponentPicks NiftiSymmetricMatrix = { 0, 2, 5, 1, 4, 3 }; // XX XY YY XZ YZ ZZ
+const ComponentPicks UpperTriangle = { 0, 3, 5, 1, 4, 2 };        // XX XY XZ YY YZ ZZ
+const ComponentPicks MaskedUpperTriangle = { 1, 4, 6, 2, 5, 3 };  // confidence, then as above
+const ComponentPicks RowMajor = { 0, 1, 2, 3, 4, 5, 6, 7, 8 };
 
-/// A "Tensors" array in VTK's order from `source`'s tuples, each value
-/// times `slope` plus `intercept`, starting `skip` values into each tuple.
-vtkSmartPointer<vtkDoubleArray> Reordered(
-  vtkDataArray* source, const ComponentMap& map, int skip, double slope, double intercept)
+/// Make `image`'s point data the one array "Tensors": the `picks` of each
+/// tuple of `source`, times `slope` plus `intercept`.
+void SetTensors(vtkImageData* image, vtkDataArray* source, const ComponentPicks& picks,
+  double slope, double intercept)
 {
-  auto tensors = vtkSmartPointer<vtkDoubleArray>::New();
+  vtkNew<vtkDoubleArray> tensors;
   tensors->SetName("Tensors");
-  tensors->SetNumberOfComponents(6);
+  tensors->SetNumberOfComponents(static_cast<int>(picks.size()));
   tensors->SetNumberOfTuples(source->GetNumberOfTuples());
-  const int count = source->GetNumberOfComponents();
-  std::vector<double> tuple(static_cast<std::size_t>(count));
+  std::vector<double> tuple(static_cast<std::size_t>(source->GetNumberOfComponents()));
+  std::vector<double> value(picks.size());
   for (vtkIdType i = 0; i < source->GetNumberOfTuples(); ++i)
   {
     source->GetTuple(i, tuple.data());
-    double value[6];
-    for (int c = 0; c < 6; ++c)
+    for (std::size_t c = 0; c < picks.size(); ++c)
     {
-      value[c] = tuple[static_cast<std::size_t>(skip + map[c])] * slope + intercept;
+      value[c] = tuple[static_cast<std::size_t>(picks[c])] * slope + intercept;
     }
-    tensors->SetTypedTuple(i, value);
+    tensors->SetTypedTuple(i, value.data());
   }
-  return tensors;
-}
-
-/// 9-component tensors, scaled, as "Tensors" (TensorGridFromImage checks
-/// that they are symmetric).
-vtkSmartPointer<vtkDoubleArray> RowMajorCopy(vtkDataArray* source, double slope, double intercept)
-{
-  auto tensors = vtkSmartPointer<vtkDoubleArray>::New();
-  tensors->SetName("Tensors");
-  tensors->SetNumberOfComponents(9);
-  tensors->SetNumberOfTuples(source->GetNumberOfTuples());
-  double tuple[9];
-  for (vtkIdType i = 0; i < source->GetNumberOfTuples(); ++i)
-  {
-    source->GetTuple(i, tuple);
-    for (double& v : tuple)
-    {
-      v = v * slope + intercept;
-    }
-    tensors->SetTypedTuple(i, tuple);
-  }
-  return tensors;
+  image->GetPointData()->Initialize();
+  image->GetPointData()->AddArray(tensors);
+  image->GetPointData()->SetActiveTensors("Tensors");
 }
 
 /// The scalars of a reader's output, or an error naming what was found.
@@ -165,17 +147,7 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
     slope = 1.0; // NIfTI: scl_slope 0 means "no scaling"
     intercept = 0.0;
   }
-  vtkSmartPointer<vtkDoubleArray> tensors;
-  if (count == 6)
-  {
-    tensors =
-      Reordered(scalars, symmatrix ? NiftiSymmetricMatrix : UpperTriangle, 0, slope, intercept);
-  }
-  else if (count == 9)
-  {
-    tensors = RowMajorCopy(scalars, slope, intercept);
-  }
-  else
+  if (count != 6 && count != 9)
   {
     std::ostringstream message;
     message << "the NIfTI image has " << count
@@ -183,9 +155,11 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
                "or 9";
     throw std::runtime_error(message.str());
   }
-  image->GetPointData()->Initialize();
-  image->GetPointData()->AddArray(tensors);
-  image->GetPointData()->SetActiveTensors("Tensors");
+  SetTensors(image, scalars,
+    count == 9    ? RowMajor
+      : symmatrix ? NiftiSymmetricMatrix
+                  : UpperTriangle,
+    slope, intercept);
 
   // Step 2: the placement, q-form first.
   if (header->GetQFormCode() > 0 && reader->GetQFormMatrix())
@@ -204,8 +178,7 @@ vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
   vtkNew<vtkNrrdReader> reader;
   if (!reader->CanReadFile(path.c_str()))
   {
-    throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw, ascii or gzip "
-                             "encoding)");
+    throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
   }
   reader->SetFileName(path.c_str());
   reader->Update();
@@ -213,16 +186,7 @@ vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
   image->ShallowCopy(reader->GetOutput());
   vtkDataArray* scalars = OnlyArray(image, "NRRD");
   const int count = scalars->GetNumberOfComponents();
-  vtkSmartPointer<vtkDoubleArray> tensors;
-  if (count == 6 || count == 7)
-  {
-    tensors = Reordered(scalars, UpperTriangle, count == 7 ? 1 : 0, 1.0, 0.0);
-  }
-  else if (count == 9)
-  {
-    tensors = RowMajorCopy(scalars, 1.0, 0.0);
-  }
-  else
+  if (count != 6 && count != 7 && count != 9)
   {
     std::ostringstream message;
     message << "the NRRD image has " << count
@@ -230,9 +194,11 @@ vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
                "(3D-masked-symmetric-matrix) or 9";
     throw std::runtime_error(message.str());
   }
-  image->GetPointData()->Initialize();
-  image->GetPointData()->AddArray(tensors);
-  image->GetPointData()->SetActiveTensors("Tensors");
+  SetTensors(image, scalars,
+    count == 9     ? RowMajor
+      : count == 7 ? MaskedUpperTriangle
+                   : UpperTriangle,
+    1.0, 0.0);
   return image;
 }
 } // namespace riemann

@@ -17,11 +17,11 @@
 #define RiemannRay_h
 
 #include "RiemannRenderingCoreExport.h" // For export macro
-#include "RiemannScene.h"
 #include "RiemannSceneIntersection.h"
+#include "RiemannScene.h"
 
 #include "GeodesicTrace.h" // For TerminationReason
-#include "Integrators.h"   // For GeodesicStepper
+#include "Integrators.h" // For GeodesicStepper
 #include "Metric.h"
 #include "PacketKernels.h" // For AdvanceRayPacket
 
@@ -68,8 +68,8 @@ RIEMANNRENDERINGCORE_EXPORT void AdvanceRayPacket(
  * while (ray.Advance(metric))         // false: ended (length, steps, failure)
  * {
  *   SceneHit hit;
- *   if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit)) { ray.Hit(hit); break;
- * } ray.Miss();
+ *   if (IntersectSegment(scene, ray.SegmentStart(), ray.SegmentEnd(), hit)) { ray.Hit(hit); break; }
+ *   ray.Miss();
  * }
  * @endcode
  */
@@ -140,8 +140,8 @@ class MeshIntersector;
  * only the end state is kept (no allocation). With `meshes` (the scene's
  * triangle meshes in Embree) each segment is intersected with them too.
  */
-RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& scene, const Vec3& p,
-  const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
+RIEMANNRENDERINGCORE_EXPORT void TraceRay(const Metric& metric, const Scene& scene,
+  const Vec3& p, const Vec3& v, const RaySettings& settings, RayPath& path, bool recordPath = true,
   const MeshIntersector* meshes = nullptr);
 
 /**

@@ -28,7 +28,6 @@
 #include <string>
 #include <vector>
 
-
 int main(int argc, char** argv)
 {
   RenderBenchmarkOptions options;
@@ -78,7 +77,8 @@ int main(int argc, char** argv)
   {
     pass->SetScene(scene.Object);
     scene.Object->ApplyCamera(renderer->GetActiveCamera());
-    for (int integrator : { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
+    for (int integrator :
+      { vtkRiemannIntegrationSettings::EULER, vtkRiemannIntegrationSettings::RUNGE_KUTTA4 })
     {
       pass->GetIntegrationSettings()->SetIntegratorType(integrator);
       for (int steps : { 100, 300, 1000 })
@@ -92,17 +92,7 @@ int main(int argc, char** argv)
                       "|---|---|---|---|---|---|\n");
           first = false;
         }
-        std::vector<double> seconds;
-        for (int r = 0; r < repetitions; ++r)
-        {
-          const auto start = std::chrono::steady_clock::now();
-          window->Render();
-          window->WaitForCompletion();
-          seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-        std::sort(seconds.begin(), seconds.end());
-        const double median = seconds[seconds.size() / 2];
+        const double median = MedianFrameSeconds(window, repetitions);
         char throughput[64] = "-";
         if (scene.Object == emptyScene.GetPointer())
         {

@@ -7,9 +7,11 @@
 #include "vtkRenderWindow.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #ifndef RIEMANN_SOURCE_DIR
 #define RIEMANN_SOURCE_DIR "."
@@ -50,6 +52,23 @@ inline bool ParseRenderBenchmarkOptions(
     }
   }
   return true;
+}
+
+/// The median wall time of `repetitions` frames of `window` (each waits
+/// for the GPU to finish).
+inline double MedianFrameSeconds(vtkRenderWindow* window, int repetitions)
+{
+  std::vector<double> seconds;
+  for (int r = 0; r < repetitions; ++r)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    seconds.push_back(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(seconds.begin(), seconds.end());
+  return seconds[seconds.size() / 2];
 }
 
 /// Only the "OpenGL renderer string" line of VTK's long capability report.

@@ -19,29 +19,16 @@
 #include "RenderBenchmarkOptions.h"
 #include "SampledLensImage.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
-#include <vector>
 
 namespace
 {
-/// Median seconds of `repetitions` frames (after one that compiles and uploads).
+/// Median seconds of `repetitions` frames, after one that compiles and uploads.
 double MedianFrame(vtkRenderWindow* window, int repetitions)
 {
   window->Render();
-  std::vector<double> seconds;
-  for (int r = 0; r < repetitions; ++r)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    window->WaitForCompletion();
-    seconds.push_back(
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  return seconds[seconds.size() / 2];
+  return MedianFrameSeconds(window, repetitions);
 }
 } // namespace
 

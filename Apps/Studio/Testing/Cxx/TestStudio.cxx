@@ -18,21 +18,21 @@
 #include "vtkRiemannScene.h"
 
 #include "QVTKOpenGLNativeWidget.h"
-#include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCoordinate.h"
 #include "vtkDataArray.h"
-#include "vtkHandleWidget.h"
-#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPropCollection.h"
+#include "vtkAssembly.h"
+#include "vtkCoordinate.h"
+#include "vtkHandleWidget.h"
+#include "vtkImageData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProp3DCollection.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkXMLPolyDataReader.h"
 
@@ -120,8 +120,8 @@ int DistinctColors(const QImage& image)
 QString DataFile(const QString& relative)
 {
   const QByteArray dir = qgetenv("RIEMANN_DATA_DIR");
-  return (dir.isEmpty() ? QStringLiteral(RIEMANN_TEST_DATA_DIR) : QString::fromLocal8Bit(dir)) +
-    "/" + relative;
+  return (dir.isEmpty() ? QStringLiteral(RIEMANN_TEST_DATA_DIR) : QString::fromLocal8Bit(dir)) + "/" +
+    relative;
 }
 
 /// A scene quick to trace on llvmpipe (short coarse rays, two spheres and a
@@ -146,6 +146,24 @@ QString WriteQuickScene(const QTemporaryDir& folder)
 })json");
   }
   return path;
+}
+
+/// Export the session as a Python script (session.py in `folder`) and run
+/// it with /usr/bin/python3 --output-dir folder/out: true when it exits with
+/// 0; `output` holds what it printed (or why it could not run).
+bool RunExportedScript(StudioMainWindow& window, const QTemporaryDir& folder, QString& output)
+{
+  const QString script = folder.filePath("session.py");
+  output = window.ExportPythonScript(script);
+  if (!output.isEmpty())
+  {
+    return false;
+  }
+  QProcess python;
+  python.start("/usr/bin/python3", { script, "--output-dir", folder.filePath("out") });
+  const bool finished = python.waitForFinished(120000);
+  output = QString::fromUtf8(python.readAllStandardOutput() + python.readAllStandardError());
+  return finished && python.exitCode() == 0;
 }
 
 bool WaitForJobs(StudioMainWindow& window, int milliseconds = 60000)
@@ -418,8 +436,7 @@ void TestStudio::ProjectRoundTrip()
     QVERIFY(window->OpenFile(WriteQuickScene(folder), false).isEmpty());
     QVERIFY(window->Document()->SetParameterValue("/parameters/a", 0.5).Ok());
     PipelineItem* geodesics = window->Document()->AddItem("geodesics");
-    QVERIFY(
-      geodesics->ApplySettings({ { "NumberOfDirections", 7 }, { "ConeAngle", 25.0 } }).isEmpty());
+    QVERIFY(geodesics->ApplySettings({ { "NumberOfDirections", 7 }, { "ConeAngle", 25.0 } }).isEmpty());
     geodesics->SetName("Fan");
     PipelineItem* bundle = window->Document()->AddItem("ray-bundle");
     bundle->SetVisible(false);
@@ -431,8 +448,7 @@ void TestStudio::ProjectRoundTrip()
     outside = window->Outside()->Capture();
     for (const auto& item : window->Document()->Items())
     {
-      items.push_back(
-        { item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
+      items.push_back({ item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
     }
   }
   auto window = OpenWindow();
@@ -442,12 +458,10 @@ void TestStudio::ProjectRoundTrip()
   nlohmann::json reopened = nlohmann::json::array();
   for (const auto& item : window->Document()->Items())
   {
-    reopened.push_back(
-      { item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
+    reopened.push_back({ item->Kind(), item->Name().toStdString(), item->IsVisible(), item->Settings() });
   }
   QCOMPARE(QString::fromStdString(reopened.dump()), QString::fromStdString(items.dump()));
-  QCOMPARE(
-    window->Browser()->Row(window->Document()->Items().front().get())->text(1), QString("Fan"));
+  QCOMPARE(window->Browser()->Row(window->Document()->Items().front().get())->text(1), QString("Fan"));
   QCOMPARE(DifferentPixels(inside, window->Inside()->Capture()), 0.0);
   QVERIFY(DifferentPixels(outside, window->Outside()->Capture()) < 0.001);
 }
@@ -502,16 +516,14 @@ void TestStudio::BadProjectIsRefusedWithDialog()
   file.close();
   const std::string metric = window->Document()->MetricText();
   QString dialogText;
-  QTimer::singleShot(200,
-    [&dialogText]()
+  QTimer::singleShot(200, [&dialogText]() {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (box)
     {
-      auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-      if (box)
-      {
-        dialogText = box->text();
-        box->accept();
-      }
-    });
+      dialogText = box->text();
+      box->accept();
+    }
+  });
   const QString error = window->OpenFile(path, true);
   QVERIFY2(dialogText.contains("items[0].settings: Cone angle: must be in [0, 180]"),
     qPrintable(dialogText));
@@ -585,20 +597,13 @@ void TestStudio::PythonTraceRebuildsPipeline()
   window->Document()->SetParameterValue("/parameters/a", 0.7);
   QVERIFY(WaitForJobs(*window));
   QTemporaryDir folder;
-  const QString script = folder.filePath("session.py");
-  QVERIFY(window->ExportPythonScript(script).isEmpty());
-  QProcess python;
-  python.start("/usr/bin/python3", { script, "--output-dir", folder.filePath("out") });
-  QVERIFY(python.waitForFinished(120000));
-  const QString output =
-    QString::fromUtf8(python.readAllStandardOutput() + python.readAllStandardError());
-  QVERIFY2(python.exitCode() == 0, qPrintable(output));
+  QString output;
+  QVERIFY2(RunExportedScript(*window, folder, output), qPrintable(output));
   // The script's filters give the app's results, point for point.
   for (const auto& item : window->Document()->Items())
   {
     const vtkIdType points = vtkPolyData::SafeDownCast(item->Result(0))->GetNumberOfPoints();
-    QVERIFY2(
-      output.contains(QString("%1: vtkPolyData with %2 points").arg(item->Name()).arg(points)),
+    QVERIFY2(output.contains(QString("%1: vtkPolyData with %2 points").arg(item->Name()).arg(points)),
       qPrintable(output));
     QVERIFY(QFileInfo::exists(folder.filePath("out/" + item->Name() + ".vtp")));
   }
@@ -614,8 +619,8 @@ void TestStudio::CommandLineScreenshot()
   QTemporaryDir folder;
   const QString shot = folder.filePath("shot.png");
   QProcess app;
-  app.start(binary,
-    { WriteQuickScene(folder), "--screenshot", shot, "--view", "both", "--size", "900x500" });
+  app.start(binary, { WriteQuickScene(folder), "--screenshot", shot, "--view", "both",
+                      "--size", "900x500" });
   QVERIFY(app.waitForFinished(180000));
   QVERIFY2(app.exitCode() == 0, app.readAllStandardError().constData());
   const QImage image(shot);
@@ -678,8 +683,7 @@ void TestStudio::CpuBackendSeesWhatTheGpuSees()
     {
       const QColor a = gpu.pixelColor(column, row), b = cpu.pixelColor(column, row);
       far += std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) +
-          std::abs(a.blue() - b.blue()) >
-        60;
+          std::abs(a.blue() - b.blue()) > 60;
     }
   }
   QVERIFY2(far < gpu.width() * gpu.height() / 20, qPrintable(QString("%1 pixels differ").arg(far)));
@@ -724,8 +728,7 @@ void TestStudio::ExportsWriteWholeFiles()
   const QString both = folder.filePath("both.png");
   QCOMPARE(window->SaveScreenshot(both, StudioMainWindow::BothShot), QString());
   const QImage shot(both);
-  QCOMPARE(
-    shot.width(), window->Inside()->Capture().width() + window->Outside()->Capture().width());
+  QCOMPARE(shot.width(), window->Inside()->Capture().width() + window->Outside()->Capture().width());
 }
 
 void TestStudio::FieldItemShowsCurvature()
@@ -746,12 +749,10 @@ void TestStudio::FieldItemShowsCurvature()
   QVERIFY(scalar);
   for (vtkIdType i = 0; i < scalar->GetNumberOfTuples(); ++i)
   {
-    QVERIFY2(std::abs(scalar->GetTuple1(i) - 6.0) < 1e-6,
-      qPrintable(QString::number(scalar->GetTuple1(i))));
+    QVERIFY2(std::abs(scalar->GetTuple1(i) - 6.0) < 1e-6, qPrintable(QString::number(scalar->GetTuple1(i))));
   }
   // What the outside view draws: the slice through the centre, coloured by it.
-  auto shown = [field]()
-  {
+  auto shown = [field]() {
     vtkProp3DCollection* parts = field->Prop()->GetParts();
     parts->InitTraversal();
     auto* actor = vtkActor::SafeDownCast(parts->GetNextProp3D());
@@ -763,17 +764,13 @@ void TestStudio::FieldItemShowsCurvature()
   QCOMPARE(bounds[4], 0.0); // the z = 0 slice
   QCOMPARE(bounds[5], 0.0);
   // Glyphs of the metric tensor: g = n^2 I, so every glyph is a sphere.
-  QVERIFY(field
-            ->ApplySettings({ { "Field", "metric-tensor" }, { "Representation", "glyphs" },
-              { "ColorArray", "Solid" } })
-            .isEmpty());
+  QVERIFY(field->ApplySettings({ { "Field", "metric-tensor" }, { "Representation", "glyphs" },
+                                 { "ColorArray", "Solid" } }).isEmpty());
   QVERIFY(WaitForJobs(*window));
   QVERIFY(shown()->GetNumberOfPoints() > 100);
   // An isosurface of the volume form sqrt(det g) = n^3 = 1: the sphere r = 1.
-  QVERIFY(field
-            ->ApplySettings({ { "Field", "volume-form" }, { "Representation", "isosurface" },
-              { "ContourValue", 1.0 }, { "ColorArray", "VolumeForm" } })
-            .isEmpty());
+  QVERIFY(field->ApplySettings({ { "Field", "volume-form" }, { "Representation", "isosurface" },
+                                 { "ContourValue", 1.0 }, { "ColorArray", "VolumeForm" } }).isEmpty());
   QVERIFY(WaitForJobs(*window));
   vtkPolyData* surface = shown();
   QVERIFY(surface->GetNumberOfPoints() > 50);
@@ -781,8 +778,7 @@ void TestStudio::FieldItemShowsCurvature()
   {
     double p[3];
     surface->GetPoint(i, p);
-    QVERIFY2(
-      std::abs(vtkMath::Norm(p) - 1.0) < 0.05, qPrintable(QString::number(vtkMath::Norm(p))));
+    QVERIFY2(std::abs(vtkMath::Norm(p) - 1.0) < 0.05, qPrintable(QString::number(vtkMath::Norm(p))));
   }
 }
 
@@ -804,8 +800,7 @@ void TestStudio::DraggingTheEyeMovesTheObserver()
   const QPoint start(int(display[0]), height - 1 - int(display[1]));
   const QPoint end = start + QPoint(40, 25);
   // A real drag: press, move with the button held, release.
-  auto send = [outside](QEvent::Type type, QPoint at, Qt::MouseButtons buttons)
-  {
+  auto send = [outside](QEvent::Type type, QPoint at, Qt::MouseButtons buttons) {
     QMouseEvent event(type, at, outside->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
     QApplication::sendEvent(outside, &event);
   };
@@ -819,8 +814,7 @@ void TestStudio::DraggingTheEyeMovesTheObserver()
   double moved[3], movedFocal[3];
   observer->GetPosition(moved);
   observer->GetFocalPoint(movedFocal);
-  QVERIFY2(
-    std::sqrt(vtkMath::Distance2BetweenPoints(eye, moved)) > 0.05, "the observer did not move");
+  QVERIFY2(std::sqrt(vtkMath::Distance2BetweenPoints(eye, moved)) > 0.05, "the observer did not move");
   // Eye and look-at point moved together: same view direction.
   for (int i = 0; i < 3; ++i)
   {
@@ -831,13 +825,8 @@ void TestStudio::DraggingTheEyeMovesTheObserver()
   outside->Frustum()->GetPoint(0, apex);
   // (vtkPoints hold floats.)
   QVERIFY2(vtkMath::Distance2BetweenPoints(apex, moved) < 1e-10,
-    qPrintable(QString("apex %1 %2 %3, eye %4 %5 %6")
-                 .arg(apex[0])
-                 .arg(apex[1])
-                 .arg(apex[2])
-                 .arg(moved[0])
-                 .arg(moved[1])
-                 .arg(moved[2])));
+    qPrintable(QString("apex %1 %2 %3, eye %4 %5 %6").arg(apex[0]).arg(apex[1]).arg(apex[2])
+      .arg(moved[0]).arg(moved[1]).arg(moved[2])));
 }
 
 int main(int argc, char* argv[])
@@ -867,14 +856,8 @@ void TestStudio::SampledMetricReadsItsVolumeFromItsFolder()
     QCOMPARE(QString(metric->GetDataDirectory()), metricFolder);
     QCOMPARE(QString::fromStdString(metric->GetFamilyName()), QString("tensor"));
 
-    const QString script = folder.filePath("session.py");
-    QVERIFY(window->ExportPythonScript(script).isEmpty());
-    QProcess python;
-    python.start("/usr/bin/python3", { script, "--output-dir", folder.filePath("out") });
-    QVERIFY(python.waitForFinished(120000));
-    const QString output =
-      QString::fromUtf8(python.readAllStandardOutput() + python.readAllStandardError());
-    QVERIFY2(python.exitCode() == 0, qPrintable(output));
+    QString output;
+    QVERIFY2(RunExportedScript(*window, folder, output), qPrintable(output));
     QVERIFY(window->SaveProject(project).isEmpty());
   }
   // The project lives in another folder than the volume: it keeps the
