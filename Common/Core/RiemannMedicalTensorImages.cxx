@@ -1,5 +1,6 @@
 #include "RiemannMedicalTensorImages.h"
 
+#include "vtkCharArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -9,9 +10,13 @@
 #include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 
+#include <array>
 #include <cmath>
+#include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -119,6 +124,195 @@ void PlaceByMatrix(vtkImageData* image, vtkMatrix4x4* matrix, const char* which)
   image->SetSpacing(newSpacing);
   image->SetDirectionMatrix(direction);
 }
+/**
+ * vtkNrrdReader, blind to the header's "space" and "space dimension" lines:
+ * they are made comments of the same length before it parses the header.
+ * VTK 9.1 lets either line reset the array's dimension to 3, so a 4D tensor
+ * file in the usual order (dimension, space, sizes: Slicer's and Teem's)
+ * lost its last axis; a left-handed "space" also flipped the rows. The
+ * placement comes from ApplyNrrdSpace instead.
+ */
+class SpaceBlindNrrdReader : public vtkNrrdReader
+{
+public:
+  static SpaceBlindNrrdReader* New();
+  vtkTypeMacro(SpaceBlindNrrdReader, vtkNrrdReader);
+
+protected:
+  SpaceBlindNrrdReader() = default;
+  ~SpaceBlindNrrdReader() override = default;
+
+  int ReadHeader(vtkCharArray* header) override
+  {
+    char* text = header->GetPointer(0);
+    const std::string copy(text, static_cast<std::size_t>(header->GetNumberOfTuples()));
+    for (std::size_t start = 0; start < copy.size();)
+    {
+      if (copy.compare(start, 7, "space: ") == 0 ||
+        copy.compare(start, 17, "space dimension: ") == 0)
+      {
+        text[start] = '#';
+      }
+      const std::size_t end = copy.find('\n', start);
+      start = end == std::string::npos ? copy.size() : end + 1;
+    }
+    return this->Superclass::ReadHeader(header);
+  }
+
+private:
+  SpaceBlindNrrdReader(const SpaceBlindNrrdReader&) = delete;
+  void operator=(const SpaceBlindNrrdReader&) = delete;
+};
+vtkStandardNewMacro(SpaceBlindNrrdReader);
+
+/// The "field: value" lines of a NRRD header, up to the blank line that ends
+/// an attached header (a detached .nhdr is all header). Comments and
+/// "key:=value" pairs are skipped.
+std::map<std::string, std::string> ReadNrrdHeaderFields(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::map<std::string, std::string> fields;
+  std::string line;
+  std::getline(in, line); // the magic, NRRD000X
+  while (std::getline(in, line))
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      break;
+    }
+    const std::size_t colon = line.find(": ");
+    if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
+    {
+      fields[line.substr(0, colon)] = line.substr(colon + 2);
+    }
+  }
+  return fields;
+}
+
+/// The vectors "(a,b,c)" of a NRRD field's value, in order; "none" gives no vector.
+std::vector<std::array<double, 3>> NrrdVectors(const std::string& value, const std::string& field)
+{
+  std::vector<std::array<double, 3>> vectors;
+  std::size_t at = 0;
+  while ((at = value.find_first_not_of(" \t", at)) != std::string::npos)
+  {
+    if (value.compare(at, 4, "none") == 0)
+    {
+      at += 4;
+      continue;
+    }
+    const std::size_t close = value.find(')', at);
+    std::array<double, 3> v;
+    char open = 0, comma1 = 0, comma2 = 0;
+    std::istringstream text(close == std::string::npos ? "" : value.substr(at, close - at));
+    text >> open >> v[0] >> comma1 >> v[1] >> comma2 >> v[2];
+    if (value[at] != '(' || close == std::string::npos || !text || open != '(' || comma1 != ',' ||
+      comma2 != ',' || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    {
+      throw std::runtime_error("the NRRD field \"" + field + ": " + value +
+        "\" is not a list of 3D vectors (x,y,z) and none");
+    }
+    vectors.push_back(v);
+    at = close + 1;
+  }
+  return vectors;
+}
+
+/**
+ * Place a NRRD volume by its "space directions" (the world step along each
+ * voxel axis) and "space origin" (the first voxel's centre), as the file
+ * says, and turn its tensors from the "measurement frame" (columns: the
+ * frame's axes in world coordinates) to world axes: D -> M D M^T.
+ */
+void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
+{
+  const std::map<std::string, std::string> fields = ReadNrrdHeaderFields(path);
+  const auto directions = fields.find("space directions");
+  if (directions != fields.end())
+  {
+    const auto axes = NrrdVectors(directions->second, directions->first);
+    if (axes.size() != 3)
+    {
+      throw std::runtime_error("the NRRD field \"space directions\" gives " +
+        std::to_string(axes.size()) + " voxel axes; a tensor volume has 3");
+    }
+    vtkNew<vtkMatrix4x4> voxelToWorld;
+    std::array<double, 3> origin = { 0.0, 0.0, 0.0 };
+    const auto spaceOrigin = fields.find("space origin");
+    if (spaceOrigin != fields.end())
+    {
+      const auto points = NrrdVectors(spaceOrigin->second, spaceOrigin->first);
+      if (points.size() != 1)
+      {
+        throw std::runtime_error("the NRRD field \"space origin\" is not one point (x,y,z)");
+      }
+      origin = points[0];
+    }
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        voxelToWorld->SetElement(
+          r, c, axes[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)]);
+      }
+      voxelToWorld->SetElement(r, 3, origin[static_cast<std::size_t>(r)]);
+    }
+    image->SetOrigin(0.0, 0.0, 0.0);
+    image->SetSpacing(1.0, 1.0, 1.0);
+    PlaceByMatrix(image, voxelToWorld, "\"space directions\"");
+  }
+
+  const auto frame = fields.find("measurement frame");
+  if (frame == fields.end())
+  {
+    return;
+  }
+  const auto columns = NrrdVectors(frame->second, frame->first);
+  if (columns.size() != 3)
+  {
+    throw std::runtime_error("the NRRD field \"measurement frame\" is not three 3D vectors");
+  }
+  vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
+  const bool six = tensors->GetNumberOfComponents() == 6;
+  // VTK's order of the six: XX, YY, ZZ, XY, YZ, XZ; nine are row-major.
+  const int six_row[6] = { 0, 1, 2, 0, 1, 0 }, six_column[6] = { 0, 1, 2, 1, 2, 2 };
+  std::vector<double> tuple(static_cast<std::size_t>(tensors->GetNumberOfComponents()));
+  for (vtkIdType i = 0; i < tensors->GetNumberOfTuples(); ++i)
+  {
+    tensors->GetTuple(i, tuple.data());
+    double d[3][3];
+    for (int k = 0; k < (six ? 6 : 9); ++k)
+    {
+      const int r = six ? six_row[k] : k / 3, c = six ? six_column[k] : k % 3;
+      d[r][c] = d[c][r] = tuple[static_cast<std::size_t>(k)];
+    }
+    double world[3][3] = {};
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          for (int b = 0; b < 3; ++b)
+          {
+            world[r][c] += columns[static_cast<std::size_t>(a)][static_cast<std::size_t>(r)] *
+              d[a][b] * columns[static_cast<std::size_t>(b)][static_cast<std::size_t>(c)];
+          }
+        }
+      }
+    }
+    for (int k = 0; k < (six ? 6 : 9); ++k)
+    {
+      tuple[static_cast<std::size_t>(k)] =
+        six ? world[six_row[k]][six_column[k]] : world[k / 3][k % 3];
+    }
+    tensors->SetTuple(i, tuple.data());
+  }
+}
 } // namespace
 
 vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
@@ -175,7 +369,7 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
 
 vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
 {
-  vtkNew<vtkNrrdReader> reader;
+  vtkNew<SpaceBlindNrrdReader> reader;
   if (!reader->CanReadFile(path.c_str()))
   {
     throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
@@ -199,6 +393,8 @@ vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
       : count == 7 ? MaskedUpperTriangle
                    : UpperTriangle,
     1.0, 0.0);
+  // vtkNrrdReader (VTK 9.1) keeps only the lengths of "space directions".
+  ApplyNrrdSpace(image, path);
   return image;
 }
 } // namespace riemann

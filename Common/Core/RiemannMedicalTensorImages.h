@@ -35,11 +35,15 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path);
  * Read a NRRD tensor volume: 6 components per voxel in Teem's order (XX,
  * XY, XZ, YY, YZ, ZZ: kind "3D-symmetric-matrix"), 7 (Teem's
  * "3D-masked-symmetric-matrix": a confidence value first, dropped) or 9
- * (row-major), on the axis that comes first. Placed by the spacings and
- * origin vtkNrrdReader reads (it does not read "space directions" as a
- * rotation: such files are placed axis-aligned; it also misreads ASCII
- * encoded doubles, so raw or gzip encodings are the ones to use). Throws
- * std::runtime_error.
+ * (row-major), on the axis that comes first. Placed by the header's "space
+ * directions" (world step along each voxel axis; rotated grids included,
+ * sheared ones refused) and "space origin", read from the header itself
+ * (vtkNrrdReader keeps only the directions' lengths); without them, by the
+ * spacings and origin vtkNrrdReader reads. Tensors given in a "measurement
+ * frame" M (its vectors are M's columns, the frame's axes in world
+ * coordinates) are turned to world axes, D -> M D M^T. vtkNrrdReader
+ * misreads ASCII-encoded doubles, so raw or gzip encodings are the ones to
+ * use. Throws std::runtime_error.
  */
 vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path);
 }

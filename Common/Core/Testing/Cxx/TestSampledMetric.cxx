@@ -16,7 +16,10 @@
 //   (NIfTI's lower-triangle order) placed by a rotated q-form is g itself
 //   in world coordinates; a 4D FSL-style file (six volumes, dtifit's order,
 //   scl_slope 2) and raw NRRD files (Teem's order, 6 and 7 components) give the
-//   inverse of their diffusion tensor; wrong component counts are refused.
+//   inverse of their diffusion tensor; a NRRD file with rotated "space
+//   directions", a "space origin" and a rotated "measurement frame" is the
+//   affine field itself in world coordinates; wrong component counts and
+//   sheared axes are refused.
 #include "vtkRiemannMetric.h"
 
 #include "vtkDoubleArray.h"
@@ -39,6 +42,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 namespace
 {
@@ -371,6 +375,68 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
     path = MetricFile("nrrd.json", R"({"type": "sampled", "file": "dti.nrrd", "inverse": true})");
     ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
     EXPECT_LT((MetricAt(metric, Vec3(0.4, 0.5, 0.6)) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  }
+
+  // NRRD placed by rotated "space directions" and a "space origin", with
+  // its tensors in a rotated "measurement frame" (columns: the frame's axes
+  // in world coordinates): g at world points is the affine field there.
+  {
+    const Mat3 axes = Rotation() * Vec3(0.3, 0.4, 0.5).asDiagonal();
+    const Vec3 origin(-0.8, -0.6, -0.9);
+    const Mat3 frame = Eigen::AngleAxisd(-0.7, Vec3(2, -1, 1).normalized()).toRotationMatrix();
+    const std::uint16_t probe = 1;
+    const bool little = *reinterpret_cast<const unsigned char*>(&probe) == 1;
+    std::ofstream nrrd(Folder() / "oriented.nrrd", std::ios::binary);
+    const auto vector = [](const Vec3& v)
+    {
+      std::ostringstream text;
+      text.precision(17);
+      text << "(" << v[0] << "," << v[1] << ", " << v[2] << ")";
+      return text.str();
+    };
+    nrrd << "NRRD0004\n# oriented diffusion volume\ntype: double\ndimension: 4\nspace: "
+            "right-anterior-superior\nsizes: 6 6 5 4\nspace directions: none "
+         << vector(axes.col(0)) << " " << vector(axes.col(1)) << " " << vector(axes.col(2))
+         << "\nkinds: 3D-symmetric-matrix domain domain domain\nendian: "
+         << (little ? "little" : "big") << "\nencoding: raw\nspace origin: " << vector(origin)
+         << "\nmeasurement frame: " << vector(frame.col(0)) << " " << vector(frame.col(1)) << " "
+         << vector(frame.col(2)) << "\nmodality:=DWMRI\n\n";
+    for (int k = 0; k < 4; ++k)
+    {
+      for (int j = 0; j < 5; ++j)
+      {
+        for (int i = 0; i < 6; ++i)
+        {
+          // Stored in the measurement frame: M^T g M, so that M (M^T g M) M^T = g.
+          const Mat3 d = frame.transpose() * Affine(origin + axes * Vec3(i, j, k)) * frame;
+          const double tuple[6] = { d(0, 0), d(0, 1), d(0, 2), d(1, 1), d(1, 2), d(2, 2) };
+          nrrd.write(reinterpret_cast<const char*>(tuple), sizeof(tuple));
+        }
+      }
+    }
+    nrrd.close();
+    path = MetricFile("oriented.json", R"({"type": "sampled", "file": "oriented.nrrd"})");
+    ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+    for (const Vec3& voxel : { Vec3(1.5, 1.2, 1.3), Vec3(2.6, 2.5, 1.9), Vec3(3.9, 1.7, 1.1) })
+    {
+      // Voxel indices a cell away from the faces, where the B-spline
+      // reproduces affine fields (at the faces the samples are clamped).
+      const Vec3 x = origin + axes * voxel;
+      EXPECT_LT((MetricAt(metric, x) - Affine(x)).cwiseAbs().maxCoeff(), 1e-12)
+        << voxel.transpose();
+    }
+    // Just outside the rotated box: Euclidean.
+    EXPECT_EQ(MetricAt(metric, origin + axes * Vec3(-0.2, 2.0, 2.0)), Mat3::Identity());
+
+    // Sheared axes and malformed vectors are refused, saying which field.
+    std::ofstream sheared(Folder() / "sheared.nhdr");
+    sheared << "NRRD0004\ntype: double\ndimension: 4\nsizes: 6 2 2 2\nspace dimension: 3\n"
+               "space directions: none (1,0,0) (0.5,1,0) (0,0,1)\nkinds: 3D-symmetric-matrix "
+               "domain domain domain\nencoding: raw\nendian: little\ndata file: sheared.raw\n";
+    sheared.close();
+    std::ofstream(Folder() / "sheared.raw", std::ios::binary) << std::string(6 * 8 * 8, '\0');
+    std::string error = ErrorOf(R"({"type": "sampled", "file": "sheared.nhdr"})");
+    EXPECT_NE(error.find("shears the voxel grid"), std::string::npos) << error;
   }
 
   // A NIfTI image of 4 values per voxel is not a tensor volume.
