@@ -80,7 +80,12 @@ InsideView::InsideView(StudioDocument* document, QWidget* parent)
   vtkNew<vtkCallbackCommand> rendered;
   rendered->SetClientData(this);
   rendered->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-    static_cast<InsideView*>(clientData)->ReportPassErrors();
+    auto* view = static_cast<InsideView*>(clientData);
+    view->ReportPassErrors();
+    if (view->CurrentBackend == GPU)
+    {
+      Q_EMIT view->ViewDrawn(view->RayTracePass->GetLastImageSampleDistance());
+    }
   });
   this->ObserverRenderer->AddObserver(vtkCommand::EndEvent, rendered);
 

@@ -7,7 +7,8 @@
  * The renderer's camera is the document's observer. Mouse navigation is
  * ParaView's and F3D's (vtkInteractorStyleTrackballCamera: left drag rotates
  * about the look-at point, right drag or the wheel dollies, middle or
- * Shift+left drag pans). Ctrl+click (or a click in pick mode) picks a pixel:
+ * Shift+left drag pans); while the camera moves, the pass traces fewer rays
+ * to keep up, and the still frame at the end is full resolution. Ctrl+click (or a click in pick mode) picks a pixel:
  * PixelPicked(column, row), row 0 at the bottom as in VTK.
  */
 #ifndef RiemannStudio_InsideView_h
@@ -78,6 +79,9 @@ Q_SIGNALS:
   /// A frame was drawn; milliseconds of the render call (GPU) or trace (CPU).
   void FrameRendered(double milliseconds);
   void RenderFailed(const QString& message);
+  /// The GPU pass drew the view with one ray per d x d pixels (d above 1
+  /// while the camera moves: vtkRiemannRayTracePass::AutoAdjustSampleDistances).
+  void ViewDrawn(double imageSampleDistance);
 
 protected:
   void resizeEvent(QResizeEvent* event) override;

@@ -136,7 +136,14 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
     [this](const QString& message) { this->ShowMessage("Inside view: " + message, true); });
   QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
-    this->FrameTime->setText(QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1));
+    this->LastFrameTime = QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1);
+    this->FrameTime->setText(this->LastFrameTime);
+  });
+  // While the camera moves the pass traces fewer rays: say how many.
+  QObject::connect(this->InsideWidget, &InsideView::ViewDrawn, this, [this](double distance) {
+    this->FrameTime->setText(distance > 1.0
+        ? QStringLiteral("moving: 1 ray per %1 x %1 pixels").arg(distance, 0, 'f', 1)
+        : this->LastFrameTime);
   });
   QObject::connect(this->Doc, &StudioDocument::ItemFinished, this, [this](PipelineItem* item, bool) {
     const QString error = this->Doc->ItemError(item);

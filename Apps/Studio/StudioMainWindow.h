@@ -121,6 +121,8 @@ private:
   TimeBar* TimeWidget;
   QLabel* Message;
   QLabel* FrameTime;
+  /// "frame N ms" of the last still frame (shown again when moving stops).
+  QString LastFrameTime;
   QProgressBar* Progress;
   QPushButton* Cancel;
   QAction* PickAction = nullptr;

@@ -51,9 +51,9 @@ std::string GlslBuilder::Source() const
   return s.str();
 }
 
-MetricGlsl EmitMetricGlsl(const Metric& metric)
+MetricGlsl EmitMetricGlsl(const Metric& metric, const GlslEmitOptions& options)
 {
-  GlslBuilder builder;
+  GlslBuilder builder(options);
   metric.EmitGlsl(builder);
   const std::string& inside = builder.GetInsideDataFunction();
   builder.AddFunction("bool rt_metric_inside(vec3 p)\n"

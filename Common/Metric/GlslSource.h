@@ -52,8 +52,9 @@ struct GlslUniform
 /**
  * A sampler3D uniform of the generated source and the texels it reads: a
  * float texture of Dimensions[0] x [1] x [2] texels of `Components` values
- * each (x fastest), read with texelFetch (no filtering, edges clamped by the
- * code). `Values` is shared with the metric that made it, so emitting the
+ * each (x fastest), read with texelFetch (edges clamped by the code) or,
+ * with GlslEmitOptions::FilteredTextureReads, with texture() (trilinear,
+ * clamped to the edges). `Values` is shared with the metric that made it, so emitting the
  * source every frame copies nothing, and a renderer uploads a texture again
  * only when the pointer changes.
  */
@@ -72,6 +73,20 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// Choices of the emitted source that are the renderer's, not the metric's.
+struct GlslEmitOptions
+{
+  /**
+   * Read a sampled metric's spline with the texture unit's trilinear
+   * filtering (8 reads per sum) instead of weighting 64 texels in the
+   * shader. Fewer reads and far less shader arithmetic, but the
+   * interpolation weights are the texture unit's (8-bit fractions on most
+   * GPUs; float on Mesa's llvmpipe), so g is no longer the CPU's to float
+   * rounding.
+   */
+  bool FilteredTextureReads = false;
+};
+
 /**
  * Collects uniforms and functions while providers emit themselves. Names are
  * numbered in emission order, so the same structure always yields the same text.
@@ -79,6 +94,13 @@ public:
 class RIEMANNCOMMONMETRIC_EXPORT GlslBuilder
 {
 public:
+  GlslBuilder() = default;
+  explicit GlslBuilder(const GlslEmitOptions& options)
+    : Options(options)
+  {
+  }
+  const GlslEmitOptions& GetOptions() const { return this->Options; }
+
   /// A fresh identifier "rt_<stem><n>".
   std::string NewName(const std::string& stem);
   /// Declare a uniform (name from NewName) with its value; returns the name.
@@ -101,6 +123,7 @@ public:
   const std::string& GetInsideDataFunction() const { return this->InsideDataFunction; }
 
 private:
+  GlslEmitOptions Options;
   int Counter = 0;
   std::vector<GlslUniform> Uniforms;
   std::vector<GlslTexture3D> Textures;
@@ -117,7 +140,8 @@ struct MetricGlsl
 };
 
 /// Emit the metric part of the shader; throws GlslUnsupportedError.
-RIEMANNCOMMONMETRIC_EXPORT MetricGlsl EmitMetricGlsl(const Metric& metric);
+RIEMANNCOMMONMETRIC_EXPORT MetricGlsl EmitMetricGlsl(
+  const Metric& metric, const GlslEmitOptions& options = GlslEmitOptions());
 } // namespace riemann
 
 #endif

@@ -83,10 +83,13 @@ public:
     const Vec3& p, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const override;
   std::string Describe() const override;
   /**
-   * The same spline in GLSL: the samples as two RGB float 3D textures
-   * (XX, YY, ZZ and XY, YZ, XZ), the 64 texels around the cell read with
-   * texelFetch and weighted in the shader, so the GPU's g is the CPU's up to
-   * float rounding. With StopOutside, also the InsideData test.
+   * The same spline in GLSL (SampledTensorFieldGlsl.cxx): the samples as two
+   * RGB float 3D textures (XX, YY, ZZ and XY, YZ, XZ). By default the 64
+   * texels around the cell are read with texelFetch and weighted in the
+   * shader, so the GPU's g is the CPU's up to float rounding; with the
+   * builder's FilteredTextureReads, the same sums come from 8 trilinear reads
+   * each (the texture unit's weights). With StopOutside, also the InsideData
+   * test.
    */
   std::string EmitGlsl(GlslBuilder& builder) const override;
 

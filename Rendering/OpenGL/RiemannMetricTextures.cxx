@@ -52,9 +52,11 @@ bool MetricTextures::Update(
     fresh.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
     fresh.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
     fresh.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    fresh.Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    fresh.Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    // Full float precision: the shader weights texels itself (texelFetch).
+    // Linear for the spline's trilinear reads (FilteredTextureReads);
+    // texelFetch, the other way, ignores the filter.
+    fresh.Texture->SetMinificationFilter(vtkTextureObject::Linear);
+    fresh.Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    // Full float precision (32-bit texels, filtered by the texture unit).
     fresh.Texture->SetInternalFormat(wanted.Components == 4 ? GL_RGBA32F : GL_RGB32F);
     fresh.Texture->SetFormat(wanted.Components == 4 ? GL_RGBA : GL_RGB);
     fresh.Texture->SetDataType(GL_FLOAT);

@@ -12,6 +12,7 @@
 #include "RiemannImageIO.h"
 #include "RiemannMeshTextures.h"
 #include "RiemannMetricTextures.h"
+#include "RiemannReducedView.h"
 #include "RiemannScene.h"
 #include "RiemannSceneUniforms.h"
 #include "RiemannShading.h"
@@ -35,6 +36,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -44,6 +46,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -241,6 +244,13 @@ public:
   /// The renderer's actors as one mesh (UseRendererProps).
   riemann::RendererActorMeshes Actors;
 
+  /// The offscreen target of views traced at a lower resolution.
+  riemann::ReducedView Reduced;
+  /// Wall seconds of the last timed ray tracing, at which image sample
+  /// distance (-1: none yet).
+  double TraceSeconds = -1.0;
+  double TraceDistance = 1.0;
+
   /// Keep a built program, dropping the least recently used beyond the cache's size.
   std::map<std::string, CachedProgram>::iterator StoreProgram(
     const std::string& source, std::unique_ptr<vtkOpenGLQuadHelper> quad)
@@ -333,6 +343,8 @@ public:
     this->EnvironmentError.clear();
     this->Meshes.Release(window);
     this->MetricVolumes.Release(window);
+    this->Reduced.Release(window);
+    this->TraceSeconds = -1.0;
     if (this->HitFramebuffer)
     {
       this->HitFramebuffer->ReleaseGraphicsResources(window);
@@ -557,7 +569,9 @@ bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& f
   }
   try
   {
-    frame.MetricGlsl = riemann::EmitMetricGlsl(*frame.Metric);
+    riemann::GlslEmitOptions options;
+    options.FilteredTextureReads = this->FilteredTextureReads;
+    frame.MetricGlsl = riemann::EmitMetricGlsl(*frame.Metric, options);
   }
   catch (const riemann::GlslUnsupportedError& e)
   {
@@ -900,12 +914,6 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
   const int* viewport = frame.Viewport;
   vtkOpenGLState* ostate = frame.Window->GetState();
   const ScopedQuadState quadState(ostate);
-  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-
-  float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
-    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
-  program->SetUniform4f("rt_viewport", window);
   program->SetUniformi("rt_output", 0);
 
   // Every pixel's depth is written (gl_FragDepth), whatever was there.
@@ -918,7 +926,85 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
   frame.Renderer->GetActiveCamera()->GetClippingRange(range);
   const float clipping[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
   program->SetUniform2f("rt_clipping_range", clipping);
+
+  // One ray per pixel, or per d x d pixels magnified (ReducedView).
+  double distance = this->ChooseImageSampleDistance(frame);
+  if (distance > 1.0)
+  {
+    const int width = riemann::TracedPixels(viewport[2], distance);
+    const int height = riemann::TracedPixels(viewport[3], distance);
+    std::string error;
+    riemann::ReducedView& reduced = this->Internals->Reduced;
+    if (reduced.Bind(frame.Window, width, height, error))
+    {
+      ostate->vtkglViewport(0, 0, width, height);
+      ostate->vtkglScissor(0, 0, width, height);
+      // The viewport measured in traced pixels: pixel i's ray is the one
+      // through the full view's point (i + 1/2) d, and the aspect is kept.
+      const float traced[4] = { 0.0f, 0.0f, static_cast<float>(viewport[2] / distance),
+        static_cast<float>(viewport[3] / distance) };
+      program->SetUniform4f("rt_viewport", traced);
+      this->TraceView(frame, distance);
+      reduced.Unbind(frame.Window);
+      const double extent[2] = { viewport[2] / distance, viewport[3] / distance };
+      const bool magnified = reduced.Magnify(frame.Window, viewport, extent, error);
+      // The ray-tracing program is current again (the hit capture draws with it).
+      frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+      if (magnified)
+      {
+        this->LastImageSampleDistance = distance;
+        return;
+      }
+    }
+    // Nothing is lost: the view is traced at full resolution instead.
+    vtkWarningMacro(<< "tracing one ray per pixel: " << error);
+    distance = 1.0;
+  }
+  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  const float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("rt_viewport", window);
+  this->TraceView(frame, distance);
+  this->LastImageSampleDistance = distance;
+}
+
+double vtkRiemannRayTracePass::ChooseImageSampleDistance(const FrameState& frame) const
+{
+  // Still renders: the distance asked for (1: every pixel).
+  vtkRenderWindow* window = frame.Renderer->GetRenderWindow();
+  vtkRenderWindowInteractor* interactor = window->GetInteractor();
+  const double stillRate = interactor ? interactor->GetStillUpdateRate() : 0.0001;
+  const bool interactive = window->GetDesiredUpdateRate() > stillRate;
+  if (!this->AutoAdjustSampleDistances || !interactive)
+  {
+    return this->ImageSampleDistance;
+  }
+  // Interactive: the distance that fits the renderer's share of the frame.
+  const vtkInternals& internals = *this->Internals;
+  const double distance =
+    internals.TraceSeconds > 0.0 ? internals.TraceDistance : this->ImageSampleDistance;
+  return riemann::AdjustedImageSampleDistance(distance, internals.TraceSeconds,
+    frame.Renderer->GetAllocatedRenderTime(), this->MinimumImageSampleDistance,
+    this->MaximumImageSampleDistance);
+}
+
+void vtkRiemannRayTracePass::TraceView(const FrameState& frame, double distance)
+{
+  if (!this->AutoAdjustSampleDistances)
+  {
+    frame.Quad->Render();
+    return;
+  }
+  // Timed to the end of the GPU's work: glFinish before (what earlier draws
+  // left) and after. The stall is small next to a traced frame.
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
   frame.Quad->Render();
+  glFinish();
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  this->Internals->TraceSeconds = elapsed.count();
+  this->Internals->TraceDistance = distance;
 }
 
 //------------------------------------------------------------------------------
@@ -997,6 +1083,13 @@ void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
   this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Projection: " << projections[this->Projection] << "\n";
   os << indent << "CaptureHits: " << (this->CaptureHits ? "On" : "Off") << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << (this->AutoAdjustSampleDistances ? "On" : "Off")
+     << "\n";
+  os << indent << "MinimumImageSampleDistance: " << this->MinimumImageSampleDistance << "\n";
+  os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
+  os << indent << "LastImageSampleDistance: " << this->LastImageSampleDistance << "\n";
+  os << indent << "FilteredTextureReads: " << (this->FilteredTextureReads ? "On" : "Off") << "\n";
   os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";
   os << indent << "NumberOfShaderCompilations: " << this->NumberOfShaderCompilations << "\n";
   os << indent << "ExtraShaderCode: " << (this->ExtraShaderCode ? "(set)" : "(none)") << "\n";

@@ -85,6 +85,11 @@
  * straight view would map it; the far plane where a ray hits nothing), and
  * the props' 2D overlays (text, scalar bars) are drawn on top.
  *
+ * Interaction: the cost is per ray, so while the camera moves the pass
+ * traces fewer rays (one per d x d pixels) to fit the frame time the
+ * interactor asks for, and the still render that ends the interaction is
+ * full resolution again (ImageSampleDistance, AutoAdjustSampleDistances).
+ *
  * The pass needs an OpenGL 3.2 context (VTK's OpenGL2 backend).
  *
  * @sa vtkRiemannMetric vtkRiemannScene
@@ -201,6 +206,63 @@ public:
   vtkBooleanMacro(CaptureHits, bool);
   ///@}
 
+  ///@{
+  /**
+   * Pixels per traced ray along each side, as vtkGPUVolumeRayCastMapper's
+   * ImageSampleDistance: 1 (the default) traces one ray per pixel, 2 one ray
+   * per 2 x 2 pixels, and so on (any value from 1 to 64). A distance above 1
+   * traces the view at 1/d of the resolution into an offscreen target and
+   * magnifies it into the viewport: colour interpolated bilinearly, depth
+   * from the nearest traced ray. Still renders use this distance; see
+   * AutoAdjustSampleDistances for interactive ones. The hit capture
+   * (CaptureHits) always traces one ray per pixel.
+   */
+  vtkSetClampMacro(ImageSampleDistance, double, 1.0, 64.0);
+  vtkGetMacro(ImageSampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Keep interaction fluid (default on): while the view is interactive (the
+   * render window's DesiredUpdateRate above its interactor's
+   * StillUpdateRate, as vtkRenderWindowInteractor sets it while the mouse
+   * moves the camera, or above 0.0001 without an interactor), each frame's
+   * image sample distance is chosen so that the ray tracing fits the
+   * renderer's AllocatedRenderTime. Traced rays scale as 1/d^2, so from a
+   * frame that took t seconds at distance d the next one uses d sqrt(t /
+   * allocated), within [MinimumImageSampleDistance,
+   * MaximumImageSampleDistance] (defaults 1 and 10, VTK's volume mapper's).
+   * t is the wall time of the draw, finished (glFinish). The still render
+   * that ends an interaction uses ImageSampleDistance again.
+   */
+  vtkSetMacro(AutoAdjustSampleDistances, bool);
+  vtkGetMacro(AutoAdjustSampleDistances, bool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, bool);
+  vtkSetClampMacro(MinimumImageSampleDistance, double, 1.0, 64.0);
+  vtkGetMacro(MinimumImageSampleDistance, double);
+  vtkSetClampMacro(MaximumImageSampleDistance, double, 1.0, 64.0);
+  vtkGetMacro(MaximumImageSampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * How a sampled metric's spline reads its 3D textures (default off): off,
+   * the 64 texels around the cell are fetched and weighted in the shader, so
+   * the picture is the CPU tracer's to float rounding; on, each of the four
+   * sums (g and its three derivatives) is 8 trilinear reads weighted by the
+   * texture unit (Sigg and Hadwiger, GPU Gems 2, ch. 20): 64 reads instead
+   * of 128, and far less shader arithmetic, but with the texture unit's
+   * weights (8-bit fractions on most GPUs, float on Mesa's llvmpipe). A
+   * separate program; the textures are shared.
+   */
+  vtkSetMacro(FilteredTextureReads, bool);
+  vtkGetMacro(FilteredTextureReads, bool);
+  vtkBooleanMacro(FilteredTextureReads, bool);
+  ///@}
+
+  /// The image sample distance of the last render (1: one ray per pixel).
+  vtkGetMacro(LastImageSampleDistance, double);
+
   /**
    * The hits of the last render with CaptureHits on: 4 components (x, y, z,
    * arc length; (0, 0, 0, -1) for no hit, (0, 0, 0, -2) for a failed
@@ -214,7 +276,8 @@ public:
   /// Shader programs this pass has built (compiled and linked, or tried to).
   vtkGetMacro(NumberOfShaderCompilations, int);
 
-  /// Hierarchies of the scene's meshes this pass has built and uploaded (one per new set of meshes).
+  /// Hierarchies of the scene's meshes this pass has built and uploaded (one per new set of
+  /// meshes).
   int GetNumberOfMeshBuilds() const;
 
   /// 3D textures of sampled metrics this pass has uploaded (two per new tensor volume).
@@ -254,6 +317,12 @@ protected:
   int Projection = PERSPECTIVE;
   bool CaptureHits = false;
   bool UseRendererProps = false;
+  double ImageSampleDistance = 1.0;
+  bool AutoAdjustSampleDistances = true;
+  double MinimumImageSampleDistance = 1.0;
+  double MaximumImageSampleDistance = 10.0;
+  double LastImageSampleDistance = 1.0;
+  bool FilteredTextureReads = false;
   char* ExtraShaderCode = nullptr;
   int HitImageWidth = 0;
   int HitImageHeight = 0;
@@ -283,6 +352,8 @@ private:
   bool ActivateMeshes(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateEnvironment(vtkShaderProgram* program, const FrameState& frame);
   void DrawView(vtkShaderProgram* program, const FrameState& frame);
+  double ChooseImageSampleDistance(const FrameState& frame) const;
+  void TraceView(const FrameState& frame, double distance);
   void CaptureHitImage(vtkShaderProgram* program, const FrameState& frame);
   void RenderOverlays(const vtkRenderState* s);
   ///@}

@@ -2,8 +2,16 @@
 // against the analytic metric it samples: the showcase's Gaussian lens scene
 // (Data/scenes/showcase-lens.json, RK4, its own steps), with the lens
 // analytic (conformal), then sampled on 24^3, 48^3 and 96^3 points over
-// [-4, 4]^3 (Euclidean outside). The ratio is what the tensor-volume spline
-// costs over a closed-form metric, on the same renderer in the same run.
+// [-4, 4]^3 (Euclidean outside), and the 96^3 one with the spline read by
+// the texture unit's trilinear filtering (FilteredTextureReads). The ratio is
+// what the tensor-volume spline costs over a closed-form metric, on the same
+// renderer in the same run.
+//
+// Then what interaction costs on the 48^3 volume: frames traced at image
+// sample distances 2, 4 and 8 (one ray per d x d pixels), and the frames a
+// user gets while moving the camera (the window's DesiredUpdateRate at the
+// interactor's 15 frames/s, AutoAdjustSampleDistances on): the distance the
+// pass settles at and the frame time there.
 //
 // Not a test: timings depend on the machine. Run under an X server, e.g.
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/bin/RiemannSampledFrameBenchmark \
@@ -19,6 +27,7 @@
 #include "RenderBenchmarkOptions.h"
 #include "SampledLensImage.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -29,6 +38,46 @@ double MedianFrame(vtkRenderWindow* window, int repetitions)
 {
   window->Render();
   return MedianFrameSeconds(window, repetitions);
+}
+/// Frame times of the 48^3 volume with fewer rays, and while interacting.
+bool PrintInteractiveFrames(
+  vtkRenderWindow* window, vtkRiemannRayTracePass* pass, vtkRiemannMetric* metric, int repetitions)
+{
+  if (!metric->SetTensorData(SampledLensImage(48, -4.0, 4.0), "Tensors"))
+  {
+    std::fprintf(stderr, "%s\n", metric->GetLastError());
+    return false;
+  }
+  std::printf("\nSampled 48^3 with fewer rays (ImageSampleDistance d: one ray per d x d pixels)\n\n"
+              "| d | frame (s) | frames/s | ratio to d = 1 |\n|---|---|---|---|\n");
+  double full = 0.0;
+  for (double distance : { 1.0, 2.0, 4.0, 8.0 })
+  {
+    pass->SetImageSampleDistance(distance);
+    const double seconds = MedianFrame(window, repetitions);
+    full = distance == 1.0 ? seconds : full;
+    std::printf(
+      "| %.0f | %.3f | %.2f | %.3f |\n", distance, seconds, 1.0 / seconds, seconds / full);
+    std::fflush(stdout);
+  }
+  pass->SetImageSampleDistance(1.0);
+
+  // Interacting: the rate vtkRenderWindowInteractor asks for while the
+  // mouse moves; a few frames to settle, then the median.
+  window->Render(); // a still frame: the measurement the first interactive frame starts from
+  window->SetDesiredUpdateRate(15.0);
+  for (int settle = 0; settle < 4; ++settle)
+  {
+    window->Render();
+  }
+  const double interactive = MedianFrameSeconds(window, std::max(3, repetitions));
+  std::printf(
+    "\nInteracting at 15 frames/s asked (AutoAdjustSampleDistances, distances 1 to %.0f): "
+    "d = %.2f, frame %.3f s (%.1f frames/s)\n",
+    pass->GetMaximumImageSampleDistance(), pass->GetLastImageSampleDistance(), interactive,
+    1.0 / interactive);
+  window->SetDesiredUpdateRate(0.0001);
+  return true;
 }
 } // namespace
 
@@ -79,6 +128,16 @@ int main(int argc, char** argv)
     const double sampled = MedianFrame(window, options.Repetitions);
     std::printf("| sampled %d^3 | %.3f | %.2f |\n", n, sampled, sampled / analytic);
     std::fflush(stdout);
+  }
+  // The spline read with the texture unit's trilinear filtering.
+  pass->FilteredTextureReadsOn();
+  const double filtered = MedianFrame(window, options.Repetitions);
+  std::printf("| sampled 96^3, FilteredTextureReads | %.3f | %.2f |\n", filtered, filtered / analytic);
+  std::fflush(stdout);
+  pass->FilteredTextureReadsOff();
+  if (!PrintInteractiveFrames(window, pass, metric, options.Repetitions))
+  {
+    return 1;
   }
   if (!std::string(pass->GetLastError()).empty())
   {

@@ -165,7 +165,11 @@ EOF
   export OPENIMAGEIO_OPTIONS=try_all_readers=0
   local data="$REPO/Data"
   local so="stdbuf -oL -eL"
-  # (2) the mesh benchmark: grid and 1M-triangle mesh on the GPU, mesh on the CPU
+  # (2) issue 17's figure first: the sampled lens against the analytic one,
+  # fewer rays, and the frames while interacting
+  step "RiemannSampledFrameBenchmark ${W}x${H}" 150 \
+    $so "$B/bin/RiemannSampledFrameBenchmark" --width $W --height $H --repetitions 3 --data "$data"
+  # the mesh benchmark: grid and 1M-triangle mesh on the GPU, mesh on the CPU
   step "RiemannMeshFrameBenchmark ${W}x${H}" 150 \
     $so "$B/bin/RiemannMeshFrameBenchmark" --width $W --height $H --data "$data"
   # (3) the ray-trace pass alone (2 scenes x 2 integrators x 100/300/1000 steps),

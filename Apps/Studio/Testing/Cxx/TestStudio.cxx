@@ -42,6 +42,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProcess>
+#include <QSignalSpy>
 #include <QPushButton>
 #include <QSlider>
 #include <QTemporaryDir>
@@ -204,6 +205,7 @@ private Q_SLOTS:
   void FieldItemShowsCurvature();
   void DraggingTheEyeMovesTheObserver();
   void SampledMetricReadsItsVolumeFromItsFolder();
+  void MovingTheCameraTracesFewerRaysUntilItStops();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -869,3 +871,36 @@ void TestStudio::SampledMetricReadsItsVolumeFromItsFolder()
 }
 
 #include "TestStudio.moc"
+
+void TestStudio::MovingTheCameraTracesFewerRaysUntilItStops()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  // Ask for 10,000 frames a second while moving: no frame fits, so the pass
+  // traces its fewest rays (one per 10 x 10 pixels) on any machine.
+  inside->interactor()->SetDesiredUpdateRate(10000.0);
+  QSignalSpy drawn(inside, &InsideView::ViewDrawn);
+  // A real left drag (the trackball rotates the observer about its look-at point).
+  auto send = [inside](QEvent::Type type, QPoint at, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, at, inside->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(inside, &event);
+  };
+  const QPoint start(120, 90);
+  send(QEvent::MouseMove, start, Qt::NoButton);
+  send(QEvent::MouseButtonPress, start, Qt::LeftButton);
+  for (int k = 1; k <= 4; ++k)
+  {
+    send(QEvent::MouseMove, start + QPoint(6 * k, 3 * k), Qt::LeftButton);
+  }
+  QCoreApplication::processEvents();
+  QVERIFY2(drawn.count() >= 2, qPrintable(QString("%1 frames while moving").arg(drawn.count())));
+  QCOMPARE(drawn.last().at(0).toDouble(), 10.0);
+  send(QEvent::MouseButtonRelease, start + QPoint(24, 12), Qt::NoButton);
+  QCoreApplication::processEvents();
+  // The frame that ends the drag is full resolution: the picture a still render gives.
+  QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
+  const QImage released = inside->grabFramebuffer();
+  inside->RenderNow();
+  QCOMPARE(DifferentPixels(released, inside->grabFramebuffer()), 0.0);
+}

@@ -20,17 +20,21 @@
 // PrepareTensorSamples: inverse and scale exact; bad samples counted and the
 // first named (index, position, eigenvalue); repair clamps to the floor.
 #include "GeodesicTrace.h"
+#include "GlslSource.h"
 #include "JacobiField.h"
 #include "PacketTrace.h"
 #include "SampledTensorField.h"
 #include "SampledTensorSamples.h"
+#include "TensorMetric.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
+#include <vector>
 
 namespace
 {
@@ -601,4 +605,127 @@ TEST(SampledTensorSamples, BadOptionsAreRefused)
   EXPECT_NE(riemann::PrepareTensorSamples(grid, riemann::SampledTensorOptions())
               .find("expected 6 components per point"),
     std::string::npos);
+}
+
+namespace
+{
+/// Linear interpolation of sample component `m` along the grid at texel
+/// position x (texel centres at integers, indices clamped to the grid, as a
+/// GPU's trilinear read of a texture clamped to its edges).
+double TrilinearRead(const SampledTensorGrid& grid, int m, const Vec3& x)
+{
+  double sum = 0.0;
+  const Vec3 floorX(std::floor(x[0]), std::floor(x[1]), std::floor(x[2]));
+  const Vec3 alpha = x - floorX;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    long long index[3];
+    double weight = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int bit = (corner >> a) & 1;
+      index[a] = std::clamp(static_cast<long long>(floorX[a]) + bit, 0LL,
+        static_cast<long long>(grid.Dimensions[a] - 1));
+      weight *= bit ? alpha[a] : 1.0 - alpha[a];
+    }
+    const long long point =
+      index[0] + grid.Dimensions[0] * (index[1] + grid.Dimensions[1] * index[2]);
+    sum += weight * grid.Components[static_cast<std::size_t>(6 * point + m)];
+  }
+  return sum;
+}
+
+/// One axis of the filtered spline (SampledTensorFieldGlsl.cxx,
+/// bspline_axis): pair weights and read positions (texel units) of the
+/// value, or of the derivative.
+void PairReads(double u, double cell, bool derivative, double g[2], double position[2])
+{
+  const double t = u - cell, s = 1.0 - t, t2 = t * t, t3 = t2 * t;
+  double w[4] = { s * s * s / 6.0, (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0,
+    (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0, t3 / 6.0 };
+  if (derivative)
+  {
+    const double d[4] = { -0.5 * s * s, 1.5 * t2 - 2.0 * t, -1.5 * t2 + t + 0.5, 0.5 * t2 };
+    std::copy(d, d + 4, w);
+  }
+  g[0] = w[0] + w[1];
+  g[1] = w[2] + w[3];
+  position[0] = cell - 1.0 + w[1] / g[0];
+  position[1] = cell + 1.0 + w[3] / g[1];
+}
+} // namespace
+
+TEST(SampledTensorField, EightTrilinearReadsAreTheSixtyFourTexelSum)
+{
+  // The GPU's FilteredTextureReads: each of g, dg/du0, dg/du1, dg/du2 as 8
+  // trilinear reads. With exact weights they are the B-spline's 4 x 4 x 4
+  // sums, everywhere in the box, edges included (grid coordinates = world
+  // coordinates here: origin 0, spacing 1).
+  SampledTensorGrid grid =
+    Sample([](const Vec3& x) { return SmoothField(0.4 * x - Vec3(1, 1, 1)); }, 6,
+      Vec3(2.5, 2.5, 2.5), Vec3(5, 5, 5));
+  const SampledTensorField sampled(grid);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(0.0, 5.0);
+  std::vector<Vec3> points = { Vec3(0, 0, 0), Vec3(5, 5, 5), Vec3(0.02, 4.98, 2.5), Vec3(4, 1, 3) };
+  for (int i = 0; i < 200; ++i)
+  {
+    points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  }
+  for (const Vec3& u : points)
+  {
+    Mat3 g;
+    Mat3Stack dg;
+    sampled.Evaluate(u, true, g, dg);
+    double pairs[3][2][2], positions[3][2][2]; // [axis][value, derivative][pair]
+    for (int a = 0; a < 3; ++a)
+    {
+      const double cell = std::min(std::floor(u[a]), 4.0);
+      PairReads(u[a], cell, false, pairs[a][0], positions[a][0]);
+      PairReads(u[a], cell, true, pairs[a][1], positions[a][1]);
+    }
+    // which = -1: the value; 0, 1, 2: the derivative along that axis.
+    for (int which = -1; which < 3; ++which)
+    {
+      const Mat3& expected = which < 0 ? g : dg[which];
+      for (int m = 0; m < 6; ++m)
+      {
+        double sum = 0.0;
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          Vec3 position;
+          double weight = 1.0;
+          for (int a = 0; a < 3; ++a)
+          {
+            const int kind = a == which ? 1 : 0;
+            const int bit = (corner >> a) & 1;
+            weight *= pairs[a][kind][bit];
+            position[a] = positions[a][kind][bit];
+          }
+          sum += weight * TrilinearRead(grid, m, position);
+        }
+        const int rows[6] = { 0, 1, 2, 0, 1, 0 }, columns[6] = { 0, 1, 2, 1, 2, 2 };
+        EXPECT_NEAR(sum, expected(rows[m], columns[m]), 1e-12)
+          << "at " << u.transpose() << ", component " << m << ", derivative " << which;
+      }
+    }
+  }
+
+  // The shader reads that way only when the renderer asks; both ways share
+  // the same textures, and differ in source (separate programs).
+  const riemann::TensorMetric metric(std::make_shared<SampledTensorField>(grid));
+  const riemann::MetricGlsl texels = riemann::EmitMetricGlsl(metric);
+  riemann::GlslEmitOptions options;
+  options.FilteredTextureReads = true;
+  const riemann::MetricGlsl filtered = riemann::EmitMetricGlsl(metric, options);
+  EXPECT_NE(texels.Source.find("texelFetch("), std::string::npos);
+  EXPECT_EQ(texels.Source.find("texture("), std::string::npos);
+  EXPECT_NE(filtered.Source.find("texture("), std::string::npos);
+  EXPECT_EQ(filtered.Source.find("texelFetch("), std::string::npos);
+  ASSERT_EQ(filtered.Textures.size(), 2u);
+  ASSERT_EQ(texels.Textures.size(), 2u);
+  for (int t = 0; t < 2; ++t)
+  {
+    EXPECT_EQ(filtered.Textures[t].Values, texels.Textures[t].Values);
+  }
 }

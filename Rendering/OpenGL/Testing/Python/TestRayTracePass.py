@@ -3,7 +3,8 @@
 Euclidean space and one solid sphere on a plain background: the centre pixel
 is the sphere's colour and a corner the background's (colours that are exact
 in 8 bits). Then the Gaussian bump of the paper with the same program
-(a new amplitude is a uniform), and a captured hit point read back as numbers.
+(a new amplitude is a uniform), a captured hit point read back as numbers,
+and the view traced with one ray per 4 x 4 pixels.
 
 Run by ctest under xvfb-run with /usr/bin/python3 and PYTHONPATH set to the
 build tree's package folder (see cmake/RiemannTesting.cmake).
@@ -102,6 +103,22 @@ compilations = rt.GetNumberOfShaderCompilations()
 check(metric.SetDefinition(bump % 1.2), metric.GetLastError())
 render()
 check(rt.GetNumberOfShaderCompilations() == compilations, "a new amplitude does not recompile")
+check(not errors, "no VTK error: %s" % errors)
+
+# Fewer rays (one per 4 x 4 pixels), as while the camera moves: the centre and
+# the corners keep their colours, the outline is blended.
+check(metric.SetDefinition('{"type": "euclidean"}'), metric.GetLastError())
+full = render()
+rt.SetImageSampleDistance(4)
+reduced = render()
+check(rt.GetLastImageSampleDistance() == 4.0, "traced at distance %g" % rt.GetLastImageSampleDistance())
+check(pixel(reduced, 32, 24) == pixel(full, 32, 24) and pixel(reduced, 0, 0) == pixel(full, 0, 0),
+      "the reduced view keeps the sphere's and the background's colours")
+colours = {pixel(reduced, c, r) for r in range(HEIGHT) for c in range(WIDTH)}
+check(len(colours) > 4, "the reduced view is magnified (%d colours)" % len(colours))
+rt.SetImageSampleDistance(1)
+check(rt.GetAutoAdjustSampleDistances() and rt.GetMaximumImageSampleDistance() == 10.0,
+      "interaction adjusts the distance, up to 10, by default")
 check(not errors, "no VTK error: %s" % errors)
 
 if failures:

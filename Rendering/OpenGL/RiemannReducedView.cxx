@@ -1,0 +1,169 @@
+#include "RiemannReducedView.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+/// Magnifies the traced corner of the target over the viewport.
+constexpr const char* MagnifyFragmentShader = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D rt_traced_color;
+uniform sampler2D rt_traced_depth;
+// The viewport in texture coordinates: (viewport size / d) / texture size.
+uniform vec2 rt_traced_extent;
+//VTK::Output::Dec
+void main()
+{
+  vec2 uv = texCoord * rt_traced_extent;
+  gl_FragData[0] = texture(rt_traced_color, uv);
+  gl_FragDepth = texture(rt_traced_depth, uv).r;
+}
+)";
+
+/// A 2D texture of `window` read with `filter`, clamped to its edges.
+vtkSmartPointer<vtkTextureObject> NewTargetTexture(vtkOpenGLRenderWindow* window, int filter)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(filter);
+  return texture;
+}
+
+bool Fits(vtkTextureObject* texture, int width, int height)
+{
+  return texture && static_cast<int>(texture->GetWidth()) >= width &&
+    static_cast<int>(texture->GetHeight()) >= height &&
+    static_cast<int>(texture->GetWidth()) <= 2 * width + 2 &&
+    static_cast<int>(texture->GetHeight()) <= 2 * height + 2;
+}
+} // namespace
+
+namespace riemann
+{
+double AdjustedImageSampleDistance(
+  double distance, double seconds, double budget, double minimum, double maximum)
+{
+  double adjusted = distance;
+  if (std::isfinite(seconds) && seconds > 0.0 && std::isfinite(budget) && budget > 0.0)
+  {
+    adjusted = distance * std::sqrt(seconds / budget);
+  }
+  return std::min(std::max(adjusted, minimum), std::max(minimum, maximum));
+}
+
+int TracedPixels(int pixels, double distance)
+{
+  // One more than the viewport needs: the last pixel's bilinear footprint
+  // reaches half a traced pixel beyond pixels / d.
+  return distance <= 1.0 ? pixels : static_cast<int>(std::ceil(pixels / distance)) + 1;
+}
+
+ReducedView::ReducedView() = default;
+ReducedView::~ReducedView() = default;
+
+bool ReducedView::Bind(vtkOpenGLRenderWindow* window, int width, int height, std::string& error)
+{
+  // Step 1: a target that holds the traced pixels (kept while sizes fit it).
+  if (!Fits(this->Color, width, height))
+  {
+    this->ReleaseTarget(window);
+    // Colour interpolated, depth from the nearest traced ray (Magnify()).
+    this->Color = NewTargetTexture(window, vtkTextureObject::Linear);
+    this->Color->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+    this->Depth = NewTargetTexture(window, vtkTextureObject::Nearest);
+    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->Framebuffer->SetContext(window);
+  }
+
+  // Step 2: bind it, the caller's bindings saved.
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->Color);
+  this->Framebuffer->AddDepthAttachment(this->Depth);
+  this->Framebuffer->ActivateDrawBuffer(0);
+  this->Framebuffer->ActivateReadBuffer(0);
+  const char* status = nullptr;
+  if (!vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status))
+  {
+    state->PopFramebufferBindings();
+    error = std::string("the reduced-resolution framebuffer is incomplete (") +
+      (status ? status : "unknown status") + ")";
+    return false;
+  }
+  return true;
+}
+
+void ReducedView::Unbind(vtkOpenGLRenderWindow* window)
+{
+  window->GetState()->PopFramebufferBindings();
+}
+
+bool ReducedView::Magnify(
+  vtkOpenGLRenderWindow* window, const int viewport[4], const double traced[2], std::string& error)
+{
+  if (!this->Quad)
+  {
+    this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, MagnifyFragmentShader, ""));
+  }
+  vtkShaderProgram* program = this->Quad->Program
+    ? window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program)
+    : nullptr;
+  if (!program)
+  {
+    this->Quad.reset();
+    error = "the shader that magnifies the reduced-resolution view could not be built";
+    return false;
+  }
+  this->Color->Activate();
+  this->Depth->Activate();
+  program->SetUniformi("rt_traced_color", this->Color->GetTextureUnit());
+  program->SetUniformi("rt_traced_depth", this->Depth->GetTextureUnit());
+  const float extent[2] = { static_cast<float>(traced[0] / this->Color->GetWidth()),
+    static_cast<float>(traced[1] / this->Color->GetHeight()) };
+  program->SetUniform2f("rt_traced_extent", extent);
+  window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  this->Quad->Render();
+  this->Depth->Deactivate();
+  this->Color->Deactivate();
+  return true;
+}
+
+void ReducedView::Release(vtkWindow* window)
+{
+  this->Quad.reset(); // frees its VAO; the program stays in VTK's shader cache
+  this->ReleaseTarget(window);
+}
+
+void ReducedView::ReleaseTarget(vtkWindow* window)
+{
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(window);
+    this->Framebuffer = nullptr;
+  }
+  for (vtkSmartPointer<vtkTextureObject>* texture : { &this->Color, &this->Depth })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(window);
+      *texture = nullptr;
+    }
+  }
+}
+} // namespace riemann

@@ -1,0 +1,84 @@
+/**
+ * @file RiemannReducedView.h
+ * @brief Private to Rendering/OpenGL: the inside view traced at a lower
+ * resolution (one ray per d x d pixels, d the image sample distance) into an
+ * offscreen colour and depth target, then magnified into the viewport; and
+ * the rule that picks d from the time a frame may take.
+ *
+ * This is how vtkGPUVolumeRayCastMapper keeps volume rendering interactive
+ * (its ImageSampleDistance and AutoAdjustSampleDistances), applied to the
+ * geodesic ray tracer, whose cost is per ray.
+ */
+#ifndef RiemannReducedView_h
+#define RiemannReducedView_h
+
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace riemann
+{
+/**
+ * The image sample distance for a frame of `budget` seconds, from a frame
+ * that took `seconds` at `distance`. A frame traces pixels / d^2 rays, so
+ * the time scales as 1 / d^2 and the answer is distance * sqrt(seconds /
+ * budget), kept within [minimum, maximum]. Without a usable measurement
+ * (seconds or budget not positive and finite) `distance` is kept.
+ */
+double AdjustedImageSampleDistance(
+  double distance, double seconds, double budget, double minimum, double maximum);
+
+/// The number of traced pixels along a side of `pixels` pixels at distance `distance` (>= 1).
+int TracedPixels(int pixels, double distance);
+
+class ReducedView
+{
+public:
+  ReducedView();
+  ~ReducedView();
+  ReducedView(const ReducedView&) = delete;
+  ReducedView& operator=(const ReducedView&) = delete;
+
+  /**
+   * Push the framebuffer bindings and bind an offscreen target (RGBA8
+   * colour, 32-bit float depth) of at least width x height pixels: the view
+   * is then traced into its corner (0, 0, width, height). The target is
+   * kept while later sizes fit it. False with `error` when the target cannot
+   * be made (the bindings are popped again).
+   */
+  bool Bind(vtkOpenGLRenderWindow* window, int width, int height, std::string& error);
+
+  /// Pop the framebuffer bindings pushed by Bind().
+  void Unbind(vtkOpenGLRenderWindow* window);
+
+  /**
+   * Draw the traced image over `viewport` (x, y, width, height of the
+   * current target): colour interpolated bilinearly, depth from the nearest
+   * traced pixel (so that props composed over the view never see a depth
+   * between a surface and the background). `traced` is the viewport's size
+   * in traced pixels (viewport size / d, not rounded). False with `error`
+   * when the magnifying shader cannot be built.
+   */
+  bool Magnify(vtkOpenGLRenderWindow* window, const int viewport[4], const double traced[2],
+    std::string& error);
+
+  void Release(vtkWindow* window);
+
+private:
+  void ReleaseTarget(vtkWindow* window);
+
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkTextureObject> Color;
+  vtkSmartPointer<vtkTextureObject> Depth;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+};
+} // namespace riemann
+
+#endif
