@@ -253,11 +253,28 @@ void InsideView::ShowCpuImage(vtkImageData* image)
   this->renderWindow()->Render();
 }
 
+void InsideView::SetMoving(bool moving)
+{
+  vtkRenderWindowInteractor* interactor = this->interactor();
+  this->renderWindow()->SetDesiredUpdateRate(
+    moving ? interactor->GetDesiredUpdateRate() : interactor->GetStillUpdateRate());
+  if (!moving)
+  {
+    this->ScheduleRender(); // the full frame
+  }
+}
+
 QImage InsideView::Capture()
 {
-  if (this->RenderPending)
+  // A full frame, even while something moves the view.
+  vtkRenderWindow* window = this->renderWindow();
+  const double rate = window->GetDesiredUpdateRate();
+  const double still = this->interactor()->GetStillUpdateRate();
+  if (this->RenderPending || rate > still)
   {
+    window->SetDesiredUpdateRate(still);
     this->RenderNow();
+    window->SetDesiredUpdateRate(rate);
   }
   return this->grabFramebuffer();
 }

@@ -61,6 +61,13 @@ public:
   /// Draw the view now (GPU: synchronously, finished on return; CPU: starts
   /// the trace, the picture arrives later).
   void RenderNow();
+  /**
+   * Something moves the view continuously (a parameter slider held, t
+   * playing): until SetMoving(false), frames are drawn at the interactor's
+   * desired update rate, as while the camera moves (the pass traces fewer
+   * rays to keep up); then one full frame. Captures are always full frames.
+   */
+  void SetMoving(bool moving);
   /// The picture on screen, as the user sees it.
   /// Draw once the current event has been handled: many changes in a row
   /// (a project opening, a slider dragged) draw one frame.

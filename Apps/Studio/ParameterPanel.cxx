@@ -136,6 +136,8 @@ void ParameterPanel::AddRow(const std::string& pointer, const QString& label, do
   };
   QObject::connect(slider, &QSlider::valueChanged, this,
     [range, apply](int position) { apply(range->FromSlider(position)); });
+  QObject::connect(slider, &QSlider::sliderPressed, this, [this]() { Q_EMIT this->Moving(true); });
+  QObject::connect(slider, &QSlider::sliderReleased, this, [this]() { Q_EMIT this->Moving(false); });
   QObject::connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, apply);
   QObject::connect(spin, &QDoubleSpinBox::editingFinished, this, [slider, spin, range]() {
     const QSignalBlocker block(slider);

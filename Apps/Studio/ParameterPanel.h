@@ -39,6 +39,9 @@ public:
 Q_SIGNALS:
   /// A value was taken (ok) or refused (message).
   void ValueApplied(bool ok, const QString& message);
+  /// A slider is held (true) or let go (false): the views may draw coarser
+  /// frames meanwhile (InsideView::SetMoving).
+  void Moving(bool moving);
 
 private:
   void Rebuild();

@@ -135,16 +135,27 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   QObject::connect(this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
   QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
     [this](const QString& message) { this->ShowMessage("Inside view: " + message, true); });
-  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
-    this->LastFrameTime = QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1);
-    this->FrameTime->setText(this->LastFrameTime);
-  });
-  // While the camera moves the pass traces fewer rays: say how many.
+  // While the view moves the pass traces fewer rays: say how many.
   QObject::connect(this->InsideWidget, &InsideView::ViewDrawn, this, [this](double distance) {
+    this->LastDistance = distance;
     this->FrameTime->setText(distance > 1.0
         ? QStringLiteral("moving: 1 ray per %1 x %1 pixels").arg(distance, 0, 'f', 1)
         : this->LastFrameTime);
   });
+  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
+    const QString time = QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1);
+    if (this->LastDistance > 1.0)
+    {
+      this->FrameTime->setText(
+        QStringLiteral("moving: 1 ray per %1 x %1 pixels, ").arg(this->LastDistance, 0, 'f', 1) + time);
+      return;
+    }
+    this->LastFrameTime = time;
+    this->FrameTime->setText(time);
+  });
+  // A held slider or playing t moves the view as the mouse does.
+  QObject::connect(this->ParameterWidget, &ParameterPanel::Moving, this->InsideWidget, &InsideView::SetMoving);
+  QObject::connect(this->TimeWidget, &TimeBar::Moving, this->InsideWidget, &InsideView::SetMoving);
   QObject::connect(this->Doc, &StudioDocument::ItemFinished, this, [this](PipelineItem* item, bool) {
     const QString error = this->Doc->ItemError(item);
     if (!error.isEmpty())
@@ -567,6 +578,11 @@ void StudioMainWindow::ShowMessage(const QString& message, bool error)
 QString StudioMainWindow::StatusText() const
 {
   return this->Message->text();
+}
+
+QString StudioMainWindow::FrameTimeText() const
+{
+  return this->FrameTime->text();
 }
 
 QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)

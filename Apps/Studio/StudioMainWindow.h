@@ -93,6 +93,9 @@ public:
   vtkPolyData* PickedRay() const { return this->Picked; }
   /// The status bar's text.
   QString StatusText() const;
+  /// The status bar's frame label: "frame N ms", or while the view moves
+  /// "moving: 1 ray per d x d pixels".
+  QString FrameTimeText() const;
   /// Milliseconds of the last metric change -> inside view drawn.
   double LastUpdateMilliseconds() const { return this->LastUpdate; }
 
@@ -123,6 +126,8 @@ private:
   QLabel* FrameTime;
   /// "frame N ms" of the last still frame (shown again when moving stops).
   QString LastFrameTime;
+  /// Pixels per ray of the last drawn inside view, along a side.
+  double LastDistance = 1.0;
   QProgressBar* Progress;
   QPushButton* Cancel;
   QAction* PickAction = nullptr;

@@ -47,6 +47,9 @@ TimeBar::TimeBar(StudioDocument* document, QWidget* parent)
   QObject::connect(this->Export, &QAction::triggered, this, &TimeBar::ExportFramesRequested);
   QObject::connect(this->TimeSlider, &QSlider::valueChanged, this,
     [this](int position) { this->Apply(static_cast<double>(position) / Steps); });
+  QObject::connect(this->TimeSlider, &QSlider::sliderPressed, this, [this]() { Q_EMIT this->Moving(true); });
+  QObject::connect(this->TimeSlider, &QSlider::sliderReleased, this,
+    [this]() { Q_EMIT this->Moving(this->IsPlaying()); });
   QObject::connect(this->TimeSpin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     &TimeBar::Apply);
   QObject::connect(document, &StudioDocument::MetricChanged, this, [this]() {
@@ -65,6 +68,7 @@ void TimeBar::SetPlaying(bool playing)
     this->Play->setChecked(playing);
   }
   this->Play->setIcon(this->style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  const bool was = this->IsPlaying();
   if (playing)
   {
     this->Ticker->start();
@@ -72,6 +76,10 @@ void TimeBar::SetPlaying(bool playing)
   else
   {
     this->Ticker->stop();
+  }
+  if (playing != was)
+  {
+    Q_EMIT this->Moving(playing);
   }
 }
 

@@ -36,6 +36,9 @@ Q_SIGNALS:
   void TimeApplied(bool ok, const QString& message);
   /// The user asked for frames to be written (the window does it).
   void ExportFramesRequested();
+  /// t plays or its slider is held (true), or neither any more (false): the
+  /// views may draw coarser frames meanwhile (InsideView::SetMoving).
+  void Moving(bool moving);
 
 private:
   void Apply(double t);

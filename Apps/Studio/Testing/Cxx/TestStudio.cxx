@@ -206,6 +206,7 @@ private Q_SLOTS:
   void DraggingTheEyeMovesTheObserver();
   void SampledMetricReadsItsVolumeFromItsFolder();
   void MovingTheCameraTracesFewerRaysUntilItStops();
+  void HoldingASliderTracesFewerRaysUntilItIsLetGo();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -903,4 +904,32 @@ void TestStudio::MovingTheCameraTracesFewerRaysUntilItStops()
   const QImage released = inside->grabFramebuffer();
   inside->RenderNow();
   QCOMPARE(DifferentPixels(released, inside->grabFramebuffer()), 0.0);
+}
+
+void TestStudio::HoldingASliderTracesFewerRaysUntilItIsLetGo()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  inside->interactor()->SetDesiredUpdateRate(10000.0); // no frame fits: the fewest rays
+  QSignalSpy drawn(inside, &InsideView::ViewDrawn);
+  QSlider* slider = window->Parameters()->Slider("/parameters/a");
+  QVERIFY(slider);
+  // Held and moved: every frame is coarse, and says so in the status bar.
+  Q_EMIT slider->sliderPressed();
+  slider->setValue(slider->value() + 40);
+  QTRY_VERIFY(drawn.count() >= 1);
+  QCOMPARE(drawn.last().at(0).toDouble(), 10.0);
+  QVERIFY2(window->FrameTimeText().startsWith("moving: 1 ray per 10.0 x 10.0 pixels"),
+    qPrintable(window->FrameTimeText()));
+  // An export while it is held is still a full frame.
+  const QImage captured = inside->Capture();
+  QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
+  // Let go: one full frame, the picture a still render gives.
+  Q_EMIT slider->sliderReleased();
+  const int before = drawn.count();
+  QTRY_VERIFY(drawn.count() > before);
+  QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
+  QVERIFY2(window->FrameTimeText().startsWith("frame "), qPrintable(window->FrameTimeText()));
+  QCOMPARE(DifferentPixels(captured, inside->grabFramebuffer()), 0.0);
 }
