@@ -4,6 +4,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNIFTIImageHeader.h"
@@ -276,39 +277,42 @@ void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
   {
     throw std::runtime_error("the NRRD field \"measurement frame\" is not three 3D vectors");
   }
+  double m[3][3];
+  double mT[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      m[r][c] = columns[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)];
+    }
+  }
+  vtkMath::Transpose3x3(m, mT);
   vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
-  const bool six = tensors->GetNumberOfComponents() == 6;
+  const int count = tensors->GetNumberOfComponents();
   // VTK's order of the six: XX, YY, ZZ, XY, YZ, XZ; nine are row-major.
-  const int six_row[6] = { 0, 1, 2, 0, 1, 0 }, six_column[6] = { 0, 1, 2, 1, 2, 2 };
-  std::vector<double> tuple(static_cast<std::size_t>(tensors->GetNumberOfComponents()));
+  const int sixRow[6] = { 0, 1, 2, 0, 1, 0 }, sixColumn[6] = { 0, 1, 2, 1, 2, 2 };
+  std::vector<double> tuple(static_cast<std::size_t>(count));
   for (vtkIdType i = 0; i < tensors->GetNumberOfTuples(); ++i)
   {
     tensors->GetTuple(i, tuple.data());
     double d[3][3];
-    for (int k = 0; k < (six ? 6 : 9); ++k)
+    for (int k = 0; k < count; ++k)
     {
-      const int r = six ? six_row[k] : k / 3, c = six ? six_column[k] : k % 3;
-      d[r][c] = d[c][r] = tuple[static_cast<std::size_t>(k)];
-    }
-    double world[3][3] = {};
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
+      const int r = count == 6 ? sixRow[k] : k / 3, c = count == 6 ? sixColumn[k] : k % 3;
+      d[r][c] = tuple[static_cast<std::size_t>(k)];
+      if (count == 6)
       {
-        for (int a = 0; a < 3; ++a)
-        {
-          for (int b = 0; b < 3; ++b)
-          {
-            world[r][c] += columns[static_cast<std::size_t>(a)][static_cast<std::size_t>(r)] *
-              d[a][b] * columns[static_cast<std::size_t>(b)][static_cast<std::size_t>(c)];
-          }
-        }
+        d[c][r] = d[r][c]; // nine are kept as written (their symmetry is checked later)
       }
     }
-    for (int k = 0; k < (six ? 6 : 9); ++k)
+    double md[3][3];
+    double world[3][3];
+    vtkMath::Multiply3x3(m, d, md);
+    vtkMath::Multiply3x3(md, mT, world);
+    for (int k = 0; k < count; ++k)
     {
       tuple[static_cast<std::size_t>(k)] =
-        six ? world[six_row[k]][six_column[k]] : world[k / 3][k % 3];
+        count == 6 ? world[sixRow[k]][sixColumn[k]] : world[k / 3][k % 3];
     }
     tensors->SetTuple(i, tuple.data());
   }
