@@ -211,7 +211,13 @@ std::vector<std::array<double, 3>> NrrdVectors(const std::string& value, const s
     char open = 0, comma1 = 0, comma2 = 0;
     std::istringstream text(close == std::string::npos ? "" : value.substr(at, close - at));
     text >> open >> v[0] >> comma1 >> v[1] >> comma2 >> v[2];
-    if (value[at] != '(' || close == std::string::npos || !text || open != '(' || comma1 != ',' ||
+    // Nothing may follow z before ')' (a missing ')' would swallow the next vector).
+    const bool parsed = static_cast<bool>(text);
+    std::string rest;
+    text.clear();
+    text >> rest;
+    const bool whole = parsed && rest.empty();
+    if (!whole || value[at] != '(' || close == std::string::npos || open != '(' || comma1 != ',' ||
       comma2 != ',' || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
     {
       throw std::runtime_error("the NRRD field \"" + field + ": " + value +
