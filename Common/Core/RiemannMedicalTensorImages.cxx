@@ -126,6 +126,80 @@ void PlaceByMatrix(vtkImageData* image, vtkMatrix4x4* matrix, const char* which)
   image->SetDirectionMatrix(direction);
 }
 /**
+ * Turn `image`'s "Tensors" from the frame whose axes (in world coordinates)
+ * are the columns of `m` to world axes: D -> M D M^T.
+ */
+void TurnTensors(vtkImageData* image, const double m[3][3])
+{
+  double mT[3][3];
+  vtkMath::Transpose3x3(m, mT);
+  vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
+  const int count = tensors->GetNumberOfComponents();
+  // VTK's order of the six: XX, YY, ZZ, XY, YZ, XZ; nine are row-major.
+  const int sixRow[6] = { 0, 1, 2, 0, 1, 0 }, sixColumn[6] = { 0, 1, 2, 1, 2, 2 };
+  std::vector<double> tuple(static_cast<std::size_t>(count));
+  for (vtkIdType i = 0; i < tensors->GetNumberOfTuples(); ++i)
+  {
+    tensors->GetTuple(i, tuple.data());
+    double d[3][3];
+    for (int k = 0; k < count; ++k)
+    {
+      const int r = count == 6 ? sixRow[k] : k / 3, c = count == 6 ? sixColumn[k] : k % 3;
+      d[r][c] = tuple[static_cast<std::size_t>(k)];
+      if (count == 6)
+      {
+        d[c][r] = d[r][c]; // nine are kept as written (their symmetry is checked later)
+      }
+    }
+    double md[3][3];
+    double world[3][3];
+    vtkMath::Multiply3x3(m, d, md);
+    vtkMath::Multiply3x3(md, mT, world);
+    for (int k = 0; k < count; ++k)
+    {
+      tuple[static_cast<std::size_t>(k)] =
+        count == 6 ? world[sixRow[k]][sixColumn[k]] : world[k / 3][k % 3];
+    }
+    tensors->SetTuple(i, tuple.data());
+  }
+}
+
+/**
+ * The axes of FSL's frame in world coordinates, as the columns of `axes`:
+ * a NIfTI file's voxel axes (the columns of the reader's `matrix`, the third
+ * reversed where the reader reversed the slices, qfac -1), the first
+ * reversed when they are right-handed (FSL's "neurological" storage; its
+ * voxel frame is always left-handed, "radiological").
+ */
+void FslFrameAxes(vtkMatrix4x4* matrix, double qfac, double axes[3][3])
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      axes[r][c] = matrix->GetElement(r, c);
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    const double norm =
+      std::sqrt(axes[0][c] * axes[0][c] + axes[1][c] * axes[1][c] + axes[2][c] * axes[2][c]);
+    const double sign = c == 2 && qfac < 0.0 ? -1.0 : 1.0;
+    for (int r = 0; r < 3; ++r)
+    {
+      axes[r][c] *= sign / norm; // PlaceByMatrix refused zero columns
+    }
+  }
+  if (vtkMath::Determinant3x3(axes) > 0.0)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      axes[r][0] = -axes[r][0];
+    }
+  }
+}
+
+/**
  * vtkNrrdReader, blind to the header's "space" and "space dimension" lines:
  * they are made comments of the same length before it parses the header.
  * VTK 9.1 lets either line reset the array's dimension to 3, so a 4D tensor
@@ -284,7 +358,6 @@ void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
     throw std::runtime_error("the NRRD field \"measurement frame\" is not three 3D vectors");
   }
   double m[3][3];
-  double mT[3][3];
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
@@ -292,40 +365,12 @@ void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
       m[r][c] = columns[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)];
     }
   }
-  vtkMath::Transpose3x3(m, mT);
-  vtkDataArray* tensors = image->GetPointData()->GetArray("Tensors");
-  const int count = tensors->GetNumberOfComponents();
-  // VTK's order of the six: XX, YY, ZZ, XY, YZ, XZ; nine are row-major.
-  const int sixRow[6] = { 0, 1, 2, 0, 1, 0 }, sixColumn[6] = { 0, 1, 2, 1, 2, 2 };
-  std::vector<double> tuple(static_cast<std::size_t>(count));
-  for (vtkIdType i = 0; i < tensors->GetNumberOfTuples(); ++i)
-  {
-    tensors->GetTuple(i, tuple.data());
-    double d[3][3];
-    for (int k = 0; k < count; ++k)
-    {
-      const int r = count == 6 ? sixRow[k] : k / 3, c = count == 6 ? sixColumn[k] : k % 3;
-      d[r][c] = tuple[static_cast<std::size_t>(k)];
-      if (count == 6)
-      {
-        d[c][r] = d[r][c]; // nine are kept as written (their symmetry is checked later)
-      }
-    }
-    double md[3][3];
-    double world[3][3];
-    vtkMath::Multiply3x3(m, d, md);
-    vtkMath::Multiply3x3(md, mT, world);
-    for (int k = 0; k < count; ++k)
-    {
-      tuple[static_cast<std::size_t>(k)] =
-        count == 6 ? world[sixRow[k]][sixColumn[k]] : world[k / 3][k % 3];
-    }
-    tensors->SetTuple(i, tuple.data());
-  }
+  TurnTensors(image, m);
 }
 } // namespace
 
-vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
+vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
+  const std::string& path, SampledTensorFrame frame)
 {
   vtkNew<vtkNIFTIImageReader> reader;
   if (!reader->CanReadFile(path.c_str()))
@@ -366,13 +411,29 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path)
     slope, intercept);
 
   // Step 2: the placement, q-form first.
+  vtkMatrix4x4* placement = nullptr;
   if (header->GetQFormCode() > 0 && reader->GetQFormMatrix())
   {
-    PlaceByMatrix(image, reader->GetQFormMatrix(), "q-form");
+    placement = reader->GetQFormMatrix();
+    PlaceByMatrix(image, placement, "q-form");
   }
   else if (header->GetSFormCode() > 0 && reader->GetSFormMatrix())
   {
-    PlaceByMatrix(image, reader->GetSFormMatrix(), "s-form");
+    placement = reader->GetSFormMatrix();
+    PlaceByMatrix(image, placement, "s-form");
+  }
+
+  // Step 3: tensors in FSL's voxel axes turned to world axes.
+  if (frame == SampledTensorFrame::Fsl)
+  {
+    if (!placement)
+    {
+      throw std::runtime_error("\"frame\": \"fsl\" needs the file's q-form or s-form (to "
+                               "know its voxel axes in the world); this file has neither");
+    }
+    double axes[3][3];
+    FslFrameAxes(placement, reader->GetQFac(), axes);
+    TurnTensors(image, axes);
   }
   return image;
 }

@@ -9,7 +9,8 @@
 #ifndef RiemannMedicalTensorImages_h
 #define RiemannMedicalTensorImages_h
 
-#include "vtkSmartPointer.h" // For the returned images
+#include "MetricDefinition.h" // For SampledTensorFrame
+#include "vtkSmartPointer.h"  // For the returned images
 
 #include <string>
 
@@ -27,9 +28,15 @@ namespace riemann
  * (1005) in NIfTI's lower-triangle order (XX, XY, YY, XZ, YZ, ZZ), else in
  * FSL dtifit's order (XX, XY, XZ, YY, YZ, ZZ); or nine, row-major.
  * scl_slope and scl_inter are applied. The tensors are taken in the world
- * axes of the placement. Throws std::runtime_error saying what is wrong.
+ * axes of the placement (MRtrix writes them so), or with `frame`
+ * SampledTensorFrame::Fsl in FSL's voxel axes (dtifit's, and DIPY's from
+ * FSL-style bvecs): the file's voxel axes, the first reversed when the
+ * placement's matrix, qfac included, has a positive determinant; they are
+ * turned to world axes, D -> A D A^T (A: those axes as columns). Throws
+ * std::runtime_error saying what is wrong.
  */
-vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path);
+vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
+  const std::string& path, SampledTensorFrame frame = SampledTensorFrame::World);
 
 /**
  * Read a NRRD tensor volume: 6 components per voxel in Teem's order (XX,

@@ -156,7 +156,8 @@ SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& ar
   return grid;
 }
 
-SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string& arrayName)
+SampledTensorGrid ReadTensorGridFile(
+  const std::string& path, const std::string& arrayName, SampledTensorFrame frame)
 {
   if (!vtksys::SystemTools::FileExists(path, true))
   {
@@ -174,6 +175,13 @@ SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string&
   std::string array = arrayName;
   const bool nifti = endsWith(".nii") || endsWith(".nii.gz");
   const bool nrrd = endsWith(".nrrd") || endsWith(".nhdr");
+  if (frame == SampledTensorFrame::Fsl && !nifti)
+  {
+    // NRRD says its frame itself (measurement frame); VTK data is in world axes.
+    throw std::runtime_error(path +
+      ": \"frame\": \"fsl\" is for NIfTI files (FSL's voxel axes); this file's tensors are "
+      "read in world axes");
+  }
   if (nifti || nrrd)
   {
     // One tensor per voxel, named by the reader: there is no array to choose.
@@ -184,7 +192,7 @@ SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string&
     }
     try
     {
-      image = nifti ? ReadNiftiTensorImage(path) : ReadNrrdTensorImage(path);
+      image = nifti ? ReadNiftiTensorImage(path, frame) : ReadNrrdTensorImage(path);
     }
     catch (const std::runtime_error& e)
     {

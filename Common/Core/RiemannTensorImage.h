@@ -8,6 +8,7 @@
 #ifndef RiemannTensorImage_h
 #define RiemannTensorImage_h
 
+#include "MetricDefinition.h" // For SampledTensorFrame
 #include "SampledTensorField.h"
 
 #include <string>
@@ -28,9 +29,11 @@ SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& ar
 /**
  * Read `path` (VTK XML image data .vti, legacy .vtk structured points,
  * NIfTI .nii/.nii.gz or NRRD .nrrd/.nhdr: RiemannMedicalTensorImages.h)
- * and return TensorGridFromImage of it; errors name the file.
+ * and return TensorGridFromImage of it; errors name the file. The tensors
+ * are in `frame` (SampledTensorFrame::Fsl: NIfTI files only).
  */
-SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string& arrayName);
+SampledTensorGrid ReadTensorGridFile(
+  const std::string& path, const std::string& arrayName, SampledTensorFrame frame);
 }
 
 #endif

@@ -496,7 +496,8 @@ std::string StringOr(
 /// {"type": "sampled", ...}: a tensor volume read by the installed reader.
 std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string& path)
 {
-  CheckKeys(root, path, { "type", "file", "array", "inverse", "scale", "repair", "outside" });
+  CheckKeys(
+    root, path, { "type", "file", "array", "inverse", "scale", "repair", "outside", "frame" });
   const Json& fileValue = Required(root, "file", path);
   if (!fileValue.is_string() || fileValue.get<std::string>().empty())
   {
@@ -532,6 +533,14 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
         outside + "\"");
   }
   options.StopOutside = outside == "stop";
+  const std::string frame = StringOr(root, "frame", path, "world");
+  if (frame != "world" && frame != "fsl")
+  {
+    Fail(path + ".frame",
+      "expected \"world\" (tensors in the axes the file places its voxels in) or \"fsl\" "
+      "(NIfTI tensors in FSL's voxel axes, as dtifit writes them), got \"" +
+        frame + "\"");
+  }
   const SampledTensorReader& reader = InstalledSampledTensorReader();
   if (!reader)
   {
@@ -547,7 +556,8 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   SampledTensorGrid grid;
   try
   {
-    grid = reader(file, StringOr(root, "array", path, ""));
+    grid = reader(file, StringOr(root, "array", path, ""),
+      frame == "fsl" ? SampledTensorFrame::Fsl : SampledTensorFrame::World);
   }
   catch (const std::exception& e)
   {

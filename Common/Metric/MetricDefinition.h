@@ -18,11 +18,13 @@
  *   {"type": "diffeo", "compose": [ {diffeo}, {diffeo}, ... ]}   Phi = Phi_1 o Phi_2 o ...
  *   {"type": "tensor", "matrix": [[..],[..],[..]]}         constant g
  *   {"type": "sampled", "file": "D.vti", "array": "Tensors", "inverse": true,
- *                       "scale": 1.0, "repair": "clamp", "outside": "euclidean"}
+ *                       "scale": 1.0, "repair": "clamp", "outside": "euclidean",
+ *                       "frame": "world"}
  *                        g from a tensor volume (SampledTensorField.h): "file"
  *                        relative to the metric file's folder, read by the
  *                        reader the VTK layer installs (SetSampledTensorReader);
- *                        "array" defaults to the active tensors
+ *                        "array" defaults to the active tensors; "frame":
+ *                        "fsl" for NIfTI tensors in FSL's voxel axes
  *
  * where <scalar terms> are any of
  *   "gaussians": [{"amplitude": a, "center": [x,y,z], "sigma": s or [sx,sy,sz]}, ...]
@@ -85,13 +87,27 @@ RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
   const std::string& json, double time, const std::string& baseDirectory);
 
 /**
- * Reads the tensors of a {"type": "sampled"} definition: the grid of array
- * `array` ("": the data's active tensors) of file `path`, its tensors as
- * they are stored (PrepareTensorSamples turns them into the metric). Throws
- * std::exception with a message that names the file and what is wrong.
+ * The axes a file's tensors are written in ({"type": "sampled"}'s "frame").
+ * World: the axes the file places its voxels in (NRRD's measurement frame
+ * already turned to them). Fsl: FSL's voxel axes, as dtifit writes them
+ * (and DIPY, from FSL-style bvecs): a NIfTI file's voxel axes, the first
+ * one reversed when the voxel-to-world matrix has a positive determinant.
  */
-using SampledTensorReader =
-  std::function<SampledTensorGrid(const std::string& path, const std::string& array)>;
+enum class SampledTensorFrame
+{
+  World,
+  Fsl
+};
+
+/**
+ * Reads the tensors of a {"type": "sampled"} definition: the grid of array
+ * `array` ("": the data's active tensors) of file `path`, its tensors
+ * turned from `frame` to world axes but otherwise as they are stored
+ * (PrepareTensorSamples turns them into the metric). Throws std::exception
+ * with a message that names the file and what is wrong.
+ */
+using SampledTensorReader = std::function<SampledTensorGrid(
+  const std::string& path, const std::string& array, SampledTensorFrame frame)>;
 
 /**
  * Install the reader of "sampled" definitions (the VTK layer installs one

@@ -450,3 +450,75 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
   EXPECT_NE(error.find("four.nii: the NIfTI image has 4 values per voxel"), std::string::npos)
     << error;
 }
+
+TEST(SampledMetric, FslFrameTensorsAreTurnedFromTheVoxelAxes)
+{
+  // dtifit's tensors are in FSL's voxel axes: the file's voxel axes, the
+  // first reversed when they are right-handed in the world. A rotated
+  // q-form r with qfac +1 (right-handed: A = r diag(-1, 1, 1)) and with
+  // qfac -1 (the file's third axis is -r's third column, left-handed:
+  // A = r diag(1, 1, -1)). Stored: A^T g A, so that A (A^T g A) A^T = g.
+  const Mat3 r = Rotation();
+  const Vec3 offset(-1.0, -0.5, -1.0);
+  const auto world = [&](const Vec3& voxel) -> Vec3 { return r * voxel + offset; };
+  for (const double qfac : { 1.0, -1.0 })
+  {
+    SCOPED_TRACE(qfac > 0 ? "qfac +1" : "qfac -1");
+    const Mat3 axes = r * Vec3(qfac > 0 ? -1.0 : 1.0, 1.0, qfac > 0 ? 1.0 : -1.0).asDiagonal();
+    const std::string name = qfac > 0 ? "fsl-right.nii.gz" : "fsl-left.nii.gz";
+    {
+      vtkNew<vtkNIFTIImageWriter> writer;
+      writer->SetInputData(
+        VoxelImage([&](const Vec3& x) -> Mat3 { return axes.transpose() * Affine(x) * axes; },
+          { 0, 1, 2, 4, 5, 8 }, world));
+      writer->SetTimeDimension(6);
+      vtkNew<vtkMatrix4x4> qform;
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          qform->SetElement(i, j, r(i, j));
+        }
+        qform->SetElement(i, 3, offset[i]);
+      }
+      writer->SetQFormMatrix(qform);
+      writer->SetQFac(qfac);
+      writer->SetFileName((Folder() / name).c_str());
+      writer->Write();
+    }
+    vtkNew<vtkRiemannMetric> fsl;
+    fs::path path = MetricFile(
+      "fsl-frame.json", R"({"type": "sampled", "file": ")" + name + R"(", "frame": "fsl"})");
+    ASSERT_TRUE(fsl->SetDefinitionFile(path.c_str())) << fsl->GetLastError();
+    vtkNew<vtkRiemannMetric> asWritten;
+    path = MetricFile("world-frame.json", R"({"type": "sampled", "file": ")" + name + R"("})");
+    ASSERT_TRUE(asWritten->SetDefinitionFile(path.c_str())) << asWritten->GetLastError();
+    for (const Vec3& voxel : { Vec3(1.0, 1.2, 0.9), Vec3(0.6, 1.5, 1.4), Vec3(1.4, 0.7, 0.8) })
+    {
+      const Vec3 x = world(voxel);
+      // Float samples: g to float rounding.
+      EXPECT_LT((MetricAt(fsl, x) - Affine(x)).cwiseAbs().maxCoeff(), 2e-6) << voxel.transpose();
+      // Read in world axes, the same file is another metric: the frame matters.
+      EXPECT_GT((MetricAt(asWritten, x) - Affine(x)).cwiseAbs().maxCoeff(), 0.05)
+        << voxel.transpose();
+    }
+  }
+
+  // "fsl" is for NIfTI files with a placement; other values are refused.
+  std::string error =
+    ErrorOf(R"({"type": "sampled", "file": "fsl-left.nii.gz", "frame": "voxel"})");
+  EXPECT_NE(error.find("metric.frame: expected \"world\""), std::string::npos) << error;
+  WriteVti(TensorImage(Affine), Folder() / "affine.vti");
+  error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "frame": "fsl"})");
+  EXPECT_NE(error.find("affine.vti: \"frame\": \"fsl\" is for NIfTI files"), std::string::npos)
+    << error;
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(VoxelImage(Affine, { 0, 1, 2, 4, 5, 8 }, [](const Vec3& v) { return v; }));
+    writer->SetFileName((Folder() / "unplaced.nii").c_str());
+    writer->Write();
+  }
+  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "unplaced.nii"})"), "");
+  error = ErrorOf(R"({"type": "sampled", "file": "unplaced.nii", "frame": "fsl"})");
+  EXPECT_NE(error.find("needs the file's q-form or s-form"), std::string::npos) << error;
+}
