@@ -125,6 +125,7 @@ void PlaceByMatrix(vtkImageData* image, vtkMatrix4x4* matrix, const char* which)
   image->SetSpacing(newSpacing);
   image->SetDirectionMatrix(direction);
 }
+
 /**
  * Turn `image`'s "Tensors" from the frame whose axes (in world coordinates)
  * are the columns of `m` to world axes: D -> M D M^T.
