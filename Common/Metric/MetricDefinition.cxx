@@ -22,6 +22,8 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace riemann
 {
@@ -493,6 +495,24 @@ std::string StringOr(
   return value.get<std::string>();
 }
 
+/// A string member that must be one of `choices` (each a value and what it
+/// means, for the error), or the first choice when absent.
+std::string ChoiceOr(const Json& object, const char* key, const std::string& path,
+  const std::vector<std::pair<std::string, std::string>>& choices)
+{
+  const std::string value = StringOr(object, key, path, choices.front().first);
+  std::string expected;
+  for (const auto& [choice, meaning] : choices)
+  {
+    if (value == choice)
+    {
+      return value;
+    }
+    expected += (expected.empty() ? "expected \"" : " or \"") + choice + "\" (" + meaning + ")";
+  }
+  Fail(path + "." + key, expected + ", got \"" + value + "\"");
+}
+
 /// {"type": "sampled", ...}: a tensor volume read by the installed reader.
 std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string& path)
 {
@@ -513,34 +533,20 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
     options.Inverse = root.at("inverse").get<bool>();
   }
   options.Scale = NumberOr(root, "scale", path, 1.0);
-  const std::string repair = StringOr(root, "repair", path, "none");
-  if (repair != "none" && repair != "clamp")
-  {
-    Fail(path + ".repair", "expected \"none\" or \"clamp\", got \"" + repair + "\"");
-  }
-  options.Repair = repair == "clamp";
+  options.Repair = ChoiceOr(root, "repair", path,
+                     { { "none", "samples that are not positive definite are an error" },
+                       { "clamp", "their eigenvalues are raised to a floor" } }) == "clamp";
   const std::string problem = options.Check();
   if (!problem.empty())
   {
     Fail(path + ".scale", problem);
   }
-  const std::string outside = StringOr(root, "outside", path, "euclidean");
-  if (outside != "euclidean" && outside != "stop")
-  {
-    Fail(path + ".outside",
-      "expected \"euclidean\" (g = I outside the volume) or \"stop\" (geodesics and rays "
-      "stop where they leave it), got \"" +
-        outside + "\"");
-  }
-  options.StopOutside = outside == "stop";
-  const std::string frame = StringOr(root, "frame", path, "world");
-  if (frame != "world" && frame != "fsl")
-  {
-    Fail(path + ".frame",
-      "expected \"world\" (tensors in the axes the file places its voxels in) or \"fsl\" "
-      "(NIfTI tensors in FSL's voxel axes, as dtifit writes them), got \"" +
-        frame + "\"");
-  }
+  options.StopOutside = ChoiceOr(root, "outside", path,
+                          { { "euclidean", "g = I outside the volume" },
+                            { "stop", "geodesics and rays stop where they leave it" } }) == "stop";
+  const std::string frame = ChoiceOr(root, "frame", path,
+    { { "world", "tensors in the axes the file places its voxels in" },
+      { "fsl", "NIfTI tensors in FSL's voxel axes, as dtifit writes them" } });
   const SampledTensorReader& reader = InstalledSampledTensorReader();
   if (!reader)
   {
