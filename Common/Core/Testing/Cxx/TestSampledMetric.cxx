@@ -292,6 +292,21 @@ vtkSmartPointer<vtkImageData> VoxelImage(const std::function<Mat3(const Vec3&)>&
   image->GetPointData()->SetScalars(values);
   return image;
 }
+
+/// The q-form matrix x -> r x + offset.
+vtkSmartPointer<vtkMatrix4x4> QForm(const Mat3& r, const Vec3& offset)
+{
+  auto qform = vtkSmartPointer<vtkMatrix4x4>::New();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      qform->SetElement(i, j, r(i, j));
+    }
+    qform->SetElement(i, 3, offset[i]);
+  }
+  return qform;
+}
 } // namespace
 
 TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
@@ -304,16 +319,7 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
   {
     vtkNew<vtkNIFTIImageWriter> writer;
     writer->SetInputData(VoxelImage(Affine, { 0, 3, 4, 6, 7, 8 }, world));
-    vtkNew<vtkMatrix4x4> qform;
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        qform->SetElement(i, j, r(i, j));
-      }
-      qform->SetElement(i, 3, offset[i]);
-    }
-    writer->SetQFormMatrix(qform);
+    writer->SetQFormMatrix(QForm(r, offset));
     vtkNew<vtkNIFTIImageHeader> header;
     header->SetIntentCode(vtkNIFTIImageHeader::IntentSymMatrix);
     writer->SetNIFTIHeader(header);
@@ -472,16 +478,7 @@ TEST(SampledMetric, FslFrameTensorsAreTurnedFromTheVoxelAxes)
         VoxelImage([&](const Vec3& x) -> Mat3 { return axes.transpose() * Affine(x) * axes; },
           { 0, 1, 2, 4, 5, 8 }, world));
       writer->SetTimeDimension(6);
-      vtkNew<vtkMatrix4x4> qform;
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          qform->SetElement(i, j, r(i, j));
-        }
-        qform->SetElement(i, 3, offset[i]);
-      }
-      writer->SetQFormMatrix(qform);
+      writer->SetQFormMatrix(QForm(r, offset));
       writer->SetQFac(qfac);
       writer->SetFileName((Folder() / name).c_str());
       writer->Write();
