@@ -293,23 +293,21 @@ void StudioMainWindow::BuildMenus()
         this->OpenFile(path);
       }
     }, QKeySequence::Open);
-  file->addAction("&Save Project", this, [this]() {
-    const QString path = this->ProjectPath.isEmpty()
+  // Save and say so in the status bar (nothing when the dialog was cancelled).
+  const auto saveProjectTo = [this](const QString& path) {
+    if (!path.isEmpty())
+    {
+      const QString error = this->SaveProject(path);
+      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+    }
+  };
+  file->addAction("&Save Project", this, [this, saveProjectTo]() {
+    saveProjectTo(this->ProjectPath.isEmpty()
       ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
-      : this->ProjectPath;
-    if (!path.isEmpty())
-    {
-      const QString error = this->SaveProject(path);
-      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
-    }
+      : this->ProjectPath);
   }, QKeySequence::Save);
-  file->addAction("Save Project &As...", this, [this]() {
-    const QString path = this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json");
-    if (!path.isEmpty())
-    {
-      const QString error = this->SaveProject(path);
-      this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
-    }
+  file->addAction("Save Project &As...", this, [this, saveProjectTo]() {
+    saveProjectTo(this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json"));
   }, QKeySequence::SaveAs);
   file->addAction("Save &Metric As...", this, [this]() {
     const QString path = this->AskSavePath("Save Metric (with the slider values)", "Metric (*.json)", "json");
