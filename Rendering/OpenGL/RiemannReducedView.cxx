@@ -74,20 +74,33 @@ int TracedPixels(int pixels, double distance)
 ReducedView::ReducedView() = default;
 ReducedView::~ReducedView() = default;
 
-bool ReducedView::Bind(vtkOpenGLRenderWindow* window, int width, int height, std::string& error)
+void ReducedView::ReadyColor(vtkOpenGLRenderWindow* window, int width, int height)
 {
-  // Step 1: a target that holds the traced pixels (kept while sizes fit it).
   if (!Fits(this->Color, width, height))
   {
     this->ReleaseTarget(window);
     // Colour interpolated, depth from the nearest traced ray (Magnify()).
     this->Color = NewTargetTexture(window, vtkTextureObject::Linear);
     this->Color->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+  }
+}
+
+bool ReducedView::Bind(vtkOpenGLRenderWindow* window, int width, int height, std::string& error)
+{
+  // Step 1: a target that holds the traced pixels (kept while sizes fit it).
+  this->ReadyColor(window, width, height);
+  if (!this->Depth)
+  {
     this->Depth = NewTargetTexture(window, vtkTextureObject::Nearest);
-    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    this->Depth->AllocateDepth(static_cast<unsigned int>(this->Color->GetWidth()),
+      static_cast<unsigned int>(this->Color->GetHeight()), vtkTextureObject::Float32);
+  }
+  if (!this->Framebuffer)
+  {
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->Framebuffer->SetContext(window);
   }
+  this->TracedDepth = this->Depth;
 
   // Step 2: bind it, the caller's bindings saved.
   vtkOpenGLState* state = window->GetState();
@@ -106,6 +119,36 @@ bool ReducedView::Bind(vtkOpenGLRenderWindow* window, int width, int height, std
     return false;
   }
   return true;
+}
+
+bool ReducedView::BindImages(
+  vtkOpenGLRenderWindow* window, int width, int height, std::string& error)
+{
+  // Step 1: colour and depth images that hold the traced pixels.
+  this->ReadyColor(window, width, height);
+  if (!this->DepthImage)
+  {
+    this->DepthImage = NewTargetTexture(window, vtkTextureObject::Nearest);
+    this->DepthImage->Allocate2D(static_cast<unsigned int>(this->Color->GetWidth()),
+      static_cast<unsigned int>(this->Color->GetHeight()), 1, VTK_FLOAT);
+  }
+  if (this->Color->GetHandle() == 0 || this->DepthImage->GetHandle() == 0)
+  {
+    error = "the compute path's colour and depth images could not be made";
+    return false;
+  }
+  this->TracedDepth = this->DepthImage;
+
+  // Step 2: bound for writing (units of RiemannRayTraceCS.glsl).
+  glBindImageTexture(0, this->Color->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindImageTexture(1, this->DepthImage->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  return true;
+}
+
+void ReducedView::UnbindImages()
+{
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
 }
 
 void ReducedView::Unbind(vtkOpenGLRenderWindow* window)
@@ -129,17 +172,22 @@ bool ReducedView::Magnify(
     error = "the shader that magnifies the reduced-resolution view could not be built";
     return false;
   }
+  if (!this->TracedDepth)
+  {
+    error = "nothing was traced to magnify";
+    return false;
+  }
   this->Color->Activate();
-  this->Depth->Activate();
+  this->TracedDepth->Activate();
   program->SetUniformi("rt_traced_color", this->Color->GetTextureUnit());
-  program->SetUniformi("rt_traced_depth", this->Depth->GetTextureUnit());
+  program->SetUniformi("rt_traced_depth", this->TracedDepth->GetTextureUnit());
   const float extent[2] = { static_cast<float>(traced[0] / this->Color->GetWidth()),
     static_cast<float>(traced[1] / this->Color->GetHeight()) };
   program->SetUniform2f("rt_traced_extent", extent);
   window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
   this->Quad->Render();
-  this->Depth->Deactivate();
+  this->TracedDepth->Deactivate();
   this->Color->Deactivate();
   return true;
 }
@@ -157,7 +205,9 @@ void ReducedView::ReleaseTarget(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
     this->Framebuffer = nullptr;
   }
-  for (vtkSmartPointer<vtkTextureObject>* texture : { &this->Color, &this->Depth })
+  this->TracedDepth = nullptr;
+  for (vtkSmartPointer<vtkTextureObject>* texture :
+    { &this->Color, &this->Depth, &this->DepthImage })
   {
     if (*texture)
     {

@@ -8,6 +8,10 @@
  * This is how vtkGPUVolumeRayCastMapper keeps volume rendering interactive
  * (its ImageSampleDistance and AutoAdjustSampleDistances), applied to the
  * geodesic ray tracer, whose cost is per ray.
+ *
+ * The compute path (vtkRiemannRayTracePass::GPUPath Compute) always traces
+ * into images, at any distance, and composes them with the same Magnify():
+ * BindImages() instead of Bind().
  */
 #ifndef RiemannReducedView_h
 #define RiemannReducedView_h
@@ -55,13 +59,24 @@ public:
    */
   bool Bind(vtkOpenGLRenderWindow* window, int width, int height, std::string& error);
 
+  /**
+   * For the compute path: images of at least width x height pixels, the
+   * colour (RGBA8) bound to image unit 0 and the window depth (R32F) to
+   * unit 1 for writing; Magnify() then composes them. False with `error`
+   * when the textures cannot be made.
+   */
+  bool BindImages(vtkOpenGLRenderWindow* window, int width, int height, std::string& error);
+
+  /// Unbind the image units bound by BindImages().
+  void UnbindImages();
+
   /// Pop the framebuffer bindings pushed by Bind().
   void Unbind(vtkOpenGLRenderWindow* window);
 
   /**
-   * Draw the traced image over `viewport` (x, y, width, height of the
-   * current target): colour interpolated bilinearly, depth from the nearest
-   * traced pixel (so that props composed over the view never see a depth
+   * Draw the traced image (of the last Bind() or BindImages()) over
+   * `viewport` (x, y, width, height of the current target): colour
+   * interpolated bilinearly, depth from the nearest traced pixel (so that props composed over the view never see a depth
    * between a surface and the background). `traced` is the viewport's size
    * in traced pixels (viewport size / d, not rounded). False with `error`
    * when the magnifying shader cannot be built.
@@ -73,10 +88,16 @@ public:
 
 private:
   void ReleaseTarget(vtkWindow* window);
+  /// A colour texture that holds width x height pixels (kept while it fits).
+  void ReadyColor(vtkOpenGLRenderWindow* window, int width, int height);
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;
+  /// The compute path's depth image (a depth texture cannot be an image).
+  vtkSmartPointer<vtkTextureObject> DepthImage;
+  /// What Magnify() reads the depth from: Depth or DepthImage.
+  vtkTextureObject* TracedDepth = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
 };
 } // namespace riemann

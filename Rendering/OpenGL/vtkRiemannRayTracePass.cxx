@@ -9,6 +9,7 @@
 #include "Metric.h"
 #include "ObserverCamera.h"
 #include "RiemannActorMesh.h"
+#include "RiemannComputeProgram.h"
 #include "RiemannImageIO.h"
 #include "RiemannMeshTextures.h"
 #include "RiemannMetricTextures.h"
@@ -18,9 +19,11 @@
 #include "RiemannShading.h"
 
 // GLSL embedded at build time (vtk_encode_string).
+#include "RiemannRayTraceCS.h"
 #include "RiemannRayTraceFS.h"
 #include "RiemannRayTraceIntegrators.h"
 #include "RiemannRayTraceMeshes.h"
+#include "RiemannRayTracePixel.h"
 #include "RiemannRayTraceScene.h"
 
 #include "vtkCamera.h"
@@ -212,15 +215,23 @@ void ToFloat(const riemann::Vec3& v, float out[3])
 class vtkRiemannRayTracePass::vtkInternals
 {
 public:
+  /// A built program of either path: a quad (fragment) or a compute program.
   struct CachedProgram
   {
     std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+    vtkSmartPointer<vtkRiemannComputeProgram> Compute;
     unsigned long long LastUse = 0;
+
+    /// Still usable: the window may have released the quad's program behind our back.
+    bool IsValid() const
+    {
+      return this->Compute ? this->Compute->IsReady() : (this->Quad && this->Quad->Program);
+    }
   };
 
   /// The window whose context holds the resources below.
   vtkOpenGLRenderWindow* Context = nullptr;
-  /// Built programs by fragment source, and sources that failed with their message.
+  /// Built programs by source, and sources that failed with their message.
   std::map<std::string, CachedProgram> Programs;
   std::map<std::string, std::string> FailedPrograms;
   unsigned long long UseCounter = 0;
@@ -253,7 +264,7 @@ public:
 
   /// Keep a built program, dropping the least recently used beyond the cache's size.
   std::map<std::string, CachedProgram>::iterator StoreProgram(
-    const std::string& source, std::unique_ptr<vtkOpenGLQuadHelper> quad)
+    const std::string& source, CachedProgram program)
   {
     if (this->Programs.size() >= MaximumCachedPrograms)
     {
@@ -262,11 +273,24 @@ public:
       {
         oldest = it->second.LastUse < oldest->second.LastUse ? it : oldest;
       }
-      this->Programs.erase(oldest);
+      this->ErasePrograms(oldest, std::next(oldest), this->Context);
     }
-    auto stored = this->Programs.emplace(source, CachedProgram()).first;
-    stored->second.Quad = std::move(quad);
-    return stored;
+    return this->Programs.emplace(source, std::move(program)).first;
+  }
+
+  /// Drop programs; a compute program's GL objects are deleted in `window`'s context
+  /// (VTK's shader cache owns the quads' programs).
+  void ErasePrograms(std::map<std::string, CachedProgram>::iterator first,
+    std::map<std::string, CachedProgram>::iterator last, vtkWindow* window)
+  {
+    for (auto it = first; it != last; ++it)
+    {
+      if (it->second.Compute)
+      {
+        it->second.Compute->ReleaseProgram(window);
+      }
+    }
+    this->Programs.erase(first, last); // each quad helper frees its VAO
   }
 
   /// Read the environment image at `path` into a texture (EnvironmentError says why not).
@@ -332,7 +356,8 @@ public:
 
   void Release(vtkWindow* window)
   {
-    this->Programs.clear(); // each quad helper frees its VAO
+    this->ErasePrograms(this->Programs.begin(), this->Programs.end(),
+      window ? window : static_cast<vtkWindow*>(this->Context));
     this->FailedPrograms.clear();
     if (this->Environment)
     {
@@ -410,6 +435,39 @@ std::shared_ptr<const riemann::Metric> vtkRiemannRayTracePass::GetCoreMetric()
   return this->Metric ? this->Metric->GetMetric() : nullptr;
 }
 
+const char* vtkRiemannRayTracePass::GetGPUPathAsString(int path)
+{
+  switch (path)
+  {
+    case AUTO:
+      return "Auto";
+    case FRAGMENT:
+      return "Fragment";
+    case COMPUTE:
+      return "Compute";
+    default:
+      return "Unknown";
+  }
+}
+
+void vtkRiemannRayTracePass::SetComputeWorkgroupSize(int x, int y)
+{
+  if (x < 1 || y < 1 || x > 64 || y > 64 || x * y > 1024)
+  {
+    vtkErrorMacro(<< "ComputeWorkgroupSize " << x << " x " << y
+                  << ": each side must be 1 to 64 and x * y at most 1024 (OpenGL 4.3's "
+                     "guaranteed minimum); kept "
+                  << this->ComputeWorkgroupSize[0] << " x " << this->ComputeWorkgroupSize[1]);
+    return;
+  }
+  if (x != this->ComputeWorkgroupSize[0] || y != this->ComputeWorkgroupSize[1])
+  {
+    this->ComputeWorkgroupSize[0] = x;
+    this->ComputeWorkgroupSize[1] = y;
+    this->Modified();
+  }
+}
+
 vtkFloatArray* vtkRiemannRayTracePass::GetHitImage()
 {
   return this->Internals->HitImage;
@@ -458,7 +516,11 @@ struct vtkRiemannRayTracePass::FrameState
   riemann::RaySettings Rays;
   riemann::CameraSettings Camera;
   std::unique_ptr<riemann::ObserverCamera> Observer;
+  /// The path of this frame (ChooseGPUPath), and its program: Quad on the
+  /// fragment path, Compute on the compute path.
+  bool UseCompute = false;
   vtkOpenGLQuadHelper* Quad = nullptr;
+  vtkRiemannComputeProgram* Compute = nullptr;
 };
 
 //------------------------------------------------------------------------------
@@ -484,12 +546,15 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   }
   this->SetObserverUniforms(program, frame);
   const bool useEnvironment = this->ActivateEnvironment(program, frame);
-  this->DrawView(program, frame);
-  if (this->CaptureHits)
+  const bool drawn = this->DrawView(program, frame);
+  if (drawn && this->CaptureHits)
   {
     this->CaptureHitImage(program, frame);
   }
-  this->RenderOverlays(s);
+  if (drawn)
+  {
+    this->RenderOverlays(s);
+  }
   if (useEnvironment)
   {
     this->Internals->Environment->Deactivate();
@@ -501,7 +566,10 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   }
   this->Internals->Meshes.Deactivate();
   this->Internals->MetricVolumes.Deactivate();
-  this->LastError.clear();
+  if (drawn)
+  {
+    this->LastError.clear();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -610,6 +678,24 @@ bool vtkRiemannRayTracePass::PrepareFrame(const vtkRenderState* s, FrameState& f
     this->Fail(std::string("cannot place the observer: ") + e.what(), frame.Window, viewport);
     return false;
   }
+  return this->ChooseGPUPath(frame);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::ChooseGPUPath(FrameState& frame)
+{
+  const bool available = riemann::ComputeShadersAvailable();
+  if (this->GPUPath == COMPUTE && !available)
+  {
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    this->Fail(std::string("GPUPath Compute needs OpenGL 4.3 compute shaders, and this context "
+                           "has OpenGL ") +
+        (version ? version : "(unknown)") + " without them: use GPUPath Fragment or Auto",
+      frame.Window, frame.Viewport);
+    return false;
+  }
+  frame.UseCompute = this->GPUPath == COMPUTE || (this->GPUPath == AUTO && available);
+  this->LastGPUPath = frame.UseCompute ? COMPUTE : FRAGMENT;
   return true;
 }
 
@@ -639,7 +725,7 @@ bool vtkRiemannRayTracePass::AddRendererActors(FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& frame) const
+std::string vtkRiemannRayTracePass::ComposeSource(const FrameState& frame) const
 {
   std::ostringstream constants;
   constants << "// Scene limits (RiemannScene.h).\n"
@@ -653,7 +739,15 @@ std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& fram
             << "// Triangle meshes (RiemannRayTraceMeshes.glsl) and their traversal stack.\n"
             << "#define RT_MESHES " << (frame.Scene->HasMeshes() ? 1 : 0) << "\n"
             << "#define RT_MESH_STACK " << riemann::MeshBVHStackSize << "\n";
-  std::string source = RiemannRayTraceFS;
+  if (frame.UseCompute)
+  {
+    constants << "// The compute path's workgroup (a tile of pixels) and work queue.\n"
+              << "#define RT_GROUP_X " << this->ComputeWorkgroupSize[0] << "\n"
+              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n"
+              << "#define RT_WORK_QUEUE " << (this->ComputeWorkQueue ? 1 : 0) << "\n";
+  }
+  std::string source = frame.UseCompute ? RiemannRayTraceCS : RiemannRayTraceFS;
+  Replace(source, "//RT::Version::Dec", "#version 430 core");
   Replace(source, "//RT::Constants::Dec", constants.str());
   Replace(source, "//RT::Metric::Impl", frame.MetricGlsl.Source);
   Replace(source, "//RT::Meshes::Impl", frame.Scene->HasMeshes() ? RiemannRayTraceMeshes : "");
@@ -661,6 +755,7 @@ std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& fram
   Replace(source, "//RT::Integrators::Impl", RiemannRayTraceIntegrators);
   Replace(source, "//RT::Extra::Impl",
     this->ExtraShaderCode ? std::string("// ExtraShaderCode\n") + this->ExtraShaderCode : "");
+  Replace(source, "//RT::Pixel::Impl", RiemannRayTracePixel);
   return source;
 }
 
@@ -668,8 +763,8 @@ std::string vtkRiemannRayTracePass::ComposeFragmentSource(const FrameState& fram
 vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
 {
   vtkInternals& internals = *this->Internals;
-  const std::string source = this->ComposeFragmentSource(frame);
-  this->FragmentShaderSource = source;
+  const std::string source = this->ComposeSource(frame);
+  (frame.UseCompute ? this->ComputeShaderSource : this->FragmentShaderSource) = source;
 
   // Programs are cached by source; one that failed is not tried again.
   const auto failed = internals.FailedPrograms.find(source);
@@ -679,25 +774,45 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
     return nullptr;
   }
   auto found = internals.Programs.find(source);
-  if (found != internals.Programs.end() && !found->second.Quad->Program)
+  if (found != internals.Programs.end() && !found->second.IsValid())
   {
     // The window released its graphics resources behind our back.
-    internals.Programs.erase(found);
+    internals.ErasePrograms(found, std::next(found), frame.Window);
     found = internals.Programs.end();
   }
   if (found == internals.Programs.end())
   {
     std::string message;
-    std::unique_ptr<vtkOpenGLQuadHelper> quad = this->BuildProgram(source, frame, message);
-    if (!quad)
+    vtkInternals::CachedProgram built;
+    if (frame.UseCompute)
+    {
+      ++this->NumberOfShaderCompilations;
+      built.Compute = vtkSmartPointer<vtkRiemannComputeProgram>::New();
+      if (!built.Compute->Build(source, message))
+      {
+        message = "the ray-tracing compute shader failed to compile or link: " + message;
+        built.Compute = nullptr;
+      }
+    }
+    else
+    {
+      built.Quad = this->BuildProgram(source, frame, message);
+    }
+    if (!built.IsValid())
     {
       internals.FailedPrograms[source] = message;
       this->Fail(message, frame.Window, frame.Viewport);
       return nullptr;
     }
-    found = internals.StoreProgram(source, std::move(quad));
+    found = internals.StoreProgram(source, std::move(built));
   }
   found->second.LastUse = ++internals.UseCounter;
+  if (frame.UseCompute)
+  {
+    frame.Compute = found->second.Compute;
+    frame.Compute->Use(frame.Window);
+    return frame.Compute;
+  }
   frame.Quad = found->second.Quad.get();
   vtkShaderProgram* program =
     frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
@@ -909,7 +1024,7 @@ bool vtkRiemannRayTracePass::ActivateEnvironment(vtkShaderProgram* program, cons
 }
 
 //------------------------------------------------------------------------------
-void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameState& frame)
+bool vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameState& frame)
 {
   const int* viewport = frame.Viewport;
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -929,6 +1044,10 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
 
   // One ray per pixel, or per d x d pixels magnified (ReducedView).
   double distance = this->ChooseImageSampleDistance(frame);
+  if (frame.UseCompute)
+  {
+    return this->DrawViewByCompute(program, frame, distance);
+  }
   if (distance > 1.0)
   {
     const int width = riemann::TracedPixels(viewport[2], distance);
@@ -944,7 +1063,7 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
       const float traced[4] = { 0.0f, 0.0f, static_cast<float>(viewport[2] / distance),
         static_cast<float>(viewport[3] / distance) };
       program->SetUniform4f("rt_viewport", traced);
-      this->TraceView(frame, distance);
+      this->TraceView(frame, distance, width, height);
       reduced.Unbind(frame.Window);
       const double extent[2] = { viewport[2] / distance, viewport[3] / distance };
       const bool magnified = reduced.Magnify(frame.Window, viewport, extent, error);
@@ -953,7 +1072,7 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
       if (magnified)
       {
         this->LastImageSampleDistance = distance;
-        return;
+        return true;
       }
     }
     // Nothing is lost: the view is traced at full resolution instead.
@@ -965,8 +1084,48 @@ void vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
   const float window[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
     static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
   program->SetUniform4f("rt_viewport", window);
-  this->TraceView(frame, distance);
+  this->TraceView(frame, distance, viewport[2], viewport[3]);
   this->LastImageSampleDistance = distance;
+  return true;
+}
+
+bool vtkRiemannRayTracePass::DrawViewByCompute(
+  vtkShaderProgram* program, const FrameState& frame, double distance)
+{
+  // Step 1: the images, one pixel per traced ray (all pixels at distance 1).
+  const int* viewport = frame.Viewport;
+  const int width = riemann::TracedPixels(viewport[2], distance);
+  const int height = riemann::TracedPixels(viewport[3], distance);
+  riemann::ReducedView& reduced = this->Internals->Reduced;
+  std::string error;
+  if (!reduced.BindImages(frame.Window, width, height, error))
+  {
+    frame.Compute->Unuse();
+    this->Fail("the compute path cannot draw: " + error, frame.Window, frame.Viewport);
+    return false;
+  }
+
+  // Step 2: trace. The viewport is measured in traced pixels, so pixel i's
+  // ray is the one through the full view's point (i + 1/2) d, as on the
+  // fragment path.
+  const float traced[4] = { 0.0f, 0.0f, static_cast<float>(viewport[2] / distance),
+    static_cast<float>(viewport[3] / distance) };
+  program->SetUniform4f("rt_viewport", traced);
+  const int size[2] = { width, height };
+  program->SetUniform2i("rt_traced_size", size);
+  this->TraceView(frame, distance, width, height);
+  reduced.UnbindImages();
+  frame.Compute->Unuse();
+
+  // Step 3: compose colour and depth into the viewport (exact at distance 1).
+  const double extent[2] = { viewport[2] / distance, viewport[3] / distance };
+  if (!reduced.Magnify(frame.Window, viewport, extent, error))
+  {
+    this->Fail("the compute path cannot compose its image: " + error, frame.Window, viewport);
+    return false;
+  }
+  this->LastImageSampleDistance = distance;
+  return true;
 }
 
 double vtkRiemannRayTracePass::ChooseImageSampleDistance(const FrameState& frame) const
@@ -989,18 +1148,32 @@ double vtkRiemannRayTracePass::ChooseImageSampleDistance(const FrameState& frame
     this->MaximumImageSampleDistance);
 }
 
-void vtkRiemannRayTracePass::TraceView(const FrameState& frame, double distance)
+void vtkRiemannRayTracePass::DispatchRays(const FrameState& frame, int width, int height)
+{
+  if (frame.UseCompute)
+  {
+    frame.Compute->Dispatch(width, height, this->ComputeWorkgroupSize[0],
+      this->ComputeWorkgroupSize[1], this->ComputeWorkQueue, this->ComputeWorkQueueGroups);
+  }
+  else
+  {
+    frame.Quad->Render();
+  }
+}
+
+void vtkRiemannRayTracePass::TraceView(
+  const FrameState& frame, double distance, int width, int height)
 {
   if (!this->AutoAdjustSampleDistances)
   {
-    frame.Quad->Render();
+    this->DispatchRays(frame, width, height);
     return;
   }
   // Timed to the end of the GPU's work: glFinish before (what earlier draws
   // left) and after. The stall is small next to a traced frame.
   glFinish();
   const auto start = std::chrono::steady_clock::now();
-  frame.Quad->Render();
+  this->DispatchRays(frame, width, height);
   glFinish();
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   this->Internals->TraceSeconds = elapsed.count();
@@ -1047,11 +1220,25 @@ void vtkRiemannRayTracePass::CaptureHitImage(vtkShaderProgram* program, const Fr
   {
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
+    if (frame.UseCompute)
+    {
+      // Into the same texture as an image (unit 2 of RiemannRayTraceCS.glsl).
+      frame.Compute->Use(frame.Window);
+      glBindImageTexture(
+        2, internals.HitTexture->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      const int size[2] = { width, height };
+      program->SetUniform2i("rt_traced_size", size);
+    }
     float target[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
     program->SetUniform4f("rt_viewport", target);
     program->SetUniformi("rt_output", 1);
-    frame.Quad->Render();
+    this->DispatchRays(frame, width, height);
     program->SetUniformi("rt_output", 0);
+    if (frame.UseCompute)
+    {
+      glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      frame.Compute->Unuse();
+    }
     internals.HitImage->SetNumberOfComponents(4);
     internals.HitImage->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
     ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -1090,6 +1277,12 @@ void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumImageSampleDistance: " << this->MaximumImageSampleDistance << "\n";
   os << indent << "LastImageSampleDistance: " << this->LastImageSampleDistance << "\n";
   os << indent << "FilteredTextureReads: " << (this->FilteredTextureReads ? "On" : "Off") << "\n";
+  os << indent << "GPUPath: " << GetGPUPathAsString(this->GPUPath) << "\n";
+  os << indent << "LastGPUPath: " << GetGPUPathAsString(this->LastGPUPath) << "\n";
+  os << indent << "ComputeWorkgroupSize: " << this->ComputeWorkgroupSize[0] << " x "
+     << this->ComputeWorkgroupSize[1] << "\n";
+  os << indent << "ComputeWorkQueue: " << (this->ComputeWorkQueue ? "On" : "Off") << " ("
+     << this->ComputeWorkQueueGroups << " groups)\n";
   os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";
   os << indent << "NumberOfShaderCompilations: " << this->NumberOfShaderCompilations << "\n";
   os << indent << "ExtraShaderCode: " << (this->ExtraShaderCode ? "(set)" : "(none)") << "\n";

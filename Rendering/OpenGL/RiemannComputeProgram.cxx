@@ -1,0 +1,187 @@
+#include "RiemannComputeProgram.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtk_glew.h"
+
+#include <vector>
+
+vtkStandardNewMacro(vtkRiemannComputeProgram);
+
+namespace
+{
+/// The info log of a shader (`isProgram` false) or program object, trimmed.
+std::string InfoLog(GLuint object, bool isProgram)
+{
+  GLint length = 0;
+  if (isProgram)
+  {
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  }
+  else
+  {
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  }
+  std::vector<char> text(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
+  if (length > 0)
+  {
+    if (isProgram)
+    {
+      glGetProgramInfoLog(object, length, nullptr, text.data());
+    }
+    else
+    {
+      glGetShaderInfoLog(object, length, nullptr, text.data());
+    }
+  }
+  std::string log(text.data());
+  const std::size_t end = log.find_last_not_of(" \n\r\t");
+  log.erase(end == std::string::npos ? 0 : end + 1);
+  return log;
+}
+} // namespace
+
+namespace riemann
+{
+bool ComputeShadersAvailable()
+{
+  return GLEW_VERSION_4_3 ||
+    (GLEW_ARB_compute_shader && GLEW_ARB_shader_image_load_store &&
+      GLEW_ARB_shader_storage_buffer_object);
+}
+} // namespace riemann
+
+vtkRiemannComputeProgram::~vtkRiemannComputeProgram()
+{
+  // ReleaseProgram() ran in the owner's ReleaseGraphicsResources; the base
+  // class must not see a handle it did not make.
+  this->Handle = 0;
+  this->Linked = false;
+}
+
+bool vtkRiemannComputeProgram::Build(const std::string& source, std::string& log)
+{
+  log.clear();
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  if (shader == 0)
+  {
+    log = "glCreateShader(GL_COMPUTE_SHADER) failed: the context has no compute shaders";
+    return false;
+  }
+  const GLchar* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint compiled = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+  if (compiled != GL_TRUE)
+  {
+    log = InfoLog(shader, false);
+    glDeleteShader(shader);
+    if (log.empty())
+    {
+      log = "(the GLSL compiler gave no log)";
+    }
+    return false;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  // The program keeps the compiled code; the shader object is not needed.
+  glDetachShader(program, shader);
+  glDeleteShader(shader);
+  GLint linked = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  if (linked != GL_TRUE)
+  {
+    log = InfoLog(program, true);
+    glDeleteProgram(program);
+    if (log.empty())
+    {
+      log = "(the GLSL linker gave no log)";
+    }
+    return false;
+  }
+  // What vtkShaderProgram's uniform setters look at.
+  this->Handle = static_cast<int>(program);
+  this->Linked = true;
+  this->Compiled = false; // no vertex or fragment shader objects of the base class to clean up
+  return true;
+}
+
+void vtkRiemannComputeProgram::Use(vtkOpenGLRenderWindow* window)
+{
+  window->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(static_cast<GLuint>(this->Handle));
+  this->Bound = true;
+}
+
+void vtkRiemannComputeProgram::Dispatch(
+  int width, int height, int groupX, int groupY, bool workQueue, int groups)
+{
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+  if (workQueue)
+  {
+    // The tile counter starts at 0 for each dispatch.
+    const GLuint zero = 0;
+    if (this->QueueBuffer == 0)
+    {
+      glGenBuffers(1, &this->QueueBuffer);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->QueueBuffer);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_DRAW);
+    }
+    else
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->QueueBuffer);
+      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->QueueBuffer);
+    glDispatchCompute(static_cast<GLuint>(groups > 0 ? groups : 1), 1, 1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+  else
+  {
+    const GLuint tilesX = static_cast<GLuint>((width + groupX - 1) / groupX);
+    const GLuint tilesY = static_cast<GLuint>((height + groupY - 1) / groupY);
+    glDispatchCompute(tilesX, tilesY, 1);
+  }
+  // The images are read next as textures (composition), through a
+  // framebuffer (the hit capture) or by glGetTexImage.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void vtkRiemannComputeProgram::Unuse()
+{
+  glUseProgram(0);
+  this->Bound = false;
+}
+
+void vtkRiemannComputeProgram::ReleaseProgram(vtkWindow* window)
+{
+  if (this->Handle == 0 && this->QueueBuffer == 0)
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (context)
+  {
+    context->MakeCurrent();
+  }
+  if (this->Handle != 0)
+  {
+    glDeleteProgram(static_cast<GLuint>(this->Handle));
+  }
+  if (this->QueueBuffer != 0)
+  {
+    glDeleteBuffers(1, &this->QueueBuffer);
+  }
+  this->Handle = 0;
+  this->QueueBuffer = 0;
+  this->Linked = false;
+  this->Bound = false;
+}

@@ -1,0 +1,104 @@
+//RT::Version::Dec
+
+// ---------------------------------------------------------------------------
+// RiemannRayTraceCS.glsl: Riemannian ray tracing, one geodesic per compute
+// invocation (vtkRiemannRayTracePass, GPUPath Compute; OpenGL 4.3). The tags
+// are those of RiemannRayTraceFS.glsl, filled with the same GLSL, so a pixel
+// is traced and shaded by the same rt_pixel() on both paths. Why a second
+// path: on data-centre GPUs (NVIDIA's H100 and H200) only a few SMs run
+// fragment shaders, while compute work is spread over all of them.
+//
+// Each invocation traces the pixel at its global id into images the pass
+// then composes into VTK's framebuffer (RiemannReducedView): colour (RGBA8,
+// image unit 0), window depth (R32F, unit 1), or with rt_output 1 the hit
+// capture (RGBA32F, unit 2). Pixel (i, j) is the ray through
+// (i + 1/2, j + 1/2) of the traced view, as gl_FragCoord on the fragment path.
+//
+// Compile-time constants added by the pass:
+//   RT_GROUP_X, RT_GROUP_Y  the workgroup: one tile of pixels
+//   RT_WORK_QUEUE           1: persistent workgroups take tiles from an
+//                           atomic counter until none are left; 0: one
+//                           workgroup per tile
+// ---------------------------------------------------------------------------
+
+//RT::Constants::Dec
+
+//RT::Metric::Impl
+
+//RT::Meshes::Impl
+
+//RT::Scene::Impl
+
+//RT::Integrators::Impl
+
+//RT::Extra::Impl
+
+//RT::Pixel::Impl
+
+layout(local_size_x = RT_GROUP_X, local_size_y = RT_GROUP_Y, local_size_z = 1) in;
+
+layout(binding = 0, rgba8) writeonly uniform image2D rt_color_image;
+layout(binding = 1, r32f) writeonly uniform image2D rt_depth_image;
+layout(binding = 2, rgba32f) writeonly uniform image2D rt_hit_image;
+
+// The traced pixels (the images may be larger; the rest is left alone).
+uniform ivec2 rt_traced_size;
+
+void rt_trace_texel(ivec2 texel)
+{
+  if (texel.x >= rt_traced_size.x || texel.y >= rt_traced_size.y)
+  {
+    return;
+  }
+  vec4 color;
+  float depth;
+  rt_pixel(vec2(texel) + vec2(0.5) + rt_viewport.xy, color, depth);
+  if (rt_output == 1)
+  {
+    imageStore(rt_hit_image, texel, color);
+  }
+  else
+  {
+    imageStore(rt_color_image, texel, color);
+    imageStore(rt_depth_image, texel, vec4(depth, 0.0, 0.0, 0.0));
+  }
+}
+
+#if RT_WORK_QUEUE
+// The next tile to trace, counted up by the workgroups (reset to 0 by the
+// pass before each dispatch).
+layout(std430, binding = 0) buffer rt_work_queue
+{
+  uint rt_next_tile;
+};
+shared uint rt_tile;
+
+void main()
+{
+  uvec2 group = gl_WorkGroupSize.xy;
+  uvec2 tiles = (uvec2(rt_traced_size) + group - uvec2(1u)) / group;
+  uint count = tiles.x * tiles.y;
+  for (;;)
+  {
+    if (gl_LocalInvocationIndex == 0u)
+    {
+      rt_tile = atomicAdd(rt_next_tile, 1u);
+    }
+    barrier();
+    uint tile = rt_tile;
+    // Every invocation has read the tile before the first one takes the next.
+    barrier();
+    if (tile >= count)
+    {
+      return;
+    }
+    uvec2 origin = uvec2(tile % tiles.x, tile / tiles.x) * group;
+    rt_trace_texel(ivec2(origin + gl_LocalInvocationID.xy));
+  }
+}
+#else
+void main()
+{
+  rt_trace_texel(ivec2(gl_GlobalInvocationID.xy));
+}
+#endif
