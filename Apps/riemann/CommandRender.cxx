@@ -68,6 +68,8 @@ struct RenderArguments
   int Width = 640;
   int Height = 480;
   std::string Backend = "gpu";
+  /// vtkRiemannRayTracePass::GPUPath by name: auto, fragment or compute.
+  std::string GpuPath = "auto";
   std::string CameraPosition;
   std::string LookAt;
   std::string ViewUp;
@@ -421,6 +423,12 @@ void CheckRenderOptions(const RenderArguments& args)
   {
     throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
   }
+  if (args.Backend == "cpu" && args.GpuPath != "auto")
+  {
+    throw Failure("--gpu-path " + args.GpuPath + " chooses the GPU pass's shader path: it needs "
+                  "--backend gpu",
+      2);
+  }
   if (IsDistributed() && args.Backend != "cpu")
   {
     throw Failure("under mpirun, render needs --backend cpu: each rank traces its piece of the "
@@ -563,6 +571,9 @@ public:
     errors->Observe(this->Pass);
     this->Pass->SetMetric(metric);
     this->Pass->SetScene(scene);
+    this->Pass->SetGPUPath(args.GpuPath == "compute" ? vtkRiemannRayTracePass::COMPUTE
+        : args.GpuPath == "fragment"               ? vtkRiemannRayTracePass::FRAGMENT
+                                                   : vtkRiemannRayTracePass::AUTO);
     rays.ApplyTo(this->Pass.Get());
     this->Renderer->SetPass(this->Pass);
     this->Renderer->SetActiveCamera(camera);
@@ -773,6 +784,11 @@ void RegisterRenderCommand(CLI::App& app)
       "gpu (default: GLSL; every scene object, meshes included) or cpu (Embree, double precision; "
       "anti-aliasing, EXR with AOVs)")
     ->check(CLI::IsMember({ "gpu", "cpu" }));
+  command
+    ->add_option("--gpu-path", args->GpuPath,
+      "The GPU pass's shader path: auto (default: compute where the OpenGL context has 4.3 "
+      "compute shaders, else fragment), fragment or compute; the same picture either way")
+    ->check(CLI::IsMember({ "auto", "fragment", "compute" }));
   command
     ->add_option("--samples", args->Samples,
       "Rays per pixel, stratified (anti-aliasing; --backend cpu; default 1)")

@@ -46,9 +46,7 @@ namespace riemann
 {
 bool ComputeShadersAvailable()
 {
-  return GLEW_VERSION_4_3 ||
-    (GLEW_ARB_compute_shader && GLEW_ARB_shader_image_load_store &&
-      GLEW_ARB_shader_storage_buffer_object);
+  return GLEW_VERSION_4_3 || (GLEW_ARB_compute_shader && GLEW_ARB_shader_image_load_store);
 }
 } // namespace riemann
 
@@ -116,41 +114,17 @@ void vtkRiemannComputeProgram::Use(vtkOpenGLRenderWindow* window)
   this->Bound = true;
 }
 
-void vtkRiemannComputeProgram::Dispatch(
-  int width, int height, int groupX, int groupY, bool workQueue, int groups)
+void vtkRiemannComputeProgram::Dispatch(int width, int height, int groupX, int groupY)
 {
   if (width <= 0 || height <= 0)
   {
     return;
   }
-  if (workQueue)
-  {
-    // The tile counter starts at 0 for each dispatch.
-    const GLuint zero = 0;
-    if (this->QueueBuffer == 0)
-    {
-      glGenBuffers(1, &this->QueueBuffer);
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->QueueBuffer);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_DRAW);
-    }
-    else
-    {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->QueueBuffer);
-      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &zero);
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->QueueBuffer);
-    glDispatchCompute(static_cast<GLuint>(groups > 0 ? groups : 1), 1, 1);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  }
-  else
-  {
-    const GLuint tilesX = static_cast<GLuint>((width + groupX - 1) / groupX);
-    const GLuint tilesY = static_cast<GLuint>((height + groupY - 1) / groupY);
-    glDispatchCompute(tilesX, tilesY, 1);
-  }
-  // The images are read next as textures (composition), through a
-  // framebuffer (the hit capture) or by glGetTexImage.
+  const GLuint tilesX = static_cast<GLuint>((width + groupX - 1) / groupX);
+  const GLuint tilesY = static_cast<GLuint>((height + groupY - 1) / groupY);
+  glDispatchCompute(tilesX, tilesY, 1);
+  // The images are read next as textures (composition) or through a
+  // framebuffer (the hit capture).
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
@@ -163,7 +137,7 @@ void vtkRiemannComputeProgram::Unuse()
 
 void vtkRiemannComputeProgram::ReleaseProgram(vtkWindow* window)
 {
-  if (this->Handle == 0 && this->QueueBuffer == 0)
+  if (this->Handle == 0)
   {
     return;
   }
@@ -172,16 +146,8 @@ void vtkRiemannComputeProgram::ReleaseProgram(vtkWindow* window)
   {
     context->MakeCurrent();
   }
-  if (this->Handle != 0)
-  {
-    glDeleteProgram(static_cast<GLuint>(this->Handle));
-  }
-  if (this->QueueBuffer != 0)
-  {
-    glDeleteBuffers(1, &this->QueueBuffer);
-  }
+  glDeleteProgram(static_cast<GLuint>(this->Handle));
   this->Handle = 0;
-  this->QueueBuffer = 0;
   this->Linked = false;
   this->Bound = false;
 }

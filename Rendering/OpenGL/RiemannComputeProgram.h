@@ -21,8 +21,8 @@ class vtkWindow;
 
 namespace riemann
 {
-/// True where the current context runs compute shaders with image stores and storage buffers
-/// (OpenGL 4.3, or its three ARB extensions).
+/// True where the current context runs compute shaders with image stores (OpenGL 4.3, or its
+/// ARB extensions).
 bool ComputeShadersAvailable();
 } // namespace riemann
 
@@ -50,16 +50,14 @@ public:
   /**
    * Run one invocation per pixel of a width x height image in workgroups of
    * groupX x groupY pixels, then make its image stores visible to texture
-   * reads and framebuffer reads. With `workQueue`, `groups` persistent
-   * workgroups take tiles from the program's atomic counter (reset here)
-   * instead of one workgroup per tile.
+   * reads and framebuffer reads.
    */
-  void Dispatch(int width, int height, int groupX, int groupY, bool workQueue, int groups);
+  void Dispatch(int width, int height, int groupX, int groupY);
 
   /// Unbind the program (glUseProgram(0)).
   void Unuse();
 
-  /// Delete the program and the work-queue buffer (`window`'s context made current first).
+  /// Delete the program (`window`'s context made current first).
   void ReleaseProgram(vtkWindow* window);
 
 protected:
@@ -69,9 +67,6 @@ protected:
 private:
   vtkRiemannComputeProgram(const vtkRiemannComputeProgram&) = delete;
   void operator=(const vtkRiemannComputeProgram&) = delete;
-
-  /// The storage buffer holding the work queue's tile counter (0: none yet).
-  unsigned int QueueBuffer = 0;
 };
 
 #endif

@@ -15,10 +15,12 @@
 // (i + 1/2, j + 1/2) of the traced view, as gl_FragCoord on the fragment path.
 //
 // Compile-time constants added by the pass:
-//   RT_GROUP_X, RT_GROUP_Y  the workgroup: one tile of pixels
-//   RT_WORK_QUEUE           1: persistent workgroups take tiles from an
-//                           atomic counter until none are left; 0: one
-//                           workgroup per tile
+//   RT_GROUP_X, RT_GROUP_Y  the workgroup: one tile of pixels, one workgroup
+//                           per tile. (A persistent-thread queue, invocations
+//                           taking pixels from an atomic counter, was tried:
+//                           Mesa llvmpipe 22.3 drew wrong pixels whenever an
+//                           invocation traced a second ray, so it is not kept;
+//                           README, "Compute path".)
 // ---------------------------------------------------------------------------
 
 //RT::Constants::Dec
@@ -64,41 +66,7 @@ void rt_trace_texel(ivec2 texel)
   }
 }
 
-#if RT_WORK_QUEUE
-// The next tile to trace, counted up by the workgroups (reset to 0 by the
-// pass before each dispatch).
-layout(std430, binding = 0) buffer rt_work_queue
-{
-  uint rt_next_tile;
-};
-shared uint rt_tile;
-
-void main()
-{
-  uvec2 group = gl_WorkGroupSize.xy;
-  uvec2 tiles = (uvec2(rt_traced_size) + group - uvec2(1u)) / group;
-  uint count = tiles.x * tiles.y;
-  for (;;)
-  {
-    if (gl_LocalInvocationIndex == 0u)
-    {
-      rt_tile = atomicAdd(rt_next_tile, 1u);
-    }
-    barrier();
-    uint tile = rt_tile;
-    // Every invocation has read the tile before the first one takes the next.
-    barrier();
-    if (tile >= count)
-    {
-      return;
-    }
-    uvec2 origin = uvec2(tile % tiles.x, tile / tiles.x) * group;
-    rt_trace_texel(ivec2(origin + gl_LocalInvocationID.xy));
-  }
-}
-#else
 void main()
 {
   rt_trace_texel(ivec2(gl_GlobalInvocationID.xy));
 }
-#endif

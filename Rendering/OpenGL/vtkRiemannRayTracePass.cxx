@@ -741,10 +741,9 @@ std::string vtkRiemannRayTracePass::ComposeSource(const FrameState& frame) const
             << "#define RT_MESH_STACK " << riemann::MeshBVHStackSize << "\n";
   if (frame.UseCompute)
   {
-    constants << "// The compute path's workgroup (a tile of pixels) and work queue.\n"
+    constants << "// The compute path's workgroup (a tile of pixels).\n"
               << "#define RT_GROUP_X " << this->ComputeWorkgroupSize[0] << "\n"
-              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n"
-              << "#define RT_WORK_QUEUE " << (this->ComputeWorkQueue ? 1 : 0) << "\n";
+              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n";
   }
   std::string source = frame.UseCompute ? RiemannRayTraceCS : RiemannRayTraceFS;
   Replace(source, "//RT::Version::Dec", "#version 430 core");
@@ -1152,8 +1151,8 @@ void vtkRiemannRayTracePass::DispatchRays(const FrameState& frame, int width, in
 {
   if (frame.UseCompute)
   {
-    frame.Compute->Dispatch(width, height, this->ComputeWorkgroupSize[0],
-      this->ComputeWorkgroupSize[1], this->ComputeWorkQueue, this->ComputeWorkQueueGroups);
+    frame.Compute->Dispatch(
+      width, height, this->ComputeWorkgroupSize[0], this->ComputeWorkgroupSize[1]);
   }
   else
   {
@@ -1281,8 +1280,6 @@ void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastGPUPath: " << GetGPUPathAsString(this->LastGPUPath) << "\n";
   os << indent << "ComputeWorkgroupSize: " << this->ComputeWorkgroupSize[0] << " x "
      << this->ComputeWorkgroupSize[1] << "\n";
-  os << indent << "ComputeWorkQueue: " << (this->ComputeWorkQueue ? "On" : "Off") << " ("
-     << this->ComputeWorkQueueGroups << " groups)\n";
   os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";
   os << indent << "NumberOfShaderCompilations: " << this->NumberOfShaderCompilations << "\n";
   os << indent << "ExtraShaderCode: " << (this->ExtraShaderCode ? "(set)" : "(none)") << "\n";

@@ -191,22 +191,6 @@ public:
   vtkGetVector2Macro(ComputeWorkgroupSize, int);
   ///@}
 
-  ///@{
-  /**
-   * Balance the compute path's work with a queue (default off): instead of
-   * one workgroup per tile, ComputeWorkQueueGroups persistent workgroups
-   * take tiles from an atomic counter until none are left, so a workgroup
-   * whose rays hit early goes on with the next tile. Off by default: on Mesa's
-   * llvmpipe it measured no gain (README, "Compute path"); the GPU
-   * benchmark (Testing/Benchmarks/gpu_device) measures it on real GPUs.
-   */
-  vtkSetMacro(ComputeWorkQueue, bool);
-  vtkGetMacro(ComputeWorkQueue, bool);
-  vtkBooleanMacro(ComputeWorkQueue, bool);
-  vtkSetClampMacro(ComputeWorkQueueGroups, int, 1, 65535);
-  vtkGetMacro(ComputeWorkQueueGroups, int);
-  ///@}
-
   /// Projections (riemann::Projection's numbering).
   enum Projections
   {
@@ -392,8 +376,6 @@ protected:
   int GPUPath = AUTO;
   int LastGPUPath = AUTO;
   int ComputeWorkgroupSize[2] = { 8, 8 };
-  bool ComputeWorkQueue = false;
-  int ComputeWorkQueueGroups = 1024;
   char* ExtraShaderCode = nullptr;
   int HitImageWidth = 0;
   int HitImageHeight = 0;

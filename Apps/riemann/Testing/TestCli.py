@@ -278,6 +278,20 @@ class RenderTests(unittest.TestCase):
                              "--reference", os.path.join(baseline, "paper-grid.png"), "-o", out)
         self.assertEqual(status, 0, err)
 
+    def test_both_gpu_paths_draw_the_same_picture(self):
+        # --gpu-path compute against --gpu-path fragment: the same GLSL, so
+        # the same picture (mean difference at most 0.05 of 255: a pixel on
+        # a grid edge may round the other way).
+        scene = os.path.join(DATA, "scenes", "paper-two-bumps.json")
+        fragment = os.path.join(self.dir, "fragment.png")
+        status, _, err = run("render", "--gpu-path", "fragment", "--scene", scene,
+                             "--width", "80", "--height", "60", "-o", fragment)
+        self.assertEqual(status, 0, err)
+        status, _, err = run("render", "--gpu-path", "compute", "--scene", scene,
+                             "--width", "80", "--height", "60", "--threshold", "0.05",
+                             "--reference", fragment, "-o", os.path.join(self.dir, "compute.png"))
+        self.assertEqual(status, 0, err)
+
 
 class CpuRenderTests(unittest.TestCase):
     """riemann render --backend cpu (the Embree tracer)."""
@@ -764,6 +778,10 @@ BAD_INPUTS = [
     ("no subcommand", [], None, "A subcommand is required"),
     ("render: samples on the GPU", ["render", "--samples", "4", "-o", "OUT.png"], None,
      "need --backend cpu"),
+    ("render: unknown GPU path", ["render", "--gpu-path", "vulkan", "-o", "OUT.png"], None,
+     "--gpu-path"),
+    ("render: GPU path on the CPU", ["render", "--backend", "cpu", "--gpu-path", "compute",
+     "-o", "OUT.png"], None, "needs --backend gpu"),
     ("render: hit error without a diffeomorphism", ["render", "--backend", "cpu", "--hit-error",
      "-m", "METRIC", "-o", "OUT.png"], '{"type": "euclidean"}', "no exact reference"),
     ("render: mesh scene on the GPU", ["render", "--scene", "METRIC", "-o", "OUT.png"],

@@ -1,0 +1,297 @@
+// vtkRiemannRayTracePass's two GPU paths: the fragment shader and the
+// compute shader run the same GLSL (RiemannRayTracePixel.glsl), so they must
+// draw the same pictures.
+//
+// - Every shipped scene (Data/scenes) at 160 x 120: colour, window depth and
+//   the hit capture of both paths, per pixel. Stated tolerances: the mean
+//   colour difference under 0.02 (of 255), at most 0.05% of the pixels (10
+//   of 19,200) differing by more than 1 level, and the same for depth (more
+//   than 1e-5 apart) and for hits (more than 1e-4 apart). Measured on Mesa
+//   llvmpipe: every pixel equal in 7 scenes; one grid-edge pixel of
+//   paper-saddle-along-z differs (the two compiled programs round a float
+//   otherwise, and the ray lands on the other side of a bar after hundreds
+//   of steps).
+// - Reduced views (one ray per d x d pixels) are the same on both paths.
+// - The workgroup size (also one that does not divide the image) changes
+//   the schedule, never a pixel.
+// - Auto takes the compute path where the context has it (llvmpipe: 4.5);
+//   a bad workgroup size is refused; a broken compute shader is an error
+//   quoting the GLSL compiler, as on the fragment path.
+//
+// Rendering runs on Mesa llvmpipe under Xvfb: images stay small.
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannRayTracePass.h"
+#include "vtkRiemannScene.h"
+
+#include "vtkAutoInit.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "ImageComparison.h"
+#include "RenderingTestUtilities.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+namespace
+{
+namespace fs = std::filesystem;
+using riemann::testing::Compare;
+using riemann::testing::DifferenceStatistics;
+using riemann::testing::ErrorObserver;
+using riemann::testing::KeepXServerConnection;
+using riemann::testing::WindowPixels;
+
+fs::path DataDirectory()
+{
+  if (const char* dir = std::getenv("RIEMANN_DATA_DIR"))
+  {
+    return dir;
+  }
+  return fs::path(RIEMANN_TEST_DATA_DIR);
+}
+
+/// What one render of one path gives: colour, window depth and hits.
+struct Picture
+{
+  std::vector<unsigned char> Colour;
+  std::vector<float> Depth;
+  std::vector<float> Hits;
+  int Path = vtkRiemannRayTracePass::AUTO;
+};
+
+/// An offscreen window whose renderer draws a scene with the pass.
+struct View
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRiemannRayTracePass> Pass;
+  vtkNew<vtkRiemannMetric> Metric;
+  vtkNew<vtkRiemannScene> Scene;
+  int Width;
+  int Height;
+
+  View(int width, int height)
+    : Width(width)
+    , Height(height)
+  {
+    KeepXServerConnection();
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetPass(this->Pass);
+    this->Pass->SetMetric(this->Metric);
+    this->Pass->SetScene(this->Scene);
+    this->Pass->CaptureHitsOn();
+  }
+
+  /// Read the scene file and its metric (Euclidean when it has none), and take its camera.
+  void Load(const fs::path& file)
+  {
+    ASSERT_TRUE(this->Scene->SetDefinitionFile(file.c_str())) << this->Scene->GetLastError();
+    ASSERT_TRUE(this->Metric->SetDefinition(this->Scene->HasMetricDefinition()
+        ? this->Scene->GetMetricDefinition().c_str()
+        : R"({"type": "euclidean"})"))
+      << this->Metric->GetLastError();
+    this->Scene->ApplyCamera(this->Renderer->GetActiveCamera());
+  }
+
+  Picture Render(int path)
+  {
+    this->Pass->SetGPUPath(path);
+    this->Window->Render();
+    Picture picture;
+    picture.Path = this->Pass->GetLastGPUPath();
+    picture.Colour = WindowPixels(this->Window);
+    vtkNew<vtkFloatArray> depth;
+    this->Window->GetZbufferData(0, 0, this->Width - 1, this->Height - 1, depth);
+    picture.Depth.assign(depth->GetPointer(0), depth->GetPointer(0) + this->Width * this->Height);
+    vtkFloatArray* hits = this->Pass->GetHitImage();
+    picture.Hits.assign(
+      hits->GetPointer(0), hits->GetPointer(0) + 4 * hits->GetNumberOfTuples());
+    return picture;
+  }
+};
+
+/// The fraction of the values whose difference exceeds `threshold`, counted per pixel
+/// (`components` values each).
+double FractionApart(
+  const std::vector<float>& a, const std::vector<float>& b, int components, double threshold)
+{
+  if (a.size() != b.size())
+  {
+    return 1.0;
+  }
+  if (a.empty())
+  {
+    return 0.0; // nothing captured on either path
+  }
+  std::size_t apart = 0;
+  for (std::size_t i = 0; i < a.size(); i += components)
+  {
+    bool differs = false;
+    for (int c = 0; c < components; ++c)
+    {
+      differs = differs || !(std::abs(a[i + c] - b[i + c]) <= threshold);
+    }
+    apart += differs ? 1 : 0;
+  }
+  return static_cast<double>(apart) / static_cast<double>(a.size() / components);
+}
+
+/// The stated tolerances of this file (see the top).
+void ExpectTheSamePicture(const Picture& fragment, const Picture& compute, const std::string& label)
+{
+  ASSERT_EQ(fragment.Colour.size(), compute.Colour.size()) << label;
+  const DifferenceStatistics s = Compare(fragment.Colour, compute.Colour, 1);
+  const double depthApart = FractionApart(fragment.Depth, compute.Depth, 1, 1e-5);
+  const double hitsApart = FractionApart(fragment.Hits, compute.Hits, 4, 1e-4);
+  std::cout << label << ": colour mean " << s.Mean << ", pixels > 1: " << 100.0 * s.FractionAbove
+            << "%, depth apart: " << 100.0 * depthApart << "%, hits apart: " << 100.0 * hitsApart
+            << "%\n";
+  EXPECT_LT(s.Mean, 0.02) << label;
+  EXPECT_LE(s.FractionAbove, 0.0005) << label;
+  EXPECT_LE(depthApart, 0.0005) << label;
+  EXPECT_LE(hitsApart, 0.0005) << label;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+TEST(RayTracePassPaths, EveryShippedSceneIsTheSameOnBothPaths)
+{
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(DataDirectory() / "scenes"))
+  {
+    if (entry.path().extension() == ".json")
+    {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files)
+  {
+    SCOPED_TRACE(file.filename().string());
+    View view(160, 120);
+    view.Load(file);
+    ErrorObserver errors(view.Pass);
+    const Picture fragment = view.Render(vtkRiemannRayTracePass::FRAGMENT);
+    const Picture compute = view.Render(vtkRiemannRayTracePass::COMPUTE);
+    ASSERT_TRUE(errors.Messages.empty()) << errors.All();
+    EXPECT_EQ(fragment.Path, vtkRiemannRayTracePass::FRAGMENT);
+    EXPECT_EQ(compute.Path, vtkRiemannRayTracePass::COMPUTE);
+    ASSERT_EQ(compute.Hits.size(), 4u * 160 * 120);
+    ExpectTheSamePicture(fragment, compute, file.filename().string());
+  }
+  EXPECT_GE(files.size(), 8u) << "the paper's six figures, the showcase and the mesh scene";
+}
+
+TEST(RayTracePassPaths, ReducedViewsAreTheSameOnBothPaths)
+{
+  View view(160, 120);
+  view.Load(DataDirectory() / "scenes/paper-two-bumps.json");
+  view.Pass->CaptureHitsOff();
+  ErrorObserver errors(view.Pass);
+  for (double distance : { 2.0, 3.0, 4.5 })
+  {
+    view.Pass->SetImageSampleDistance(distance);
+    const Picture fragment = view.Render(vtkRiemannRayTracePass::FRAGMENT);
+    const Picture compute = view.Render(vtkRiemannRayTracePass::COMPUTE);
+    EXPECT_EQ(view.Pass->GetLastImageSampleDistance(), distance);
+    ExpectTheSamePicture(fragment, compute, "distance " + std::to_string(distance));
+  }
+  ASSERT_TRUE(errors.Messages.empty()) << errors.All();
+}
+
+TEST(RayTracePassPaths, WorkgroupsNeverChangeAPixel)
+{
+  View view(150, 110); // no workgroup below divides both sides
+  view.Load(DataDirectory() / "scenes/paper-one-bump.json");
+  ErrorObserver errors(view.Pass);
+  const Picture reference = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  const int compilations = view.Pass->GetNumberOfShaderCompilations();
+  const std::array<int, 2> sizes[] = { { 16, 4 }, { 13, 7 }, { 32, 32 }, { 1, 64 } };
+  for (const std::array<int, 2>& size : sizes)
+  {
+    const std::string label = std::to_string(size[0]) + " x " + std::to_string(size[1]);
+    view.Pass->SetComputeWorkgroupSize(size[0], size[1]);
+    const Picture picture = view.Render(vtkRiemannRayTracePass::COMPUTE);
+    // The same per-pixel code in another schedule: every value equal.
+    EXPECT_EQ(picture.Colour, reference.Colour) << label;
+    EXPECT_EQ(picture.Depth, reference.Depth) << label;
+    EXPECT_EQ(picture.Hits, reference.Hits) << label;
+  }
+  ASSERT_TRUE(errors.Messages.empty()) << errors.All();
+  // One program per workgroup size.
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), compilations + 4);
+}
+
+TEST(RayTracePassPaths, AutoTakesComputeWhereTheContextHasIt)
+{
+  View view(32, 24);
+  view.Load(DataDirectory() / "scenes/paper-grid.json");
+  EXPECT_EQ(view.Pass->GetGPUPath(), vtkRiemannRayTracePass::AUTO);
+  EXPECT_EQ(view.Pass->GetLastGPUPath(), vtkRiemannRayTracePass::AUTO) << "before any render";
+  view.Render(vtkRiemannRayTracePass::AUTO);
+  // Mesa's llvmpipe gives VTK an OpenGL 4.5 core context.
+  EXPECT_EQ(view.Pass->GetLastGPUPath(), vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_STREQ(vtkRiemannRayTracePass::GetGPUPathAsString(vtkRiemannRayTracePass::COMPUTE),
+    "Compute");
+  EXPECT_STREQ(vtkRiemannRayTracePass::GetGPUPathAsString(7), "Unknown");
+  EXPECT_NE(std::string(view.Pass->GetComputeShaderSource()).find("#version 430"),
+    std::string::npos);
+}
+
+TEST(RayTracePassPaths, BadWorkgroupSizesAreRefused)
+{
+  vtkNew<vtkRiemannRayTracePass> pass;
+  ErrorObserver errors(pass);
+  for (const auto& size : { std::array<int, 2>{ 0, 8 }, std::array<int, 2>{ 65, 1 },
+         std::array<int, 2>{ 64, 64 }, std::array<int, 2>{ -3, 4 } })
+  {
+    pass->SetComputeWorkgroupSize(size[0], size[1]);
+  }
+  ASSERT_EQ(errors.Messages.size(), 4u);
+  EXPECT_NE(errors.Messages[2].find("at most 1024"), std::string::npos) << errors.Messages[2];
+  EXPECT_EQ(pass->GetComputeWorkgroupSize()[0], 8);
+  EXPECT_EQ(pass->GetComputeWorkgroupSize()[1], 8);
+  pass->SetComputeWorkgroupSize(32, 32);
+  EXPECT_EQ(errors.Messages.size(), 4u);
+  EXPECT_EQ(pass->GetComputeWorkgroupSize()[0], 32);
+}
+
+TEST(RayTracePassPaths, BrokenShaderIsAnErrorOnBothPaths)
+{
+  for (int path : { vtkRiemannRayTracePass::FRAGMENT, vtkRiemannRayTracePass::COMPUTE })
+  {
+    const std::string label = vtkRiemannRayTracePass::GetGPUPathAsString(path);
+    View view(32, 24);
+    view.Load(DataDirectory() / "scenes/paper-grid.json");
+    view.Pass->SetExtraShaderCode("float rt_broken() { return rt_no_such_variable; }\n");
+    ErrorObserver errors(view.Pass);
+    const Picture picture = view.Render(path);
+    ASSERT_EQ(errors.Messages.size(), 1u) << label;
+    EXPECT_NE(errors.Messages[0].find("failed to compile"), std::string::npos) << errors.All();
+    EXPECT_NE(errors.Messages[0].find("rt_no_such_variable"), std::string::npos) << errors.All();
+    EXPECT_NE(std::string(view.Pass->GetLastError()).find("rt_no_such_variable"),
+      std::string::npos)
+      << label;
+    // The view is red, no hit image is left.
+    EXPECT_EQ(picture.Colour[0], 255) << label;
+    EXPECT_EQ(picture.Colour[1], 0) << label;
+    EXPECT_EQ(view.Pass->GetHitImageWidth(), 0) << label;
+  }
+}
