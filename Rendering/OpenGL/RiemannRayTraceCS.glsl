@@ -66,7 +66,31 @@ void rt_trace_texel(ivec2 texel)
   }
 }
 
+// Progressive refinement (vtkRiemannRayTracePass::ProgressiveRefinement):
+// invocation (i, j) traces pixel rt_lattice_origin + (i, j) * rt_lattice,
+// for (i, j) below rt_lattice_size, and with rt_skip_coarse 1 leaves the
+// pixels of the coarser lattice (every
+// 2 * rt_lattice pixels), traced by an earlier pass. A whole frame is lattice
+// 1 from the origin, nothing skipped.
+uniform int rt_lattice;
+uniform ivec2 rt_lattice_origin;
+// The lattice points of this dispatch (a band of rows): the workgroups
+// beyond them trace nothing, so no ray is traced twice.
+uniform ivec2 rt_lattice_size;
+uniform int rt_skip_coarse;
+
 void main()
 {
-  rt_trace_texel(ivec2(gl_GlobalInvocationID.xy));
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (cell.x >= rt_lattice_size.x || cell.y >= rt_lattice_size.y)
+  {
+    return;
+  }
+  ivec2 texel = rt_lattice_origin + cell * rt_lattice;
+  if (rt_skip_coarse == 1 && texel.x % (2 * rt_lattice) == 0 &&
+    texel.y % (2 * rt_lattice) == 0)
+  {
+    return;
+  }
+  rt_trace_texel(texel);
 }

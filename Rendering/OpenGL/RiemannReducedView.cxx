@@ -30,6 +30,34 @@ void main()
 }
 )";
 
+/// Composes a progressively refined view: each pixel from the finest lattice traced there.
+constexpr const char* LatticeFragmentShader = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D rt_traced_color;
+uniform sampler2D rt_traced_depth;
+uniform ivec2 rt_origin;
+uniform int rt_level;
+uniform int rt_rows_done;
+//VTK::Output::Dec
+void main()
+{
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: keeps texCoord (and the quad's texCoordIn) in the program
+  }
+  ivec2 p = ivec2(gl_FragCoord.xy) - rt_origin;
+  int d = rt_level;
+  ivec2 q = (p / d) * d;
+  if (q.y >= rt_rows_done)
+  {
+    d = 2 * d;
+    q = (p / d) * d;
+  }
+  gl_FragData[0] = texelFetch(rt_traced_color, q, 0);
+  gl_FragDepth = texelFetch(rt_traced_depth, q, 0).r;
+}
+)";
+
 /// A 2D texture of `window` read with `filter`, clamped to its edges.
 vtkSmartPointer<vtkTextureObject> NewTargetTexture(vtkOpenGLRenderWindow* window, int filter)
 {
@@ -192,9 +220,42 @@ bool ReducedView::Magnify(
   return true;
 }
 
+bool ReducedView::ComposeLattice(vtkOpenGLRenderWindow* window, const int viewport[4],
+  int level, int rowsDone, std::string& error)
+{
+  if (!this->LatticeQuad)
+  {
+    this->LatticeQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, LatticeFragmentShader, ""));
+  }
+  vtkShaderProgram* program = this->LatticeQuad->Program
+    ? window->GetShaderCache()->ReadyShaderProgram(this->LatticeQuad->Program)
+    : nullptr;
+  if (!program || !this->TracedDepth)
+  {
+    this->LatticeQuad.reset();
+    error = "the shader that composes the refined view could not be built";
+    return false;
+  }
+  this->Color->Activate();
+  this->TracedDepth->Activate();
+  program->SetUniformi("rt_traced_color", this->Color->GetTextureUnit());
+  program->SetUniformi("rt_traced_depth", this->TracedDepth->GetTextureUnit());
+  const int origin[2] = { viewport[0], viewport[1] };
+  program->SetUniform2i("rt_origin", origin);
+  program->SetUniformi("rt_level", level);
+  program->SetUniformi("rt_rows_done", rowsDone);
+  window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  this->LatticeQuad->Render();
+  this->TracedDepth->Deactivate();
+  this->Color->Deactivate();
+  return true;
+}
+
 void ReducedView::Release(vtkWindow* window)
 {
   this->Quad.reset(); // frees its VAO; the program stays in VTK's shader cache
+  this->LatticeQuad.reset();
   this->ReleaseTarget(window);
 }
 

@@ -84,6 +84,17 @@ public:
   bool Magnify(vtkOpenGLRenderWindow* window, const int viewport[4], const double traced[2],
     std::string& error);
 
+  /**
+   * Progressive refinement: draw the images of the last BindImages() over
+   * `viewport`, each pixel taking the colour and depth of the traced pixel
+   * below and left of it on the finest lattice traced there: `level` (every
+   * level-th pixel) for rows below `rowsDone`, 2 * level above (traced
+   * earlier). With level 1 and every row done, the images pixel for pixel.
+   * False with `error` when the shader cannot be built.
+   */
+  bool ComposeLattice(vtkOpenGLRenderWindow* window, const int viewport[4], int level,
+    int rowsDone, std::string& error);
+
   void Release(vtkWindow* window);
 
 private:
@@ -99,6 +110,7 @@ private:
   /// What Magnify() reads the depth from: Depth or DepthImage.
   vtkTextureObject* TracedDepth = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::unique_ptr<vtkOpenGLQuadHelper> LatticeQuad;
 };
 } // namespace riemann
 

@@ -48,7 +48,9 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstdint>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -202,6 +204,38 @@ private:
   vtkOpenGLState::ScopedglEnableDisable Blend;
 };
 
+/// The compute path's lattice (RiemannRayTraceCS.glsl): invocation (i, j),
+/// for i < columns and j < rows, traces pixel (0, originRow) + (i, j) *
+/// level, leaving the pixels of the coarser lattice (2 * level) when
+/// `skipCoarse`.
+void SetLattice(vtkShaderProgram* program, int level, int originRow, int columns, int rows,
+  bool skipCoarse)
+{
+  program->SetUniformi("rt_lattice", level);
+  const int origin[2] = { 0, originRow };
+  program->SetUniform2i("rt_lattice_origin", origin);
+  const int size[2] = { columns, rows };
+  program->SetUniform2i("rt_lattice_size", size);
+  program->SetUniformi("rt_skip_coarse", skipCoarse ? 1 : 0);
+}
+
+/// The first lattice of a refinement: the smallest power of two up to 32
+/// whose rays (pixels / d^2) take at most `budget` at `secondsPerRay` (8
+/// before any measurement).
+int FirstRefinementLevel(double pixels, double secondsPerRay, double budget)
+{
+  if (!(secondsPerRay > 0.0))
+  {
+    return 8;
+  }
+  int level = 1;
+  while (level < 32 && pixels / (double(level) * level) * secondsPerRay > budget)
+  {
+    level *= 2;
+  }
+  return level;
+}
+
 void ToFloat(const riemann::Vec3& v, float out[3])
 {
   for (int i = 0; i < 3; ++i)
@@ -257,6 +291,27 @@ public:
 
   /// The offscreen target of views traced at a lower resolution.
   riemann::ReducedView Reduced;
+
+  /// What a progressive refinement has traced, and of which view.
+  struct Refinement
+  {
+    /// The view: the pass's modification time (metric, scene, settings),
+    /// the actors' mesh, the viewport and the camera's numbers (not its
+    /// modification time: the renderer sets its clipping range every frame).
+    std::vector<double> Key;
+    bool Started = false;
+    bool Complete = true;
+    /// The lattice being traced (every Level-th pixel), the first one, and
+    /// the rows of the image it has covered.
+    int Level = 1;
+    int Coarsest = 1;
+    int RowsDone = 0;
+    /// Measured wall seconds per traced ray (0: not yet).
+    double SecondsPerRay = 0.0;
+  } Refine;
+  /// The full-resolution images a refinement accumulates (apart from
+  /// Reduced, which interactive frames overwrite).
+  riemann::ReducedView Refined;
   /// Wall seconds of the last timed ray tracing, at which image sample
   /// distance (-1: none yet).
   double TraceSeconds = -1.0;
@@ -369,6 +424,8 @@ public:
     this->Meshes.Release(window);
     this->MetricVolumes.Release(window);
     this->Reduced.Release(window);
+    this->Refined.Release(window);
+    this->Refine = Refinement();
     this->TraceSeconds = -1.0;
     if (this->HitFramebuffer)
     {
@@ -519,6 +576,8 @@ struct vtkRiemannRayTracePass::FrameState
   /// The path of this frame (ChooseGPUPath), and its program: Quad on the
   /// fragment path, Compute on the compute path.
   bool UseCompute = false;
+  /// The renderer's actors as one mesh (UseRendererProps; null without).
+  const void* ActorMesh = nullptr;
   vtkOpenGLQuadHelper* Quad = nullptr;
   vtkRiemannComputeProgram* Compute = nullptr;
 };
@@ -547,7 +606,7 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   this->SetObserverUniforms(program, frame);
   const bool useEnvironment = this->ActivateEnvironment(program, frame);
   const bool drawn = this->DrawView(program, frame);
-  if (drawn && this->CaptureHits)
+  if (drawn && this->CaptureHits && this->GetRefinementComplete())
   {
     this->CaptureHitImage(program, frame);
   }
@@ -714,6 +773,7 @@ bool vtkRiemannRayTracePass::AddRendererActors(FrameState& frame)
     return false;
   }
   this->NumberOfRenderedProps = this->Internals->Actors.GetNumberOfActors();
+  frame.ActorMesh = actors.get();
   if (actors)
   {
     // The same mesh object while the actors do not change: nothing is rebuilt.
@@ -1043,6 +1103,13 @@ bool vtkRiemannRayTracePass::DrawView(vtkShaderProgram* program, const FrameStat
 
   // One ray per pixel, or per d x d pixels magnified (ReducedView).
   double distance = this->ChooseImageSampleDistance(frame);
+  if (frame.UseCompute && this->ProgressiveRefinement && distance == 1.0 &&
+    !this->IsInteractive(frame))
+  {
+    return this->RefineView(program, frame);
+  }
+  this->Internals->Refine.Started = false; // a whole frame: a later refinement starts afresh
+  this->Internals->Refine.Complete = true;
   if (frame.UseCompute)
   {
     return this->DrawViewByCompute(program, frame, distance);
@@ -1112,6 +1179,7 @@ bool vtkRiemannRayTracePass::DrawViewByCompute(
   program->SetUniform4f("rt_viewport", traced);
   const int size[2] = { width, height };
   program->SetUniform2i("rt_traced_size", size);
+  SetLattice(program, 1, 0, width, height, false);
   this->TraceView(frame, distance, width, height);
   reduced.UnbindImages();
   frame.Compute->Unuse();
@@ -1127,14 +1195,121 @@ bool vtkRiemannRayTracePass::DrawViewByCompute(
   return true;
 }
 
-double vtkRiemannRayTracePass::ChooseImageSampleDistance(const FrameState& frame) const
+//------------------------------------------------------------------------------
+bool vtkRiemannRayTracePass::RefineView(vtkShaderProgram* program, const FrameState& frame)
 {
-  // Still renders: the distance asked for (1: every pixel).
+  vtkInternals& internals = *this->Internals;
+  vtkInternals::Refinement& refine = internals.Refine;
+  const int* viewport = frame.Viewport;
+  const int width = viewport[2];
+  const int height = viewport[3];
+
+  // Step 1: the view refined so far, or a new one from the coarsest lattice.
+  vtkCamera* camera = frame.Renderer->GetActiveCamera();
+  std::vector<double> key = { static_cast<double>(this->GetMTime()),
+    static_cast<double>(reinterpret_cast<std::uintptr_t>(frame.ActorMesh)),
+    static_cast<double>(viewport[0]), static_cast<double>(viewport[1]),
+    static_cast<double>(width), static_cast<double>(height), camera->GetViewAngle() };
+  for (const double* numbers : { camera->GetPosition(), camera->GetFocalPoint(),
+         camera->GetViewUp() })
+  {
+    key.insert(key.end(), numbers, numbers + 3);
+  }
+  const double* clipping = camera->GetClippingRange();
+  key.insert(key.end(), clipping, clipping + 2);
+  if (!refine.Started || key != refine.Key)
+  {
+    refine.Key = key;
+    refine.Started = true;
+    refine.Complete = false;
+    refine.Level = FirstRefinementLevel(
+      static_cast<double>(width) * height, refine.SecondsPerRay, this->RefinementSeconds);
+    refine.Coarsest = refine.Level;
+    refine.RowsDone = 0;
+  }
+  riemann::ReducedView& target = internals.Refined;
+  std::string error;
+  if (!target.BindImages(frame.Window, width, height, error))
+  {
+    frame.Compute->Unuse();
+    this->Fail("the compute path cannot draw: " + error, frame.Window, viewport);
+    return false;
+  }
+
+  // Step 2: the next piece: the whole first lattice, then bands of rows of
+  // the finer ones that take about RefinementSeconds.
+  if (!refine.Complete)
+  {
+    const bool first = refine.Level == refine.Coarsest;
+    const int level = refine.Level;
+    const int columns = (width + level - 1) / level;
+    const int rowsLeft = (height - refine.RowsDone + level - 1) / level;
+    int rows = rowsLeft;
+    const double newPerRow = columns * (first ? 1.0 : 0.75);
+    if (!first && refine.SecondsPerRay > 0.0)
+    {
+      // Whole workgroups of rows (a thinner band leaves invocations idle).
+      const int group = this->ComputeWorkgroupSize[1];
+      const double fit = this->RefinementSeconds / (newPerRow * refine.SecondsPerRay);
+      const int fitted = std::max(1, static_cast<int>(std::min<double>(rowsLeft, fit)));
+      rows = std::min(rowsLeft, (fitted + group - 1) / group * group);
+    }
+    const float full[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
+    program->SetUniform4f("rt_viewport", full);
+    const int size[2] = { width, height };
+    program->SetUniform2i("rt_traced_size", size);
+    SetLattice(program, level, refine.RowsDone, columns, rows, !first);
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    this->DispatchRays(frame, columns, rows);
+    glFinish();
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    refine.SecondsPerRay = elapsed.count() / std::max(1.0, newPerRow * rows);
+    refine.RowsDone += rows * level;
+    if (refine.RowsDone >= height)
+    {
+      refine.Complete = level == 1;
+      refine.Level = std::max(1, level / 2);
+      refine.RowsDone = refine.Complete ? height : 0;
+    }
+  }
+  target.UnbindImages();
+  frame.Compute->Unuse();
+
+  // Step 3: compose, each pixel from the finest lattice traced there.
+  if (!target.ComposeLattice(frame.Window, viewport, refine.Level, refine.RowsDone, error))
+  {
+    this->Fail("the compute path cannot compose its image: " + error, frame.Window, viewport);
+    return false;
+  }
+  this->LastImageSampleDistance = this->GetRefinementLevel();
+  return true;
+}
+
+bool vtkRiemannRayTracePass::GetRefinementComplete() const
+{
+  return this->Internals->Refine.Complete;
+}
+
+int vtkRiemannRayTracePass::GetRefinementLevel() const
+{
+  // Until the lattice being traced has covered rows, the picture is the one before it.
+  const vtkInternals::Refinement& refine = this->Internals->Refine;
+  return refine.Complete ? 1 : (refine.RowsDone > 0 ? refine.Level : 2 * refine.Level);
+}
+
+bool vtkRiemannRayTracePass::IsInteractive(const FrameState& frame) const
+{
   vtkRenderWindow* window = frame.Renderer->GetRenderWindow();
   vtkRenderWindowInteractor* interactor = window->GetInteractor();
   const double stillRate = interactor ? interactor->GetStillUpdateRate() : 0.0001;
-  const bool interactive = window->GetDesiredUpdateRate() > stillRate;
-  if (!this->AutoAdjustSampleDistances || !interactive)
+  return window->GetDesiredUpdateRate() > stillRate;
+}
+
+double vtkRiemannRayTracePass::ChooseImageSampleDistance(const FrameState& frame) const
+{
+  // Still renders: the distance asked for (1: every pixel).
+  if (!this->AutoAdjustSampleDistances || !this->IsInteractive(frame))
   {
     return this->ImageSampleDistance;
   }
@@ -1227,6 +1402,7 @@ void vtkRiemannRayTracePass::CaptureHitImage(vtkShaderProgram* program, const Fr
         2, internals.HitTexture->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
       const int size[2] = { width, height };
       program->SetUniform2i("rt_traced_size", size);
+      SetLattice(program, 1, 0, width, height, false);
     }
     float target[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
     program->SetUniform4f("rt_viewport", target);
@@ -1280,6 +1456,8 @@ void vtkRiemannRayTracePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastGPUPath: " << GetGPUPathAsString(this->LastGPUPath) << "\n";
   os << indent << "ComputeWorkgroupSize: " << this->ComputeWorkgroupSize[0] << " x "
      << this->ComputeWorkgroupSize[1] << "\n";
+  os << indent << "ProgressiveRefinement: " << (this->ProgressiveRefinement ? "On" : "Off")
+     << " (pieces of " << this->RefinementSeconds << " s)\n";
   os << indent << "HitImage: " << this->HitImageWidth << " x " << this->HitImageHeight << "\n";
   os << indent << "NumberOfShaderCompilations: " << this->NumberOfShaderCompilations << "\n";
   os << indent << "ExtraShaderCode: " << (this->ExtraShaderCode ? "(set)" : "(none)") << "\n";

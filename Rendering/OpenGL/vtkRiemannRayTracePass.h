@@ -191,6 +191,39 @@ public:
   vtkGetVector2Macro(ComputeWorkgroupSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Progressive still frames (default off; compute path). A still render
+   * of a new view traces a coarse lattice of rays first (every d-th pixel
+   * along each side, d the smallest power of two up to 32 whose rays take
+   * at most RefinementSeconds at the last measured cost per ray, 8 before
+   * any measurement), shown magnified; each further still render of the
+   * same view adds the rays of the next finer lattice (d / 2: three rays in
+   * four are new, none is traced twice), in bands of rows that take about
+   * RefinementSeconds each, until every pixel is traced
+   * (GetRefinementComplete()). Any change to the view (metric, scene,
+   * settings, camera, size) starts again from the coarsest lattice; so does
+   * an interactive frame. The caller renders again while the picture is
+   * not complete (riemann-studio does, between input events, so the window
+   * never waits for a whole frame). The hit capture comes with the last
+   * piece. On the fragment path, or with ImageSampleDistance above 1, still
+   * renders are whole frames.
+   */
+  vtkSetMacro(ProgressiveRefinement, bool);
+  vtkGetMacro(ProgressiveRefinement, bool);
+  vtkBooleanMacro(ProgressiveRefinement, bool);
+  vtkSetClampMacro(RefinementSeconds, double, 0.001, 10.0);
+  vtkGetMacro(RefinementSeconds, double);
+  ///@}
+
+  /// Whether the last render finished its picture (true except while a progressive
+  /// refinement goes on).
+  bool GetRefinementComplete() const;
+
+  /// The lattice of the last render's picture: 1 when every pixel is traced, d when the
+  /// finest complete lattice is every d-th pixel.
+  int GetRefinementLevel() const;
+
   /// Projections (riemann::Projection's numbering).
   enum Projections
   {
@@ -376,6 +409,8 @@ protected:
   int GPUPath = AUTO;
   int LastGPUPath = AUTO;
   int ComputeWorkgroupSize[2] = { 8, 8 };
+  bool ProgressiveRefinement = false;
+  double RefinementSeconds = 0.1;
   char* ExtraShaderCode = nullptr;
   int HitImageWidth = 0;
   int HitImageHeight = 0;
@@ -408,6 +443,8 @@ private:
   bool DrawView(vtkShaderProgram* program, const FrameState& frame);
   bool ChooseGPUPath(FrameState& frame);
   bool DrawViewByCompute(vtkShaderProgram* program, const FrameState& frame, double distance);
+  bool RefineView(vtkShaderProgram* program, const FrameState& frame);
+  bool IsInteractive(const FrameState& frame) const;
   double ChooseImageSampleDistance(const FrameState& frame) const;
   void TraceView(const FrameState& frame, double distance, int width, int height);
   void DispatchRays(const FrameState& frame, int width, int height);
