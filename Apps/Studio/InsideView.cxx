@@ -85,6 +85,12 @@ InsideView::InsideView(StudioDocument* document, QWidget* parent)
     if (view->CurrentBackend == GPU)
     {
       Q_EMIT view->ViewDrawn(view->RayTracePass->GetLastImageSampleDistance());
+      // A still frame refined in pieces: the next piece once the events that
+      // came meanwhile (a click, a key, the next slider value) are handled.
+      if (!view->RayTracePass->GetRefinementComplete())
+      {
+        view->ScheduleRender();
+      }
     }
   });
   this->ObserverRenderer->AddObserver(vtkCommand::EndEvent, rendered);
@@ -115,6 +121,10 @@ void InsideView::SetUpRenderers()
   this->RayTracePass->SetScene(this->Document->Scene());
   this->RayTracePass->SetIntegrationSettings(this->Document->RaySettings());
   this->RayTracePass->SetUseSceneSettings(this->Document->UseSceneSettings());
+  // Still frames come in pieces (a coarse picture first, then finer ones),
+  // so that the window answers between them instead of waiting for a whole
+  // frame; Capture() finishes the picture.
+  this->RayTracePass->ProgressiveRefinementOn();
   this->ObserverRenderer->SetPass(this->RayTracePass);
   this->ObserverRenderer->SetActiveCamera(this->Document->Observer());
   this->ObserverRenderer->SetLayer(0);
@@ -266,16 +276,27 @@ void InsideView::SetMoving(bool moving)
 
 QImage InsideView::Capture()
 {
-  // A full frame, even while something moves the view.
+  // A full frame, even while something moves the view or a still frame is
+  // being refined (the rays already traced are kept; larger pieces now).
   vtkRenderWindow* window = this->renderWindow();
   const double rate = window->GetDesiredUpdateRate();
   const double still = this->interactor()->GetStillUpdateRate();
-  if (this->RenderPending || rate > still)
+  vtkRiemannRayTracePass* pass = this->RayTracePass;
+  const bool gpu = this->CurrentBackend == GPU;
+  if (this->RenderPending || rate > still || (gpu && !pass->GetRefinementComplete()))
   {
     window->SetDesiredUpdateRate(still);
+    const double pieces = pass->GetRefinementSeconds();
+    pass->SetRefinementSeconds(10.0);
     this->RenderNow();
+    for (int guard = 0; gpu && !pass->GetRefinementComplete() && guard < 64; ++guard)
+    {
+      this->RenderNow(); // the finer lattices, up to 10 s a piece
+    }
+    pass->SetRefinementSeconds(pieces);
     window->SetDesiredUpdateRate(rate);
   }
+  this->RenderPending = false;
   return this->grabFramebuffer();
 }
 

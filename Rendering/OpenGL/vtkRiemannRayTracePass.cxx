@@ -610,6 +610,14 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   {
     this->CaptureHitImage(program, frame);
   }
+  else if (drawn && this->CaptureHits)
+  {
+    // Refining: the hits of an earlier view must not pass for this one's.
+    this->HitImageWidth = 0;
+    this->HitImageHeight = 0;
+    this->Internals->HitImage->SetNumberOfTuples(0);
+    this->Internals->HitImage->Modified();
+  }
   if (drawn)
   {
     this->RenderOverlays(s);
@@ -1284,6 +1292,11 @@ bool vtkRiemannRayTracePass::RefineView(vtkShaderProgram* program, const FrameSt
   }
   this->LastImageSampleDistance = this->GetRefinementLevel();
   return true;
+}
+
+void vtkRiemannRayTracePass::SetRefinementSeconds(double seconds)
+{
+  this->RefinementSeconds = std::min(10.0, std::max(0.001, seconds));
 }
 
 bool vtkRiemannRayTracePass::GetRefinementComplete() const

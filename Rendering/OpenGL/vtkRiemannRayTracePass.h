@@ -212,7 +212,9 @@ public:
   vtkSetMacro(ProgressiveRefinement, bool);
   vtkGetMacro(ProgressiveRefinement, bool);
   vtkBooleanMacro(ProgressiveRefinement, bool);
-  vtkSetClampMacro(RefinementSeconds, double, 0.001, 10.0);
+  /// Seconds a piece of the refinement may take (default 0.1; 0.001 to 10). It changes
+  /// no picture, so setting it does not restart a refinement (no Modified()).
+  void SetRefinementSeconds(double seconds);
   vtkGetMacro(RefinementSeconds, double);
   ///@}
 

@@ -295,3 +295,63 @@ TEST(RayTracePassPaths, BrokenShaderIsAnErrorOnBothPaths)
     EXPECT_EQ(view.Pass->GetHitImageWidth(), 0) << label;
   }
 }
+
+TEST(RayTracePassPaths, ProgressiveRefinementEndsInTheWholeFrame)
+{
+  // Pieces of 1 ms: many renders, each adding rays; the finished picture is
+  // the whole frame's, every colour, depth and hit equal (the same rays).
+  View view(96, 72);
+  view.Load(DataDirectory() / "scenes/paper-two-bumps.json");
+  ErrorObserver errors(view.Pass);
+  const Picture whole = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_TRUE(view.Pass->GetRefinementComplete());
+
+  view.Pass->ProgressiveRefinementOn();
+  view.Pass->SetRefinementSeconds(0.001);
+  Picture picture = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_FALSE(view.Pass->GetRefinementComplete());
+  const int firstLevel = view.Pass->GetRefinementLevel();
+  EXPECT_GE(firstLevel, 2) << "a coarse lattice first";
+  EXPECT_EQ(view.Pass->GetHitImageWidth(), 0) << "hits come with the last piece";
+  int renders = 1;
+  int level = firstLevel;
+  while (!view.Pass->GetRefinementComplete() && renders < 2000)
+  {
+    picture = view.Render(vtkRiemannRayTracePass::COMPUTE);
+    EXPECT_LE(view.Pass->GetRefinementLevel(), level) << "the lattice only gets finer";
+    level = view.Pass->GetRefinementLevel();
+    ++renders;
+  }
+  ASSERT_TRUE(view.Pass->GetRefinementComplete());
+  EXPECT_GT(renders, 4);
+  EXPECT_EQ(view.Pass->GetRefinementLevel(), 1);
+  EXPECT_EQ(picture.Colour, whole.Colour);
+  EXPECT_EQ(picture.Depth, whole.Depth);
+  EXPECT_EQ(picture.Hits, whole.Hits);
+
+  // A finished picture stays (nothing traced again); a camera move starts over.
+  picture = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_TRUE(view.Pass->GetRefinementComplete());
+  EXPECT_EQ(picture.Colour, whole.Colour);
+  view.Renderer->GetActiveCamera()->Azimuth(5.0);
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_FALSE(view.Pass->GetRefinementComplete());
+  EXPECT_GE(view.Pass->GetRefinementLevel(), 2);
+  // Setting the piece's time changes no picture: the refinement goes on.
+  const int before = view.Pass->GetRefinementLevel();
+  view.Pass->SetRefinementSeconds(10.0);
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_LE(view.Pass->GetRefinementLevel(), before / 2) << "went on with the next lattice";
+  ASSERT_TRUE(errors.Messages.empty()) << errors.All();
+}
+
+TEST(RayTracePassPaths, TheFragmentPathDrawsWholeFrames)
+{
+  View view(48, 36);
+  view.Load(DataDirectory() / "scenes/paper-grid.json");
+  view.Pass->ProgressiveRefinementOn();
+  view.Render(vtkRiemannRayTracePass::FRAGMENT);
+  EXPECT_TRUE(view.Pass->GetRefinementComplete());
+  EXPECT_EQ(view.Pass->GetRefinementLevel(), 1);
+  EXPECT_EQ(view.Pass->GetHitImageWidth(), 48);
+}
