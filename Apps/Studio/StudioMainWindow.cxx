@@ -16,6 +16,7 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayBundle.h"
+#include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
 
 #include "vtkCamera.h"
@@ -135,19 +136,23 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   QObject::connect(this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
   QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
     [this](const QString& message) { this->ShowMessage("Inside view: " + message, true); });
-  // While the view moves the pass traces fewer rays: say how many.
-  QObject::connect(this->InsideWidget, &InsideView::ViewDrawn, this, [this](double distance) {
+  // While the view moves the pass traces fewer rays, and a still frame comes
+  // coarse first (refined in pieces): say how many rays.
+  const auto coarseText = [this](double distance) {
+    const bool refining = !this->InsideWidget->Pass()->GetRefinementComplete();
+    return QStringLiteral("%1: 1 ray per %2 x %2 pixels")
+      .arg(refining ? QStringLiteral("refining") : QStringLiteral("moving"))
+      .arg(distance, 0, 'f', 1);
+  };
+  QObject::connect(this->InsideWidget, &InsideView::ViewDrawn, this, [this, coarseText](double distance) {
     this->LastDistance = distance;
-    this->FrameTime->setText(distance > 1.0
-        ? QStringLiteral("moving: 1 ray per %1 x %1 pixels").arg(distance, 0, 'f', 1)
-        : this->LastFrameTime);
+    this->FrameTime->setText(distance > 1.0 ? coarseText(distance) : this->LastFrameTime);
   });
-  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this](double ms) {
+  QObject::connect(this->InsideWidget, &InsideView::FrameRendered, this, [this, coarseText](double ms) {
     const QString time = QStringLiteral("frame %1 ms").arg(ms, 0, 'f', 1);
     if (this->LastDistance > 1.0)
     {
-      this->FrameTime->setText(
-        QStringLiteral("moving: 1 ray per %1 x %1 pixels, ").arg(this->LastDistance, 0, 'f', 1) + time);
+      this->FrameTime->setText(coarseText(this->LastDistance) + ", " + time);
       return;
     }
     this->LastFrameTime = time;

@@ -1273,6 +1273,9 @@ bool vtkRiemannRayTracePass::RefineView(vtkShaderProgram* program, const FrameSt
     glFinish();
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     refine.SecondsPerRay = elapsed.count() / std::max(1.0, newPerRow * rows);
+    // What a whole frame would take, for the interactive frames' distance.
+    internals.TraceSeconds = refine.SecondsPerRay * width * height;
+    internals.TraceDistance = 1.0;
     refine.RowsDone += rows * level;
     if (refine.RowsDone >= height)
     {

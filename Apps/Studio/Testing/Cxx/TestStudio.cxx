@@ -898,8 +898,10 @@ void TestStudio::MovingTheCameraTracesFewerRaysUntilItStops()
   QVERIFY2(drawn.count() >= 2, qPrintable(QString("%1 frames while moving").arg(drawn.count())));
   QCOMPARE(drawn.last().at(0).toDouble(), 10.0);
   send(QEvent::MouseButtonRelease, start + QPoint(24, 12), Qt::NoButton);
+  // The still frame that ends the drag comes in pieces (ProgressiveRefinement)
+  // and ends full resolution: the picture a still render gives.
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
   QCoreApplication::processEvents();
-  // The frame that ends the drag is full resolution: the picture a still render gives.
   QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
   const QImage released = inside->grabFramebuffer();
   inside->RenderNow();
@@ -925,10 +927,12 @@ void TestStudio::HoldingASliderTracesFewerRaysUntilItIsLetGo()
   // An export while it is held is still a full frame.
   const QImage captured = inside->Capture();
   QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
-  // Let go: one full frame, the picture a still render gives.
+  // Let go: a still frame, refined in pieces until every ray is traced.
   Q_EMIT slider->sliderReleased();
   const int before = drawn.count();
   QTRY_VERIFY(drawn.count() > before);
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
+  QCoreApplication::processEvents();
   QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
   QVERIFY2(window->FrameTimeText().startsWith("frame "), qPrintable(window->FrameTimeText()));
   QCOMPARE(DifferentPixels(captured, inside->grabFramebuffer()), 0.0);
