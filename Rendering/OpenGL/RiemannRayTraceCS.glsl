@@ -67,30 +67,37 @@ void rt_trace_texel(ivec2 texel)
 }
 
 // Progressive refinement (vtkRiemannRayTracePass::ProgressiveRefinement):
-// invocation (i, j) traces pixel rt_lattice_origin + (i, j) * rt_lattice,
-// for (i, j) below rt_lattice_size, and with rt_skip_coarse 1 leaves the
-// pixels of the coarser lattice (every
-// 2 * rt_lattice pixels), traced by an earlier pass. A whole frame is lattice
-// 1 from the origin, nothing skipped.
+// the pixels of a lattice, every rt_lattice-th pixel from rt_lattice_origin,
+// lattice point (i, j) at pixel rt_lattice_origin + (i, j) * rt_lattice.
+// With rt_skip_coarse 0, invocation (i, j) traces point (i, j) for (i, j)
+// below rt_lattice_size: a whole frame is lattice 1 from the origin. With
+// rt_skip_coarse 1, only the points that the coarser lattice (every 2 *
+// rt_lattice) has not traced, packed so that no invocation idles: rows go
+// in pairs, invocation (x, p) of pair p < rt_lattice_size.y traces point
+// (x, 2p + 1) for x below the rt_lattice_size.x columns, and the odd point
+// (2 (x - columns) + 1, 2p) after them.
 uniform int rt_lattice;
 uniform ivec2 rt_lattice_origin;
-// The lattice points of this dispatch (a band of rows): the workgroups
-// beyond them trace nothing, so no ray is traced twice.
 uniform ivec2 rt_lattice_size;
 uniform int rt_skip_coarse;
 
 void main()
 {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
-  if (cell.x >= rt_lattice_size.x || cell.y >= rt_lattice_size.y)
+  int columns = rt_lattice_size.x;
+  ivec2 point = cell;
+  if (rt_skip_coarse == 1)
+  {
+    if (cell.x >= columns + columns / 2 || cell.y >= rt_lattice_size.y)
+    {
+      return;
+    }
+    point = cell.x < columns ? ivec2(cell.x, 2 * cell.y + 1)
+                             : ivec2(2 * (cell.x - columns) + 1, 2 * cell.y);
+  }
+  else if (cell.x >= columns || cell.y >= rt_lattice_size.y)
   {
     return;
   }
-  ivec2 texel = rt_lattice_origin + cell * rt_lattice;
-  if (rt_skip_coarse == 1 && texel.x % (2 * rt_lattice) == 0 &&
-    texel.y % (2 * rt_lattice) == 0)
-  {
-    return;
-  }
-  rt_trace_texel(texel);
+  rt_trace_texel(rt_lattice_origin + point * rt_lattice);
 }

@@ -204,10 +204,10 @@ private:
   vtkOpenGLState::ScopedglEnableDisable Blend;
 };
 
-/// The compute path's lattice (RiemannRayTraceCS.glsl): invocation (i, j),
-/// for i < columns and j < rows, traces pixel (0, originRow) + (i, j) *
-/// level, leaving the pixels of the coarser lattice (2 * level) when
-/// `skipCoarse`.
+/// The compute path's lattice (RiemannRayTraceCS.glsl): every level-th
+/// pixel from row originRow, `columns` wide; `rows` rows, or with
+/// `skipCoarse` (the points of the coarser lattice left out, packed) `rows`
+/// pairs of rows.
 void SetLattice(vtkShaderProgram* program, int level, int originRow, int columns, int rows,
   bool skipCoarse)
 {
@@ -246,29 +246,55 @@ void ToFloat(const riemann::Vec3& v, float out[3])
 } // namespace
 
 //------------------------------------------------------------------------------
+/// A built program of either path: a quad (fragment) or a compute program.
+struct vtkRiemannRayTracePass::CachedProgram
+{
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkSmartPointer<vtkRiemannComputeProgram> Compute;
+  unsigned long long LastUse = 0;
+
+  /// Still usable: the window may have released the quad's program behind our back.
+  bool IsValid() const
+  {
+    return this->Compute ? this->Compute->IsReady() : (this->Quad && this->Quad->Program);
+  }
+};
+
+//------------------------------------------------------------------------------
 class vtkRiemannRayTracePass::vtkInternals
 {
 public:
-  /// A built program of either path: a quad (fragment) or a compute program.
-  struct CachedProgram
-  {
-    std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-    vtkSmartPointer<vtkRiemannComputeProgram> Compute;
-    unsigned long long LastUse = 0;
-
-    /// Still usable: the window may have released the quad's program behind our back.
-    bool IsValid() const
-    {
-      return this->Compute ? this->Compute->IsReady() : (this->Quad && this->Quad->Program);
-    }
-  };
-
   /// The window whose context holds the resources below.
   vtkOpenGLRenderWindow* Context = nullptr;
   /// Built programs by source, and sources that failed with their message.
   std::map<std::string, CachedProgram> Programs;
   std::map<std::string, std::string> FailedPrograms;
   unsigned long long UseCounter = 0;
+
+  /// What a program is made of besides the fixed GLSL (ComposeSource).
+  struct ProgramIngredients
+  {
+    std::string MetricSource;
+    int Integrator = -1;
+    bool Meshes = false;
+    bool Compute = false;
+    int Group[2] = { 0, 0 };
+    std::string Extra;
+
+    bool operator==(const ProgramIngredients& other) const
+    {
+      return this->Integrator == other.Integrator && this->Meshes == other.Meshes &&
+        this->Compute == other.Compute && this->Group[0] == other.Group[0] &&
+        this->Group[1] == other.Group[1] && this->Extra == other.Extra &&
+        this->MetricSource == other.MetricSource;
+    }
+  };
+  /// The last frame's ingredients and program: while a frame's ingredients
+  /// are the same (a new camera, time, parameter value or scene object
+  /// changes none of them), its source is neither composed nor looked up.
+  ProgramIngredients LastIngredients;
+  CachedProgram* LastProgram = nullptr;
+  int NumberOfSourceCompositions = 0;
 
   vtkSmartPointer<vtkTextureObject> Environment;
   std::string EnvironmentPath;
@@ -343,6 +369,10 @@ public:
       if (it->second.Compute)
       {
         it->second.Compute->ReleaseProgram(window);
+      }
+      if (&it->second == this->LastProgram)
+      {
+        this->LastProgram = nullptr;
       }
     }
     this->Programs.erase(first, last); // each quad helper frees its VAO
@@ -830,7 +860,25 @@ std::string vtkRiemannRayTracePass::ComposeSource(const FrameState& frame) const
 vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
 {
   vtkInternals& internals = *this->Internals;
+  // Step 1: the same ingredients as the last frame: the same program.
+  vtkInternals::ProgramIngredients ingredients;
+  ingredients.MetricSource = frame.MetricGlsl.Source;
+  ingredients.Integrator = static_cast<int>(frame.Rays.Integrator);
+  ingredients.Meshes = frame.Scene->HasMeshes();
+  ingredients.Compute = frame.UseCompute;
+  ingredients.Group[0] = frame.UseCompute ? this->ComputeWorkgroupSize[0] : 0;
+  ingredients.Group[1] = frame.UseCompute ? this->ComputeWorkgroupSize[1] : 0;
+  ingredients.Extra = this->ExtraShaderCode ? this->ExtraShaderCode : "";
+  if (internals.LastProgram && internals.LastProgram->IsValid() &&
+    ingredients == internals.LastIngredients)
+  {
+    return this->BindProgram(*internals.LastProgram, frame);
+  }
+  internals.LastProgram = nullptr;
+
+  // Step 2: compose the source; programs are cached by it.
   const std::string source = this->ComposeSource(frame);
+  ++internals.NumberOfSourceCompositions;
   (frame.UseCompute ? this->ComputeShaderSource : this->FragmentShaderSource) = source;
 
   // Programs are cached by source; one that failed is not tried again.
@@ -850,7 +898,7 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
   if (found == internals.Programs.end())
   {
     std::string message;
-    vtkInternals::CachedProgram built;
+    CachedProgram built;
     if (frame.UseCompute)
     {
       ++this->NumberOfShaderCompilations;
@@ -873,14 +921,21 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
     }
     found = internals.StoreProgram(source, std::move(built));
   }
-  found->second.LastUse = ++internals.UseCounter;
+  internals.LastIngredients = std::move(ingredients);
+  internals.LastProgram = &found->second;
+  return this->BindProgram(found->second, frame);
+}
+
+vtkShaderProgram* vtkRiemannRayTracePass::BindProgram(CachedProgram& cached, FrameState& frame)
+{
+  cached.LastUse = ++this->Internals->UseCounter;
   if (frame.UseCompute)
   {
-    frame.Compute = found->second.Compute;
+    frame.Compute = cached.Compute;
     frame.Compute->Use(frame.Window);
     return frame.Compute;
   }
-  frame.Quad = found->second.Quad.get();
+  frame.Quad = cached.Quad.get();
   vtkShaderProgram* program =
     frame.Window->GetShaderCache()->ReadyShaderProgram(frame.Quad->Program);
   if (!program)
@@ -888,6 +943,11 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
     this->Fail("the ray-tracing shader could not be bound", frame.Window, frame.Viewport);
   }
   return program;
+}
+
+int vtkRiemannRayTracePass::GetNumberOfSourceCompositions() const
+{
+  return this->Internals->NumberOfSourceCompositions;
 }
 
 //------------------------------------------------------------------------------
@@ -1245,38 +1305,49 @@ bool vtkRiemannRayTracePass::RefineView(vtkShaderProgram* program, const FrameSt
   }
 
   // Step 2: the next piece: the whole first lattice, then bands of rows of
-  // the finer ones that take about RefinementSeconds.
+  // the finer ones (in pairs of rows: RiemannRayTraceCS.glsl) that take
+  // about RefinementSeconds.
   if (!refine.Complete)
   {
     const bool first = refine.Level == refine.Coarsest;
     const int level = refine.Level;
     const int columns = (width + level - 1) / level;
     const int rowsLeft = (height - refine.RowsDone + level - 1) / level;
+    // Lattice rows of this piece, and the rays new in each.
     int rows = rowsLeft;
-    const double newPerRow = columns * (first ? 1.0 : 0.75);
+    const double newPerRow = first ? columns : 0.75 * columns;
     if (!first && refine.SecondsPerRay > 0.0)
     {
-      // Whole workgroups of rows (a thinner band leaves invocations idle).
-      const int group = this->ComputeWorkgroupSize[1];
+      // Pairs of rows (the packing's unit). Rounding up to whole workgroups
+      // would idle no invocation, but on llvmpipe it made pieces of 16 rows
+      // take 6 times the budget; a partly idle workgroup costs little.
       const double fit = this->RefinementSeconds / (newPerRow * refine.SecondsPerRay);
-      const int fitted = std::max(1, static_cast<int>(std::min<double>(rowsLeft, fit)));
-      rows = std::min(rowsLeft, (fitted + group - 1) / group * group);
+      const int fitted = std::max(2, static_cast<int>(std::min<double>(rowsLeft, fit)));
+      rows = std::min(rowsLeft, (fitted + 1) / 2 * 2);
     }
     const float full[4] = { 0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height) };
     program->SetUniform4f("rt_viewport", full);
     const int size[2] = { width, height };
     program->SetUniform2i("rt_traced_size", size);
-    SetLattice(program, level, refine.RowsDone, columns, rows, !first);
+    const int pairs = (rows + 1) / 2;
+    SetLattice(program, level, refine.RowsDone, columns, first ? rows : pairs, !first);
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    this->DispatchRays(frame, columns, rows);
+    if (first)
+    {
+      this->DispatchRays(frame, columns, rows);
+    }
+    else
+    {
+      this->DispatchRays(frame, columns + columns / 2, pairs);
+    }
     glFinish();
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     refine.SecondsPerRay = elapsed.count() / std::max(1.0, newPerRow * rows);
     // What a whole frame would take, for the interactive frames' distance.
     internals.TraceSeconds = refine.SecondsPerRay * width * height;
     internals.TraceDistance = 1.0;
-    refine.RowsDone += rows * level;
+    refine.RowsDone += (first ? rows : 2 * pairs) * level;
     if (refine.RowsDone >= height)
     {
       refine.Complete = level == 1;

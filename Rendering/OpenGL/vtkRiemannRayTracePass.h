@@ -357,6 +357,16 @@ public:
   /// Shader programs this pass has built (compiled and linked, or tried to).
   vtkGetMacro(NumberOfShaderCompilations, int);
 
+  /**
+   * Shader sources this pass has composed. A frame composes (and looks up)
+   * its source only when something in it differs from the last frame's: the
+   * metric's structure (the text of its GLSL, not its numbers), the
+   * integrator, whether the scene has meshes, the path, the workgroup or
+   * ExtraShaderCode. A camera move, a new time, parameter value or scene
+   * object composes nothing.
+   */
+  int GetNumberOfSourceCompositions() const;
+
   /// Hierarchies of the scene's meshes this pass has built and uploaded (one per new set of
   /// meshes).
   int GetNumberOfMeshBuilds() const;
@@ -430,12 +440,15 @@ private:
 
   /// What one frame draws: window, viewport, metric, scene, rays and observer.
   struct FrameState;
+  /// A built program of either path, kept by its source.
+  struct CachedProgram;
 
   ///@{
   /// The steps of Render(), in order. Each returns false after Fail().
   bool PrepareFrame(const vtkRenderState* s, FrameState& frame);
   bool AddRendererActors(FrameState& frame);
   vtkShaderProgram* ReadyProgram(FrameState& frame);
+  vtkShaderProgram* BindProgram(CachedProgram& cached, FrameState& frame);
   bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
   void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
   void SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame);

@@ -19,6 +19,7 @@
 //   quoting the GLSL compiler, as on the fragment path.
 //
 // Rendering runs on Mesa llvmpipe under Xvfb: images stay small.
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
@@ -38,6 +39,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -354,4 +356,46 @@ TEST(RayTracePassPaths, TheFragmentPathDrawsWholeFrames)
   EXPECT_TRUE(view.Pass->GetRefinementComplete());
   EXPECT_EQ(view.Pass->GetRefinementLevel(), 1);
   EXPECT_EQ(view.Pass->GetHitImageWidth(), 48);
+}
+
+TEST(RayTracePassPaths, TheSourceIsComposedOnlyWhenItChanges)
+{
+  View view(32, 24);
+  view.Load(DataDirectory() / "scenes/paper-one-bump.json");
+  view.Pass->CaptureHitsOff();
+  ErrorObserver errors(view.Pass);
+  const char* bump = R"({"type": "graph", "gaussians": [{"amplitude": %g, "center": [0, 0, 0],
+    "sigma": [0.5, 0.5, 0.5]}]})";
+  char definition[256];
+  std::snprintf(definition, sizeof(definition), bump, 1.0);
+  ASSERT_TRUE(view.Metric->SetDefinition(definition)) << view.Metric->GetLastError();
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_EQ(view.Pass->GetNumberOfSourceCompositions(), 1);
+
+  // A camera move and a new amplitude (a uniform): nothing composed or compiled.
+  view.Renderer->GetActiveCamera()->Azimuth(10.0);
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  std::snprintf(definition, sizeof(definition), bump, 0.5);
+  ASSERT_TRUE(view.Metric->SetDefinition(definition));
+  const Picture flatter = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_EQ(view.Pass->GetNumberOfSourceCompositions(), 1);
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 1);
+
+  // The integrator, the path: composed (and built) once each.
+  view.Pass->UseSceneSettingsOff();
+  view.Pass->GetIntegrationSettings()->SetIntegratorType(vtkRiemannIntegrationSettings::EULER);
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_EQ(view.Pass->GetNumberOfSourceCompositions(), 2);
+  view.Render(vtkRiemannRayTracePass::FRAGMENT);
+  view.Render(vtkRiemannRayTracePass::FRAGMENT);
+  EXPECT_EQ(view.Pass->GetNumberOfSourceCompositions(), 3);
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3);
+  // Back to the first program: composed again to find it, not compiled.
+  view.Pass->UseSceneSettingsOn();
+  const Picture again = view.Render(vtkRiemannRayTracePass::COMPUTE);
+  EXPECT_EQ(view.Pass->GetNumberOfSourceCompositions(), 4);
+  EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3);
+  EXPECT_EQ(again.Colour, flatter.Colour);
+  ASSERT_TRUE(errors.Messages.empty()) << errors.All();
 }
