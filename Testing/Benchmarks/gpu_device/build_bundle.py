@@ -28,6 +28,7 @@ REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 MULTIARCH = "/usr/lib/x86_64-linux-gnu"
 
 ROOT_BINARIES = [
+    f"{REPO}/build/bin/RiemannGpuPathsBenchmark",
     f"{REPO}/build/bin/RiemannSampledFrameBenchmark",
     f"{REPO}/build/bin/RiemannMeshFrameBenchmark",
     f"{REPO}/build/bin/RiemannRayTraceBenchmark",

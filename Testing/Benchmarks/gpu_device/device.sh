@@ -165,7 +165,11 @@ EOF
   export OPENIMAGEIO_OPTIONS=try_all_readers=0
   local data="$REPO/Data"
   local so="stdbuf -oL -eL"
-  # (2) issue 17's figure first: the sampled lens against the analytic one,
+  # (2) issue 28's figures first: the fragment and the compute path side by
+  # side at 1080p (ns per ray step, frames/s, the workgroup sizes)
+  step "RiemannGpuPathsBenchmark ${W}x${H}" 180 \
+    $so "$B/bin/RiemannGpuPathsBenchmark" --width $W --height $H --repetitions 5 --data "$data"
+  # then issue 17's: the sampled lens against the analytic one,
   # fewer rays, and the frames while interacting
   step "RiemannSampledFrameBenchmark ${W}x${H}" 150 \
     $so "$B/bin/RiemannSampledFrameBenchmark" --width $W --height $H --repetitions 3 --data "$data"
@@ -179,11 +183,13 @@ EOF
   step "RiemannCpuRayTraceBenchmark ${W}x${H}" 120 \
     $so "$B/bin/RiemannCpuRayTraceBenchmark" --width $W --height $H --data "$data"
 
-  # (4) tests: GPU-vs-CPU comparisons first, then the whole OpenGL binary, then
+  # (4) tests: GPU-vs-CPU comparisons first (and the two GPU paths), then the whole OpenGL binary, then
   # the rest of the CPU binary. Full gtest output: $OUT/tests.log.
   export RIEMANN_DATA_DIR="$data" RIEMANN_TEST_OUTPUT_DIR=/tmp/riemann-test-out
   rm -rf "$RIEMANN_TEST_OUTPUT_DIR"; mkdir -p "$RIEMANN_TEST_OUTPUT_DIR"
   local compare='CPURayTracer.RendersEveryShippedSceneAsTheGpu:RendererActors.*'
+  # RayTracePassPaths.* (fragment vs compute on every shipped scene) runs in
+  # the whole OpenGL test binary below.
   local rest="-$compare"
   local ogl=''
   if [ "${RIEMANN_SMALL_TESTS:-$SMALL}" = 1 ]; then
