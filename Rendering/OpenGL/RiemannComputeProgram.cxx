@@ -5,6 +5,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <vector>
 
 vtkStandardNewMacro(vtkRiemannComputeProgram);
@@ -47,6 +48,40 @@ namespace riemann
 bool ComputeShadersAvailable()
 {
   return GLEW_VERSION_4_3 || (GLEW_ARB_compute_shader && GLEW_ARB_shader_image_load_store);
+}
+
+
+int ScatteringStride(unsigned int count)
+{
+  // A prime near 0.38 count (the golden section: consecutive workgroups land
+  // far apart, and far from the ones before) that does not divide count, so
+  // that n -> n * stride mod count is a permutation, and small enough that
+  // n * stride stays below 2^32 (the shader's unsigned arithmetic).
+  const auto isPrime = [](unsigned int n)
+  {
+    for (unsigned int d = 2; d * d <= n; ++d)
+    {
+      if (n % d == 0)
+      {
+        return false;
+      }
+    }
+    return n >= 2;
+  };
+  if (count < 3)
+  {
+    return 1;
+  }
+  const unsigned int limit = 0xffffffffu / count;
+  for (unsigned int stride = std::min(static_cast<unsigned int>(0.381966 * count), limit);
+       stride >= 2; --stride)
+  {
+    if (isPrime(stride) && count % stride != 0)
+    {
+      return static_cast<int>(stride);
+    }
+  }
+  return 1;
 }
 } // namespace riemann
 
@@ -122,6 +157,10 @@ void vtkRiemannComputeProgram::Dispatch(int width, int height, int groupX, int g
   }
   const GLuint tilesX = static_cast<GLuint>((width + groupX - 1) / groupX);
   const GLuint tilesY = static_cast<GLuint>((height + groupY - 1) / groupY);
+  // The tiles in a scattered order (RiemannRayTraceCS.glsl: rt_tile_stride).
+  const int grid[2] = { static_cast<int>(tilesX), static_cast<int>(tilesY) };
+  this->SetUniform2i("rt_tile_grid", grid);
+  this->SetUniformi("rt_tile_stride", riemann::ScatteringStride(tilesX * tilesY));
   glDispatchCompute(tilesX, tilesY, 1);
   // The images are read next as textures (composition) or through a
   // framebuffer (the hit capture).

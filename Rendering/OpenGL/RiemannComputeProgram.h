@@ -12,6 +12,7 @@
 #ifndef RiemannComputeProgram_h
 #define RiemannComputeProgram_h
 
+#include "RiemannRenderingOpenGLModule.h" // For export macro (ScatteringStride, tested)
 #include "vtkShaderProgram.h"
 
 #include <string>
@@ -24,6 +25,14 @@ namespace riemann
 /// True where the current context runs compute shaders with image stores (OpenGL 4.3, or its
 /// ARB extensions).
 bool ComputeShadersAvailable();
+
+/**
+ * The stride that scatters `count` tiles (RiemannRayTraceCS.glsl): the
+ * largest prime up to 0.38 count that does not divide it and keeps
+ * count * stride below 2^32 (1 for fewer than 3 tiles, or where none is
+ * left), so that n -> n * stride mod count visits every tile once.
+ */
+RIEMANNRENDERINGOPENGL_EXPORT int ScatteringStride(unsigned int count);
 } // namespace riemann
 
 class vtkRiemannComputeProgram : public vtkShaderProgram

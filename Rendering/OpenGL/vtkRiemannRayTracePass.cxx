@@ -841,7 +841,9 @@ std::string vtkRiemannRayTracePass::ComposeSource(const FrameState& frame) const
   {
     constants << "// The compute path's workgroup (a tile of pixels).\n"
               << "#define RT_GROUP_X " << this->ComputeWorkgroupSize[0] << "\n"
-              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n";
+              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n"
+              << "#define RT_GROUP_INVOCATIONS "
+              << this->ComputeWorkgroupSize[0] * this->ComputeWorkgroupSize[1] << "\n";
   }
   std::string source = frame.UseCompute ? RiemannRayTraceCS : RiemannRayTraceFS;
   Replace(source, "//RT::Version::Dec", "#version 430 core");

@@ -45,6 +45,8 @@
 #include <QSignalSpy>
 #include <QPushButton>
 #include <QSlider>
+#include <QTimer>
+#include <QWheelEvent>
 #include <QTemporaryDir>
 #include <QtTest/QtTest>
 
@@ -207,6 +209,8 @@ private Q_SLOTS:
   void SampledMetricReadsItsVolumeFromItsFolder();
   void MovingTheCameraTracesFewerRaysUntilItStops();
   void HoldingASliderTracesFewerRaysUntilItIsLetGo();
+  void StillFramesComeInPiecesAndTheWindowAnswers();
+  void TheWheelPreviewsThenRefines();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -936,4 +940,68 @@ void TestStudio::HoldingASliderTracesFewerRaysUntilItIsLetGo()
   QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
   QVERIFY2(window->FrameTimeText().startsWith("frame "), qPrintable(window->FrameTimeText()));
   QCOMPARE(DifferentPixels(captured, inside->grabFramebuffer()), 0.0);
+}
+
+void TestStudio::StillFramesComeInPiecesAndTheWindowAnswers()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
+  QSignalSpy drawn(inside, &InsideView::ViewDrawn);
+  QSlider* slider = window->Parameters()->Slider("/parameters/a");
+  QVERIFY(slider);
+  // A slider let go at a new value: the first picture is a coarse lattice
+  // (llvmpipe cannot trace the whole view in the 0.1 s a piece may take).
+  slider->setValue(slider->value() + 40);
+  QTRY_VERIFY(drawn.count() >= 1);
+  QVERIFY2(drawn.first().at(0).toDouble() >= 2.0,
+    qPrintable(QString("first picture at %1").arg(drawn.first().at(0).toDouble())));
+  QVERIFY2(window->FrameTimeText().startsWith("refining: 1 ray per"),
+    qPrintable(window->FrameTimeText()));
+  // An event posted now is handled before the picture is finished: the
+  // window answers between pieces.
+  bool answered = false;
+  QTimer::singleShot(0, window.get(), [&answered]() { answered = true; });
+  QTRY_VERIFY(answered);
+  QVERIFY(!inside->Pass()->GetRefinementComplete());
+  // The lattices get finer until every pixel has its ray: the still render's picture.
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 120000);
+  QCoreApplication::processEvents();
+  QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
+  for (int k = 1; k < drawn.count(); ++k)
+  {
+    QVERIFY(drawn.at(k).at(0).toDouble() <= drawn.at(k - 1).at(0).toDouble());
+  }
+  const QImage refined = inside->grabFramebuffer();
+  inside->Pass()->ProgressiveRefinementOff();
+  inside->RenderNow();
+  QCOMPARE(DifferentPixels(refined, inside->grabFramebuffer()), 0.0);
+}
+
+void TestStudio::TheWheelPreviewsThenRefines()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
+  inside->interactor()->SetDesiredUpdateRate(10000.0); // no frame fits: the fewest rays
+  QSignalSpy drawn(inside, &InsideView::ViewDrawn);
+  double before[3];
+  window->Document()->Observer()->GetPosition(before);
+  // One wheel step forward: a dolly towards the look-at point.
+  const QPoint at(120, 90);
+  QWheelEvent wheel(at, inside->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+    Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(inside, &wheel);
+  QCoreApplication::processEvents();
+  double after[3];
+  window->Document()->Observer()->GetPosition(after);
+  QVERIFY(std::abs(after[2] - before[2]) + std::abs(after[0] - before[0]) > 1e-6);
+  // The reduced preview a drag gets, then a still picture refined to the full one.
+  QVERIFY2(drawn.count() >= 2, qPrintable(QString("%1 frames").arg(drawn.count())));
+  QCOMPARE(drawn.first().at(0).toDouble(), 10.0);
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 120000);
+  QCoreApplication::processEvents();
+  QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
 }

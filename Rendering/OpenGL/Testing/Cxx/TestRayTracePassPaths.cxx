@@ -32,6 +32,7 @@
 #include "vtkRenderer.h"
 
 #include "ImageComparison.h"
+#include "RiemannComputeProgram.h"
 #include "RenderingTestUtilities.h"
 
 #include <gtest/gtest.h>
@@ -398,4 +399,33 @@ TEST(RayTracePassPaths, TheSourceIsComposedOnlyWhenItChanges)
   EXPECT_EQ(view.Pass->GetNumberOfShaderCompilations(), 3);
   EXPECT_EQ(again.Colour, flatter.Colour);
   ASSERT_TRUE(errors.Messages.empty()) << errors.All();
+}
+
+TEST(RayTracePassPaths, TilesAreScatteredOnceEach)
+{
+  // n -> n * stride mod count visits every tile once, for the tile counts of
+  // small and large views (2 x 2 pixels to 16384 x 16384 at 8 x 8), and the
+  // shader's unsigned products do not wrap.
+  for (unsigned int count : { 1u, 2u, 3u, 4u, 12u, 97u, 300u, 1024u, 32400u, 65536u, 262144u,
+         4194304u })
+  {
+    const unsigned int stride = static_cast<unsigned int>(riemann::ScatteringStride(count));
+    ASSERT_GE(stride, 1u);
+    EXPECT_LE(static_cast<unsigned long long>(count) * stride, 0xffffffffull) << count;
+    if (count > 4194304u / 64u)
+    {
+      continue; // the visit below is for the smaller counts
+    }
+    std::vector<bool> seen(count, false);
+    for (unsigned int n = 0; n < count; ++n)
+    {
+      const unsigned int tile = (n * stride) % count;
+      EXPECT_FALSE(seen[tile]) << count << " tiles, stride " << stride;
+      seen[tile] = true;
+    }
+    if (count >= 100)
+    {
+      EXPECT_GT(stride, count / 4) << "consecutive workgroups land far apart";
+    }
+  }
 }
