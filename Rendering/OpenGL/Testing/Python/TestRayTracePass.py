@@ -4,7 +4,8 @@ Euclidean space and one solid sphere on a plain background: the centre pixel
 is the sphere's colour and a corner the background's (colours that are exact
 in 8 bits). Then the Gaussian bump of the paper with the same program
 (a new amplitude is a uniform), a captured hit point read back as numbers,
-and the view traced with one ray per 4 x 4 pixels.
+the view traced with one ray per 4 x 4 pixels, both GPU paths (the same
+picture) and a progressively refined still frame (the whole frame's).
 
 Run by ctest under xvfb-run with /usr/bin/python3 and PYTHONPATH set to the
 build tree's package folder (see cmake/RiemannTesting.cmake).
@@ -119,6 +120,32 @@ check(len(colours) > 4, "the reduced view is magnified (%d colours)" % len(colou
 rt.SetImageSampleDistance(1)
 check(rt.GetAutoAdjustSampleDistances() and rt.GetMaximumImageSampleDistance() == 10.0,
       "interaction adjusts the distance, up to 10, by default")
+check(not errors, "no VTK error: %s" % errors)
+
+# Both GPU paths from Python: the same picture; Auto takes compute on llvmpipe.
+check(rt.GetGPUPath() == riemann.vtkRiemannRayTracePass.AUTO, "GPUPath is Auto by default")
+check(rt.GetLastGPUPath() == riemann.vtkRiemannRayTracePass.COMPUTE,
+      "Auto took %s" % rt.GetGPUPathAsString(rt.GetLastGPUPath()))
+rt.SetGPUPathToFragment()
+fragment = render()
+rt.SetGPUPathToCompute()
+compute = render()
+same = all(pixel(fragment, c, r) == pixel(compute, c, r) for r in range(HEIGHT) for c in range(WIDTH))
+check(same, "the fragment and the compute path draw the same picture")
+# Progressive still frames: a coarse picture first, then every ray once.
+rt.ProgressiveRefinementOn()
+rt.SetRefinementSeconds(0.001)
+renderer.GetActiveCamera().Azimuth(0.5)
+last = render()
+renders = 1
+while not rt.GetRefinementComplete() and renders < 500:
+    last = render()
+    renders += 1
+check(rt.GetRefinementComplete() and renders > 1, "refined in %d renders" % renders)
+rt.ProgressiveRefinementOff()
+whole = render()
+same = all(pixel(last, c, r) == pixel(whole, c, r) for r in range(HEIGHT) for c in range(WIDTH))
+check(same, "the refined picture is the whole frame's")
 check(not errors, "no VTK error: %s" % errors)
 
 if failures:
