@@ -184,71 +184,73 @@ void ReducedView::Unbind(vtkOpenGLRenderWindow* window)
   window->GetState()->PopFramebufferBindings();
 }
 
-bool ReducedView::Magnify(
-  vtkOpenGLRenderWindow* window, const int viewport[4], const double traced[2], std::string& error)
+vtkShaderProgram* ReducedView::ReadyComposer(vtkOpenGLRenderWindow* window,
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* shader, std::string& error)
 {
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, MagnifyFragmentShader, ""));
-  }
-  vtkShaderProgram* program = this->Quad->Program
-    ? window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program)
-    : nullptr;
-  if (!program)
-  {
-    this->Quad.reset();
-    error = "the shader that magnifies the reduced-resolution view could not be built";
-    return false;
-  }
   if (!this->TracedDepth)
   {
-    error = "nothing was traced to magnify";
-    return false;
+    error = "nothing was traced to compose";
+    return nullptr;
+  }
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, shader, ""));
+  }
+  vtkShaderProgram* program =
+    quad->Program ? window->GetShaderCache()->ReadyShaderProgram(quad->Program) : nullptr;
+  if (!program)
+  {
+    quad.reset();
+    error = "the shader that composes the traced view could not be built";
+    return nullptr;
   }
   this->Color->Activate();
   this->TracedDepth->Activate();
   program->SetUniformi("rt_traced_color", this->Color->GetTextureUnit());
   program->SetUniformi("rt_traced_depth", this->TracedDepth->GetTextureUnit());
+  return program;
+}
+
+void ReducedView::Compose(
+  vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper* quad, const int viewport[4])
+{
+  window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  quad->Render();
+  this->TracedDepth->Deactivate();
+  this->Color->Deactivate();
+}
+
+bool ReducedView::Magnify(
+  vtkOpenGLRenderWindow* window, const int viewport[4], const double traced[2], std::string& error)
+{
+  vtkShaderProgram* program =
+    this->ReadyComposer(window, this->Quad, MagnifyFragmentShader, error);
+  if (!program)
+  {
+    return false;
+  }
   const float extent[2] = { static_cast<float>(traced[0] / this->Color->GetWidth()),
     static_cast<float>(traced[1] / this->Color->GetHeight()) };
   program->SetUniform2f("rt_traced_extent", extent);
-  window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-  this->Quad->Render();
-  this->TracedDepth->Deactivate();
-  this->Color->Deactivate();
+  this->Compose(window, this->Quad.get(), viewport);
   return true;
 }
 
 bool ReducedView::ComposeLattice(vtkOpenGLRenderWindow* window, const int viewport[4],
   int level, int rowsDone, std::string& error)
 {
-  if (!this->LatticeQuad)
+  vtkShaderProgram* program =
+    this->ReadyComposer(window, this->LatticeQuad, LatticeFragmentShader, error);
+  if (!program)
   {
-    this->LatticeQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, LatticeFragmentShader, ""));
-  }
-  vtkShaderProgram* program = this->LatticeQuad->Program
-    ? window->GetShaderCache()->ReadyShaderProgram(this->LatticeQuad->Program)
-    : nullptr;
-  if (!program || !this->TracedDepth)
-  {
-    this->LatticeQuad.reset();
-    error = "the shader that composes the refined view could not be built";
     return false;
   }
-  this->Color->Activate();
-  this->TracedDepth->Activate();
-  program->SetUniformi("rt_traced_color", this->Color->GetTextureUnit());
-  program->SetUniformi("rt_traced_depth", this->TracedDepth->GetTextureUnit());
   const int origin[2] = { viewport[0], viewport[1] };
   program->SetUniform2i("rt_origin", origin);
   program->SetUniformi("rt_level", level);
   program->SetUniformi("rt_rows_done", rowsDone);
-  window->GetState()->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  window->GetState()->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-  this->LatticeQuad->Render();
-  this->TracedDepth->Deactivate();
-  this->Color->Deactivate();
+  this->Compose(window, this->LatticeQuad.get(), viewport);
   return true;
 }
 

@@ -24,6 +24,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -101,6 +102,12 @@ private:
   void ReleaseTarget(vtkWindow* window);
   /// A colour texture that holds width x height pixels (kept while it fits).
   void ReadyColor(vtkOpenGLRenderWindow* window, int width, int height);
+  /// Build `quad` with `shader` once and bind it with the traced colour and depth; null with
+  /// `error` when nothing was traced or the shader cannot be built.
+  vtkShaderProgram* ReadyComposer(vtkOpenGLRenderWindow* window,
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* shader, std::string& error);
+  /// Draw `quad` over `viewport`, then release the traced textures' units.
+  void Compose(vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper* quad, const int viewport[4]);
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Color;

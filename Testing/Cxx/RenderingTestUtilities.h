@@ -6,7 +6,9 @@
 #include "ErrorObserver.h"
 
 #include "vtkFloatingPointExceptions.h"
+#include "vtkRenderPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 
 namespace riemann
 {
@@ -38,6 +40,18 @@ inline void KeepXServerConnection()
     return window;
   }();
   (void)kept;
+}
+/// Ready `window` as the tests draw: offscreen, width x height, no
+/// multisampling (pixels compare exactly), `renderer` drawing with `pass`.
+inline void SetUpOffscreenView(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkRenderPass* pass, int width, int height)
+{
+  KeepXServerConnection();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  renderer->SetPass(pass);
 }
 } // namespace testing
 } // namespace riemann

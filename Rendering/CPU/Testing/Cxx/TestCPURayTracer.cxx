@@ -46,6 +46,7 @@
 #include "ImageComparison.h"
 #include "RenderingTestUtilities.h"
 #include "SampledLensImage.h"
+#include "TestDataDirectory.h"
 #include "UVSphereMesh.h"
 
 #include <gtest/gtest.h>
@@ -73,14 +74,7 @@ using riemann::testing::DifferenceStatistics;
 using riemann::testing::ErrorObserver;
 using riemann::testing::KeepXServerConnection;
 
-fs::path DataDirectory()
-{
-  if (const char* dir = std::getenv("RIEMANN_DATA_DIR"))
-  {
-    return dir;
-  }
-  return fs::path(RIEMANN_TEST_DATA_DIR);
-}
+using riemann::testing::DataDirectory;
 
 fs::path TemporaryDirectory(const std::string& name)
 {

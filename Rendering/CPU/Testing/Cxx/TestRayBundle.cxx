@@ -69,7 +69,7 @@ namespace
 {
 using riemann::Vec3;
 using riemann::testing::ErrorObserver;
-using riemann::testing::KeepXServerConnection;
+using riemann::testing::SetUpOffscreenView;
 
 std::filesystem::path DataDirectory()
 {
@@ -186,12 +186,7 @@ struct View
     : Width(width)
     , Height(height)
   {
-    KeepXServerConnection();
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetPass(this->Pass);
+    SetUpOffscreenView(this->Window, this->Renderer, this->Pass, width, height);
     this->Pass->SetMetric(metric);
     this->Pass->SetScene(scene);
     this->Pass->CaptureHitsOn();

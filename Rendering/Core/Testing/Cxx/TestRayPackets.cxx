@@ -9,6 +9,8 @@
 #include "GeodesicTrace.h"
 #include "MetricDefinition.h"
 
+#include "TestDataDirectory.h"
+
 #include <Eigen/Geometry> // cross
 #include <gtest/gtest.h>
 
@@ -24,11 +26,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-fs::path DataDirectory()
-{
-  const char* dir = std::getenv("RIEMANN_DATA_DIR");
-  return dir && *dir ? fs::path(dir) : fs::path(RIEMANN_TEST_DATA_DIR);
-}
+using riemann::testing::DataDirectory;
 
 /// 11 x 9 unit-speed directions across the camera's view (99 rays: 12 full
 /// packets and a partial one).

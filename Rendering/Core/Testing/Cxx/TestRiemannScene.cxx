@@ -7,6 +7,8 @@
 #include "RiemannSceneIntersection.h"
 #include "RiemannShading.h"
 
+#include "TestDataDirectory.h"
+
 #include <Eigen/Geometry> // cross
 #include <gtest/gtest.h>
 
@@ -27,19 +29,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-/// Data/ of the source tree: $RIEMANN_DATA_DIR (set by ctest), else found
-/// from this file's location (Rendering/Core/Testing/Cxx -> Data).
-fs::path DataDirectory()
-{
-  if (const char* dir = std::getenv("RIEMANN_DATA_DIR"))
-  {
-    if (*dir)
-    {
-      return fs::path(dir);
-    }
-  }
-  return fs::path(RIEMANN_TEST_DATA_DIR);
-}
+using riemann::testing::DataDirectory;
 
 fs::path ScratchDirectory()
 {

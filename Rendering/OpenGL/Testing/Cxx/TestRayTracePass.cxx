@@ -65,6 +65,7 @@ namespace
 using riemann::Vec3;
 using riemann::testing::ErrorObserver;
 using riemann::testing::KeepXServerConnection;
+using riemann::testing::SetUpOffscreenView;
 
 constexpr const char* EuclideanJson = R"({"type": "euclidean"})";
 constexpr const char* TwistJson = R"({"type": "diffeo", "preset": "twist", "rate": 1})";
@@ -92,12 +93,7 @@ struct View
     : Width(width)
     , Height(height)
   {
-    KeepXServerConnection();
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetPass(this->Pass);
+    SetUpOffscreenView(this->Window, this->Renderer, this->Pass, width, height);
     this->Pass->SetMetric(this->Metric);
     this->Pass->SetScene(this->Scene);
   }

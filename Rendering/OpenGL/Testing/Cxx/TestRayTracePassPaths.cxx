@@ -32,8 +32,9 @@
 #include "vtkRenderer.h"
 
 #include "ImageComparison.h"
-#include "RiemannComputeProgram.h"
 #include "RenderingTestUtilities.h"
+#include "RiemannComputeProgram.h"
+#include "TestDataDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -55,17 +56,10 @@ namespace fs = std::filesystem;
 using riemann::testing::Compare;
 using riemann::testing::DifferenceStatistics;
 using riemann::testing::ErrorObserver;
-using riemann::testing::KeepXServerConnection;
+using riemann::testing::SetUpOffscreenView;
 using riemann::testing::WindowPixels;
 
-fs::path DataDirectory()
-{
-  if (const char* dir = std::getenv("RIEMANN_DATA_DIR"))
-  {
-    return dir;
-  }
-  return fs::path(RIEMANN_TEST_DATA_DIR);
-}
+using riemann::testing::DataDirectory;
 
 /// What one render of one path gives: colour, window depth and hits.
 struct Picture
@@ -91,12 +85,7 @@ struct View
     : Width(width)
     , Height(height)
   {
-    KeepXServerConnection();
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetPass(this->Pass);
+    SetUpOffscreenView(this->Window, this->Renderer, this->Pass, width, height);
     this->Pass->SetMetric(this->Metric);
     this->Pass->SetScene(this->Scene);
     this->Pass->CaptureHitsOn();

@@ -39,7 +39,7 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 namespace
 {
 using riemann::testing::ErrorObserver;
-using riemann::testing::KeepXServerConnection;
+using riemann::testing::SetUpOffscreenView;
 
 constexpr int Width = 96;
 constexpr int Height = 72;
@@ -63,12 +63,7 @@ struct View
 
   explicit View(const char* metric)
   {
-    KeepXServerConnection();
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(Width, Height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->SetPass(this->Pass);
+    SetUpOffscreenView(this->Window, this->Renderer, this->Pass, Width, Height);
     this->Pass->SetMetric(this->Metric);
     this->Pass->SetScene(this->Scene);
     EXPECT_TRUE(this->Metric->SetDefinition(metric)) << this->Metric->GetLastError();
