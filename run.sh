@@ -3,8 +3,8 @@
 #
 #   ./run.sh [ARGS...]        build, then run the demo (Examples/demo.py ARGS)
 #   ./run.sh demo [ARGS...]   same
-#   ./run.sh test [ARGS...]   build, then run all tests (extra ARGS go to ctest,
-#                             e.g. ./run.sh test -R '^Python\.' -V)
+#   ./run.sh test [ARGS...]   build, then run all tests but the fuzzers (extra ARGS
+#                             go to ctest, e.g. ./run.sh test -R '^Python\.' -V)
 #   ./run.sh bench [ARGS...]  build, then run build/bin/RiemannBenchmarks
 #                             (ARGS go to google-benchmark, e.g. --benchmark_filter=Gauss)
 #   ./run.sh build            install missing packages, configure, build; nothing else
@@ -14,6 +14,10 @@
 #                             (ctest -L Cxx, then -L Cli; extra ARGS go to both,
 #                             e.g. -V). Any sanitizer report fails it; reports:
 #                             build-asan/sanitizer-logs/ (Testing/Fuzz/README.md)
+#   ./run.sh fuzz [ARGS...]   build, then the libFuzzer targets (Clang, ASan, UBSan)
+#                             in build/fuzz, then fuzz each for 20 s (ctest -L Fuzz;
+#                             extra ARGS go to ctest). Not part of `test`: a tree of
+#                             its own, with its own time (Testing/Fuzz/README.md)
 #
 # Each run installs missing Debian packages (only when something is missing),
 # configures build/ once (Ninja) and builds incrementally, so a re-run with
@@ -33,7 +37,7 @@ PYTHONPATH_BUILD="$BUILD_DIR/lib/python3/dist-packages"
 # refuses connections meanwhile, failing a test that opens a second window.
 XVFB=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 # ccache (when installed; step 1 installs it) for the three builds: GCC, the
-# sanitizer build and the fuzzer build that Fuzz.Build runs. Paths under the
+# sanitizer build and the fuzzer build (./run.sh fuzz). Paths under the
 # checkout are hashed relative to it and the build folder is not hashed, so
 # a fresh clone elsewhere (what CI builds) reuses the library objects of an
 # earlier build of the same sources. The test executables are compiled again:
@@ -56,7 +60,7 @@ log() { printf '[run.sh] %s\n' "$*" >&2; }
 die() { printf '[run.sh] error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,23s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
+  sed -n '2,27s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
 }
 
 # --- 1. Debian packages: install only what is missing ------------------------
@@ -120,8 +124,16 @@ run_demo() {
 }
 
 run_tests() {
-  log "test: ctest --test-dir build --output-on-failure -j2 $*"
-  "${XVFB[@]}" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2 "$@"
+  # The fuzzers are a mode of their own (run_fuzz): label Fuzz is left out.
+  log "test: ctest --test-dir build --output-on-failure -j2 -LE Fuzz $*"
+  "${XVFB[@]}" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2 -LE Fuzz "$@"
+}
+
+run_fuzz() {
+  log "fuzz: cmake --build build --target RiemannFuzzers (build/fuzz)"
+  cmake --build "$BUILD_DIR" --target RiemannFuzzers
+  log "fuzz: ctest --test-dir build --output-on-failure -L Fuzz $*"
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -L Fuzz "$@"
 }
 
 # --- Sanitizer build: Clang, AddressSanitizer + UBSan (cmake/RiemannSanitize.cmake)
@@ -208,7 +220,7 @@ run_bench() {
 mode="demo"
 if (($# > 0)); then
   case "$1" in
-    demo | test | bench | build | sanitize) mode="$1"; shift ;;
+    demo | test | bench | build | sanitize | fuzz) mode="$1"; shift ;;
     -h | --help | help) usage; exit 0 ;;
     # Anything else (e.g. --width 640) is passed on to the demo.
   esac
@@ -224,6 +236,7 @@ build
 case "$mode" in
   demo) run_demo "$@" ;;
   test) run_tests "$@" ;;
+  fuzz) run_fuzz "$@" ;;
   bench) run_bench "$@" ;;
   build) log "build: done" ;;
 esac

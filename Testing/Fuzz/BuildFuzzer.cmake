@@ -2,7 +2,7 @@
 #       -DSCENE_SOURCE_DIR=<dir> -DSCENE_HEADER_DIR=<dir>
 #       -DCLANGXX=<clang++> -DGENERATOR=<generator> [-DLAUNCHER=ccache] -P BuildFuzzer.cmake
 #
-# Run by the ctest test Fuzz.Build: configure build/fuzz (Clang,
+# Run by the target RiemannFuzzers (./run.sh fuzz): configure build/fuzz (Clang,
 # Testing/Fuzz/Standalone), then build it; Ninja rebuilds only what changed.
 # The folders are passed on each run (a re-configure of a configured tree
 # takes a second or two), so a moved scene parser is picked up.

@@ -14,6 +14,11 @@ foreach (var FUZZER CORPUS WORK DICTIONARY SECONDS)
   endif ()
 endforeach ()
 
+if (NOT EXISTS "${FUZZER}")
+  message(FATAL_ERROR "no fuzzer ${FUZZER}: the fuzzers are built apart from the test suite; "
+    "run ./run.sh fuzz (or cmake --build build --target RiemannFuzzers, then ctest -L Fuzz)")
+endif ()
+
 if (NOT DEFINED MAX_LEN)
   set(MAX_LEN 256)
 endif ()
