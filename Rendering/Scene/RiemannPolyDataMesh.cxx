@@ -1,4 +1,5 @@
 #include "RiemannPolyDataMesh.h"
+#include "RiemannPlyCheck.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -55,6 +56,57 @@ void Trim(std::string& text)
   {
     text.pop_back();
   }
+}
+
+/**
+ * Why the cells of `data` cannot be used ("" when they can): a cell array
+ * whose offsets do not rise within its connectivity, or a cell that refers
+ * to a point the data does not have (VTK's readers keep what the file says:
+ * an OBJ face "f 1 2 999999999", a VTP connectivity "-7").
+ */
+std::string CheckCells(vtkPolyData* data)
+{
+  const vtkIdType points = data->GetNumberOfPoints();
+  struct Kind
+  {
+    const char* Name;
+    vtkCellArray* Cells;
+  } kinds[] = { { "vertex", data->GetVerts() }, { "line", data->GetLines() },
+    { "polygon", data->GetPolys() }, { "strip", data->GetStrips() } };
+  for (const Kind& kind : kinds)
+  {
+    if (!kind.Cells)
+    {
+      continue;
+    }
+    vtkDataArray* offsets = kind.Cells->GetOffsetsArray();
+    vtkDataArray* connectivity = kind.Cells->GetConnectivityArray();
+    const vtkIdType size = connectivity ? connectivity->GetNumberOfTuples() : 0;
+    const vtkIdType count = offsets ? offsets->GetNumberOfTuples() : 0;
+    double previous = 0.0;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const double offset = offsets->GetComponent(i, 0);
+      if (offset < previous || offset > static_cast<double>(size))
+      {
+        return std::string("the ") + kind.Name + " cells' offsets are broken (offset " +
+          std::to_string(static_cast<long long>(offset)) + " at cell " + std::to_string(i) +
+          ", connectivity of " + std::to_string(size) + " ids)";
+      }
+      previous = offset;
+    }
+    for (vtkIdType i = 0; i < size; ++i)
+    {
+      const double id = connectivity->GetComponent(i, 0);
+      if (!(id >= 0.0) || id >= static_cast<double>(points))
+      {
+        return std::string("a ") + kind.Name + " cell refers to point " +
+          std::to_string(static_cast<long long>(id)) + " (counting from 0), but the mesh has " +
+          std::to_string(points) + " points";
+      }
+    }
+  }
+  return std::string();
 }
 
 vtkSmartPointer<vtkColorTransferFunction> ColorMap(const std::string& name, double lo, double hi)
@@ -261,6 +313,12 @@ std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColo
     throw SceneDefinitionError("the mesh has no triangles (" +
       std::to_string(data->GetNumberOfPoints()) + " points, no polygons or strips)");
   }
+  // VTK's filters trust the cells: an id past the points reads out of bounds.
+  const std::string cells = CheckCells(data);
+  if (!cells.empty())
+  {
+    throw SceneDefinitionError(cells);
+  }
   const vtkSmartPointer<vtkPolyData> surface = TriangulatedSurface(data);
   auto mesh = std::make_shared<TriangleMesh>();
   CopyGeometry(surface, *mesh);
@@ -302,6 +360,12 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::string& path)
   }
   else if (extension == ".ply")
   {
+    // VTK's PLY reader trusts the header: checked against it first.
+    const std::string problem = CheckPlyFile(path);
+    if (!problem.empty())
+    {
+      throw SceneDefinitionError(path + ": cannot read the mesh: " + problem);
+    }
     if (!vtkPLYReader::CanReadFile(path.c_str()))
     {
       throw SceneDefinitionError(path + ": not a PLY file VTK can read");

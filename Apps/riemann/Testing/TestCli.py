@@ -293,6 +293,39 @@ class RenderTests(unittest.TestCase):
         self.assertEqual(status, 0, err)
 
 
+class HostileMeshTests(unittest.TestCase):
+    """Mesh files that crashed both backends (Rendering/Scene/Testing/Data/hostile-meshes)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_each_is_a_clear_error_with_no_output(self):
+        folder = os.path.join(os.path.dirname(__file__), "../../../Rendering/Scene/Testing/Data/hostile-meshes")
+        reasons = {"badindex.obj": "refers to point 999999998", "badconn.vtp": "refers to point 999999999",
+                   "badindex.ply": "refers to vertex 99999999",
+                   "trunc05_ok.ply": "the file ends in element face",
+                   "trunc001_ok_ascii.ply": "the file ends in element vertex"}
+        for name, reason in reasons.items():
+            scene = os.path.join(self.dir, name + ".json")
+            with open(scene, "w") as f:
+                f.write('{"metric": {"type": "euclidean"}, "camera": {"position": [0, 0.4, 4.2], '
+                        '"look_at": [0, 0, 0]}, "objects": [{"type": "mesh", "file": "%s"}]}'
+                        % os.path.abspath(os.path.join(folder, name)))
+            for backend in ("cpu", "gpu"):
+                with self.subTest(name=name, backend=backend):
+                    out = os.path.join(self.dir, "out.png")
+                    status, _, err = run("render", "--backend", backend, "-s", scene,
+                                         "--width", "32", "--height", "24", "-o", out)
+                    self.assertEqual(status, 1, err)
+                    self.assertIn("riemann: error:", err)
+                    self.assertIn(reason, err)
+                    self.assertFalse(os.path.exists(out), "no output is written")
+
+
 class CpuRenderTests(unittest.TestCase):
     """riemann render --backend cpu (the Embree tracer)."""
 

@@ -1,0 +1,202 @@
+// Mesh files that crashed the renderers before the readers validated them
+// (Testing/Data/hostile-meshes/README.md): each is now refused with a
+// SceneDefinitionError that says what is wrong, before VTK's filters or
+// Embree see it. Good PLY files (ASCII and binary, both byte orders,
+// written here byte by byte) still load, and a vtkPolyData with a bad cell
+// is refused too (MeshFromPolyData, the actors' path).
+#include "RiemannPlyCheck.h"
+#include "RiemannPolyDataMesh.h"
+#include "RiemannScene.h"
+
+#include "vtkCellArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+fs::path HostileMeshes()
+{
+  return fs::path(__FILE__).parent_path().parent_path() / "Data" / "hostile-meshes";
+}
+
+fs::path Scratch(const std::string& name)
+{
+  const fs::path dir = fs::temp_directory_path() / "riemann-hostile-meshes";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+/// The message of the SceneDefinitionError that reading `file` as a scene mesh throws ("" if none).
+std::string LoadError(const fs::path& file)
+{
+  riemann::Scene scene;
+  riemann::SceneObject object;
+  object.Type = riemann::ObjectType::Mesh;
+  object.MeshFile = file.string();
+  scene.Objects.push_back(object);
+  try
+  {
+    riemann::LoadSceneMeshes(scene);
+  }
+  catch (const riemann::SceneDefinitionError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+/// One triangle: a PLY header for `format` and its body.
+std::string TrianglePly(const std::string& format, const std::string& body)
+{
+  return "ply\nformat " + format +
+    " 1.0\ncomment written by TestHostileMeshes\nelement vertex 3\nproperty float x\n"
+    "property float y\nproperty float z\nelement face 1\nproperty list uchar int "
+    "vertex_indices\nend_header\n" +
+    body;
+}
+
+/// The binary body of the triangle (0,0,0), (1,0,0), (0,1,0) with face indices `indices`.
+std::string BinaryTriangle(bool bigEndian, const std::vector<std::int32_t>& indices)
+{
+  std::string body;
+  const auto put = [&](const void* value, std::size_t size)
+  {
+    std::string bytes(static_cast<const char*>(value), size);
+    if (bigEndian)
+    {
+      bytes.assign(bytes.rbegin(), bytes.rend()); // this test runs on little-endian machines
+    }
+    body += bytes;
+  };
+  const float xyz[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  for (float v : xyz)
+  {
+    put(&v, sizeof(v));
+  }
+  const unsigned char count = static_cast<unsigned char>(indices.size());
+  put(&count, 1);
+  for (std::int32_t index : indices)
+  {
+    put(&index, sizeof(index));
+  }
+  return body;
+}
+
+void Write(const fs::path& path, const std::string& bytes)
+{
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+} // namespace
+
+TEST(HostileMeshes, EachIsRefusedWithItsReason)
+{
+  const struct
+  {
+    const char* File;
+    const char* Reason;
+  } cases[] = {
+    { "badindex.obj", "refers to point 999999998 (counting from 0), but the mesh has 3 points" },
+    { "badconn.vtp", "refers to point 999999999 (counting from 0), but the mesh has 3 points" },
+    { "badindex.ply", "face 1 refers to vertex 99999999, but there are 3 vertices" },
+    { "trunc05_ok.ply", "the file ends in element face, row 4126 of 15360 (cut short?)" },
+    { "trunc001_ok_ascii.ply", "the file ends in element vertex, row 134 of 7680 (cut short?)" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = HostileMeshes() / c.File;
+    ASSERT_TRUE(fs::exists(file)) << file;
+    const std::string error = LoadError(file);
+    EXPECT_NE(error.find(c.Reason), std::string::npos) << c.File << ": " << error;
+    EXPECT_NE(error.find(file.string()), std::string::npos) << "names the file: " << error;
+  }
+}
+
+TEST(HostileMeshes, GoodPlyFilesStillLoad)
+{
+  const std::string ascii = TrianglePly("ascii", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const std::string little = TrianglePly("binary_little_endian", BinaryTriangle(false, { 0, 1, 2 }));
+  const std::string big = TrianglePly("binary_big_endian", BinaryTriangle(true, { 0, 1, 2 }));
+  for (const auto& [name, bytes] : { std::pair<std::string, std::string>{ "ascii.ply", ascii },
+         { "little.ply", little }, { "big.ply", big } })
+  {
+    const fs::path file = Scratch(name);
+    Write(file, bytes);
+    EXPECT_EQ(riemann::CheckPlyFile(file.string()), "") << name;
+    EXPECT_EQ(LoadError(file), "") << name;
+  }
+}
+
+TEST(HostileMeshes, PlyProblemsAreNamed)
+{
+  const struct
+  {
+    const char* Name;
+    std::string Bytes;
+    const char* Reason;
+  } cases[] = {
+    { "negative.ply", TrianglePly("ascii", "0 0 0\n1 0 0\n0 1 0\n3 0 -5 2\n"),
+      "face 1 refers to vertex -5, but there are 3 vertices" },
+    { "word.ply", TrianglePly("ascii", "0 0 zero\n1 0 0\n0 1 0\n3 0 1 2\n"),
+      "element vertex, row 1 of 3: \"zero\" is not a number" },
+    { "big-index.ply", TrianglePly("binary_big_endian", BinaryTriangle(true, { 0, 1, 3 })),
+      "face 1 refers to vertex 3, but there are 3 vertices" },
+    { "short.ply", // the last index's 4 bytes cut off
+      TrianglePly("binary_little_endian", BinaryTriangle(false, { 0, 1, 2 }).substr(0, 9 * 4 + 1 + 8)),
+      "the file ends in element face, row 1 of 1 (cut short?)" },
+    { "format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n",
+      "header line 2: unknown format \"binary_middle_endian\"" },
+    { "noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", "no end_header line" },
+    { "type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n0\n",
+      "header line 4: unknown property type \"quad\"" },
+    { "count.ply", "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n",
+      "header line 3: an element needs a name and a count of rows" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = Scratch(c.Name);
+    Write(file, c.Bytes);
+    const std::string problem = riemann::CheckPlyFile(file.string());
+    EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
+    EXPECT_NE(LoadError(file).find(c.Reason), std::string::npos) << c.Name;
+  }
+}
+
+TEST(HostileMeshes, PolyDataWithABadCellIsRefused)
+{
+  // The path of a renderer's actors (MeshFromPolyData), with no file.
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  vtkNew<vtkCellArray> triangles;
+  const vtkIdType good[3] = { 0, 1, 2 };
+  const vtkIdType bad[3] = { 0, 1, 7 };
+  triangles->InsertNextCell(3, good);
+  triangles->InsertNextCell(3, bad);
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->SetPolys(triangles);
+  try
+  {
+    riemann::MeshFromPolyData(data);
+    FAIL() << "a cell past the points was accepted";
+  }
+  catch (const riemann::SceneDefinitionError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("refers to point 7 (counting from 0), but the mesh has 3"),
+      std::string::npos)
+      << e.what();
+  }
+}
