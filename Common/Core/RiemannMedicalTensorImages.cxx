@@ -1,4 +1,5 @@
 #include "RiemannMedicalTensorImages.h"
+#include "RiemannTensorFileChecks.h"
 
 #include "vtkCharArray.h"
 #include "vtkDataArray.h"
@@ -378,6 +379,12 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
   {
     throw std::runtime_error("not a NIfTI file");
   }
+  // VTK's reader trusts the header: checked first.
+  const std::string problem = CheckNiftiFile(path);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
   // Six volumes (FSL) become six components, as the vector dimension does.
   reader->TimeAsVectorOn();
   reader->SetFileName(path.c_str());
@@ -441,6 +448,12 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
 
 vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
 {
+  // VTK's reader trusts the header: checked first.
+  const std::string problem = CheckNrrdFile(path);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
   vtkNew<SpaceBlindNrrdReader> reader;
   if (!reader->CanReadFile(path.c_str()))
   {

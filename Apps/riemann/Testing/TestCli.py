@@ -293,8 +293,9 @@ class RenderTests(unittest.TestCase):
         self.assertEqual(status, 0, err)
 
 
-class HostileMeshTests(unittest.TestCase):
-    """Mesh files that crashed both backends (Rendering/Scene/Testing/Data/hostile-meshes)."""
+class HostileInputTests(unittest.TestCase):
+    """Files that crashed or hung riemann: meshes (Rendering/Scene/Testing/Data/hostile-meshes)
+    and tensor volumes (Common/Core/Testing/Data/hostile-tensors)."""
 
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -324,6 +325,22 @@ class HostileMeshTests(unittest.TestCase):
                     self.assertIn("riemann: error:", err)
                     self.assertIn(reason, err)
                     self.assertFalse(os.path.exists(out), "no output is written")
+
+    def test_tensor_files_are_clear_errors(self):
+        folder = os.path.join(os.path.dirname(__file__), "../../../Common/Core/Testing/Data/hostile-tensors")
+        reasons = {"bad_datatype.nii": "unknown NIfTI datatype code 12345",
+                   "dim99.nrrd": '"dimension: 99"',
+                   "gzbomb.nii.gz": "tensor volumes are read up to 2 GiB",
+                   "detached_list.nhdr": '"data file: LIST"'}
+        for name, reason in reasons.items():
+            with self.subTest(name=name):
+                metric = os.path.join(self.dir, name + ".json")
+                with open(metric, "w") as f:
+                    f.write('{"type": "sampled", "file": "%s"}' % os.path.abspath(os.path.join(folder, name)))
+                status, _, err = run("info", "-m", metric, "--point", "0.1,0.2,0.3")
+                self.assertEqual(status, 1, err)
+                self.assertIn("riemann: error:", err)
+                self.assertIn(reason, err)
 
 
 class CpuRenderTests(unittest.TestCase):

@@ -115,10 +115,13 @@ vtkSmartPointer<vtkImageData> TensorImage(
   return image;
 }
 
+/// A folder of this test's own: ctest runs the tests two at a time, and two
+/// tests writing bad.json in one folder read each other's.
 fs::path Folder()
 {
   const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
-  fs::path folder = fs::path(output ? output : fs::temp_directory_path().string()) / "sampled";
+  fs::path folder = fs::path(output ? output : fs::temp_directory_path().string()) / "sampled" /
+    ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(folder);
   return folder;
 }

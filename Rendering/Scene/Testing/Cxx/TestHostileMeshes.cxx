@@ -7,6 +7,7 @@
 #include "RiemannPlyCheck.h"
 #include "RiemannPolyDataMesh.h"
 #include "RiemannScene.h"
+#include "TestDataDirectory.h"
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
@@ -26,9 +27,12 @@ namespace
 {
 namespace fs = std::filesystem;
 
+/// The regression inputs, found from the Data folder (not from __FILE__: ccache shares
+/// objects between checkouts, and Ninja gives relative paths).
 fs::path HostileMeshes()
 {
-  return fs::path(__FILE__).parent_path().parent_path() / "Data" / "hostile-meshes";
+  return riemann::testing::DataDirectory().parent_path() / "Rendering" / "Scene" / "Testing" /
+    "Data" / "hostile-meshes";
 }
 
 fs::path Scratch(const std::string& name)

@@ -1,0 +1,337 @@
+#include "RiemannTensorFileChecks.h"
+
+#include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
+
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace riemann
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+std::string Lower(std::string text)
+{
+  for (char& c : text)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text;
+}
+
+bool EndsWith(const std::string& text, const std::string& end)
+{
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+std::string GiB(std::uint64_t bytes)
+{
+  std::ostringstream text;
+  text.precision(3);
+  text << static_cast<double>(bytes) / double(std::uint64_t(1) << 30) << " GiB";
+  return text.str();
+}
+
+/// The first `count` bytes of the file, inflated when it is gzip (fewer when it is shorter).
+std::string FirstBytes(const std::string& path, std::size_t count)
+{
+  std::string bytes(count, '\0');
+  gzFile file = gzopen(path.c_str(), "rb"); // reads plain files as they are
+  if (!file)
+  {
+    return std::string();
+  }
+  const int read = gzread(file, &bytes[0], static_cast<unsigned int>(count));
+  gzclose(file);
+  bytes.resize(read > 0 ? static_cast<std::size_t>(read) : 0);
+  return bytes;
+}
+
+/// Bytes per value of a NIfTI datatype code; 0 for a code NIfTI-1 does not define.
+int NiftiBytesPerValue(int datatype)
+{
+  static const std::map<int, int> sizes = { { 2, 1 }, { 4, 2 }, { 8, 4 }, { 16, 4 }, { 32, 8 },
+    { 64, 8 }, { 128, 3 }, { 256, 1 }, { 512, 2 }, { 768, 4 }, { 1024, 8 }, { 1280, 8 },
+    { 1536, 16 }, { 1792, 16 }, { 2048, 32 }, { 2304, 4 } };
+  const auto found = sizes.find(datatype);
+  return found == sizes.end() ? 0 : found->second;
+}
+
+/// Bytes per value of a NRRD type name; 0 for a name NRRD does not define.
+int NrrdBytesPerValue(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = { { "signed char", 1 }, { "int8", 1 },
+    { "int8_t", 1 }, { "uchar", 1 }, { "unsigned char", 1 }, { "uint8", 1 }, { "uint8_t", 1 },
+    { "short", 2 }, { "short int", 2 }, { "signed short", 2 }, { "signed short int", 2 },
+    { "int16", 2 }, { "int16_t", 2 }, { "ushort", 2 }, { "unsigned short", 2 },
+    { "unsigned short int", 2 }, { "uint16", 2 }, { "uint16_t", 2 }, { "int", 4 },
+    { "signed int", 4 }, { "int32", 4 }, { "int32_t", 4 }, { "uint", 4 }, { "unsigned int", 4 },
+    { "uint32", 4 }, { "uint32_t", 4 }, { "longlong", 8 }, { "long long", 8 },
+    { "long long int", 8 }, { "signed long long", 8 }, { "signed long long int", 8 },
+    { "int64", 8 }, { "int64_t", 8 }, { "ulonglong", 8 }, { "unsigned long long", 8 },
+    { "unsigned long long int", 8 }, { "uint64", 8 }, { "uint64_t", 8 }, { "float", 4 },
+    { "double", 8 } };
+  const auto found = sizes.find(type);
+  return found == sizes.end() ? 0 : found->second;
+}
+
+/// A regular file that exists (not a device, a FIFO or a folder).
+std::string RegularFileProblem(const fs::path& path, const std::string& what)
+{
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error || !fs::exists(status))
+  {
+    return what + " " + path.string() + " does not exist";
+  }
+  if (!fs::is_regular_file(status))
+  {
+    return what + " " + path.string() + " is not a regular file (a device, FIFO or folder)";
+  }
+  return std::string();
+}
+} // namespace
+
+std::string CheckNiftiFile(const std::string& path)
+{
+  // Step 1: the 348-byte NIfTI-1 header (inflated for .nii.gz), either byte order.
+  const std::string header = FirstBytes(path, 348);
+  if (header.size() < 348)
+  {
+    return "the file is shorter than a NIfTI header (348 bytes)";
+  }
+  const auto* bytes = reinterpret_cast<const unsigned char*>(header.data());
+  std::int32_t size = 0;
+  std::memcpy(&size, bytes, 4);
+  bool swap = false;
+  if (size != 348)
+  {
+    std::uint32_t swapped = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      swapped = (swapped << 8) | bytes[i];
+    }
+    if (swapped == 540 || size == 540)
+    {
+      return std::string(); // NIfTI-2: VTK checks it
+    }
+    if (swapped != 348)
+    {
+      return "not a NIfTI-1 header (sizeof_hdr is neither 348 nor 540)";
+    }
+    swap = true;
+  }
+  const auto int16 = [&](int offset)
+  {
+    const unsigned int a = bytes[offset], b = bytes[offset + 1];
+    return static_cast<std::int16_t>(swap ? (a << 8) | b : (b << 8) | a);
+  };
+  const auto float32 = [&](int offset)
+  {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      bits |= std::uint32_t(bytes[offset + (swap ? 3 - i : i)]) << (8 * i);
+    }
+    float value;
+    std::memcpy(&value, &bits, 4);
+    return value;
+  };
+
+  // Step 2: the datatype, the dimensions and the bytes they declare.
+  const int datatype = int16(70);
+  const int bytesPerValue = NiftiBytesPerValue(datatype);
+  if (bytesPerValue == 0)
+  {
+    return "unknown NIfTI datatype code " + std::to_string(datatype);
+  }
+  const int rank = int16(40);
+  if (rank < 1 || rank > 7)
+  {
+    return "dim[0] is " + std::to_string(rank) + "; NIfTI images have 1 to 7 dimensions";
+  }
+  std::uint64_t voxels = 1;
+  std::ostringstream shape;
+  for (int i = 1; i <= rank; ++i)
+  {
+    const int length = int16(40 + 2 * i);
+    if (length < 1)
+    {
+      return "dim[" + std::to_string(i) + "] is " + std::to_string(length) +
+        "; every dimension needs at least one voxel";
+    }
+    voxels *= static_cast<std::uint64_t>(length);
+    shape << (i > 1 ? " x " : "") << length;
+  }
+  const std::uint64_t data = voxels * static_cast<std::uint64_t>(bytesPerValue);
+  if (data > MaximumTensorFileBytes)
+  {
+    return "the header declares " + shape.str() + " values of " + std::to_string(bytesPerValue) +
+      " bytes (" + GiB(data) + "); tensor volumes are read up to " +
+      GiB(MaximumTensorFileBytes);
+  }
+
+  // Step 3: an uncompressed file holds what it declares (a .hdr's data is in its .img).
+  const std::string lower = Lower(path);
+  if (EndsWith(lower, ".gz"))
+  {
+    return std::string(); // reading stops at the declared (bounded) size
+  }
+  fs::path dataFile = path;
+  std::uint64_t offset = 0;
+  if (EndsWith(lower, ".hdr"))
+  {
+    dataFile.replace_extension(".img");
+    const std::string problem = RegularFileProblem(dataFile, "the image file");
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  else
+  {
+    const float voxOffset = float32(108);
+    offset = voxOffset >= 348.0f ? static_cast<std::uint64_t>(voxOffset) : 352;
+  }
+  std::error_code error;
+  const std::uint64_t available = fs::file_size(dataFile, error);
+  if (!error && available < offset + data)
+  {
+    return "the header declares " + std::to_string(data) + " bytes of voxel data after byte " +
+      std::to_string(offset) + ", but the file has " + std::to_string(available) +
+      " bytes (cut short?)";
+  }
+  return std::string();
+}
+
+std::string CheckNrrdFile(const std::string& path)
+{
+  // Step 1: the header's fields, up to the blank line (or the file's end).
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("NRRD000", 0) != 0)
+  {
+    return "not a NRRD file (it does not start with NRRD000X)";
+  }
+  std::map<std::string, std::string> fields;
+  std::uint64_t headerBytes = line.size() + 1;
+  while (std::getline(in, line))
+  {
+    headerBytes += line.size() + 1;
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      break;
+    }
+    const std::size_t colon = line.find(": ");
+    if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
+    {
+      fields[line.substr(0, colon)] = line.substr(colon + 2);
+    }
+    if (headerBytes > (1u << 20))
+    {
+      return "the header runs past 1 MiB";
+    }
+  }
+
+  // Step 2: dimension, sizes, type and encoding agree.
+  const std::string dimensionText = fields["dimension"];
+  const int dimension = std::atoi(dimensionText.c_str());
+  if (dimension < 1 || dimension > 16)
+  {
+    return "\"dimension: " + dimensionText + "\"; NRRD files have 1 to 16";
+  }
+  std::istringstream sizeWords(fields["sizes"]);
+  std::vector<std::uint64_t> sizes;
+  std::string word;
+  while (sizeWords >> word)
+  {
+    char* stop = nullptr;
+    const unsigned long long size = std::strtoull(word.c_str(), &stop, 10);
+    if (*stop != '\0' || word[0] == '-' || size == 0)
+    {
+      return "\"sizes: " + fields["sizes"] + "\": \"" + word + "\" is not a positive count";
+    }
+    sizes.push_back(size);
+  }
+  if (static_cast<int>(sizes.size()) != dimension)
+  {
+    return "\"dimension: " + std::to_string(dimension) + "\" but " +
+      std::to_string(sizes.size()) + " sizes (\"sizes: " + fields["sizes"] + "\")";
+  }
+  const int bytesPerValue = NrrdBytesPerValue(fields["type"]);
+  if (bytesPerValue == 0)
+  {
+    return "unknown type \"" + fields["type"] + "\"";
+  }
+  std::uint64_t data = static_cast<std::uint64_t>(bytesPerValue);
+  for (std::uint64_t size : sizes)
+  {
+    if (data > MaximumTensorFileBytes / size + 1)
+    {
+      data = MaximumTensorFileBytes + 1;
+      break;
+    }
+    data *= size;
+  }
+  if (data > MaximumTensorFileBytes)
+  {
+    return "the header declares more than " + GiB(MaximumTensorFileBytes) +
+      " of values (\"sizes: " + fields["sizes"] + "\"); tensor volumes are read up to that";
+  }
+  const std::string encoding = fields["encoding"];
+  const bool gzip = encoding == "gzip" || encoding == "gz";
+  if (encoding != "raw" && !gzip)
+  {
+    return "\"encoding: " + encoding + "\"; tensor files are read raw or gzip";
+  }
+
+  // Step 3: where the data is, and (raw) that it is all there.
+  fs::path dataFile = path;
+  std::uint64_t offset = headerBytes;
+  const auto detached = fields.find("data file") != fields.end() ? fields.find("data file")
+                                                                 : fields.find("datafile");
+  if (detached != fields.end())
+  {
+    const std::string name = detached->second;
+    if (name.rfind("LIST", 0) == 0 || name.find('%') != std::string::npos ||
+      name.find(' ') != std::string::npos)
+    {
+      return "\"data file: " + name +
+        "\": data in several files is not read; give one data file";
+    }
+    dataFile = fs::path(name).is_absolute() ? fs::path(name) : fs::path(path).parent_path() / name;
+    offset = 0;
+    const std::string problem = RegularFileProblem(dataFile, "the data file");
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  if (!gzip)
+  {
+    std::error_code error;
+    const std::uint64_t available = fs::file_size(dataFile, error);
+    if (!error && available < offset + data)
+    {
+      return "the header declares " + std::to_string(data) + " bytes of values, but " +
+        (detached != fields.end() ? "the data file has " + std::to_string(available)
+                                  : "the file has " + std::to_string(available - offset) +
+              " after its header") +
+        " (cut short?)";
+    }
+  }
+  return std::string();
+}
+} // namespace riemann

@@ -1,0 +1,36 @@
+/**
+ * @file RiemannTensorFileChecks.h
+ * @brief Private to Common/Core: NIfTI and NRRD tensor files checked
+ * against their own headers before VTK's readers see them.
+ *
+ * VTK 9.1's vtkNIFTIImageReader and vtkNrrdReader trust the header: an
+ * unknown NIfTI datatype, a NRRD "dimension: 99" with four sizes, or a
+ * detached header whose "data file: LIST" names other files crash them
+ * (SIGSEGV), and a small gzip file whose header declares gigabytes keeps
+ * them inflating. These checks read only the header (for .nii.gz, its first
+ * bytes through zlib) and the file sizes, and say what is wrong.
+ */
+#ifndef RiemannTensorFileChecks_h
+#define RiemannTensorFileChecks_h
+
+#include "RiemannCommonCoreModule.h" // For export macro (tested on their own)
+
+#include <cstdint>
+#include <string>
+
+namespace riemann
+{
+/// The most voxel data a tensor file may declare: 2 GiB (a 256^3 tensor
+/// volume of floats is 0.4 GiB).
+constexpr std::uint64_t MaximumTensorFileBytes = std::uint64_t(2) << 30;
+
+/// "" when the NIfTI-1 file (.nii, .nii.gz, .hdr with its .img) at `path` can be given to
+/// vtkNIFTIImageReader, else why not. NIfTI-2 headers pass to VTK's own checks.
+RIEMANNCOMMONCORE_EXPORT std::string CheckNiftiFile(const std::string& path);
+
+/// "" when the NRRD file (.nrrd, or a detached .nhdr) at `path` can be given to vtkNrrdReader,
+/// else why not.
+RIEMANNCOMMONCORE_EXPORT std::string CheckNrrdFile(const std::string& path);
+} // namespace riemann
+
+#endif

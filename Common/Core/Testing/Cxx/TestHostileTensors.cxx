@@ -1,0 +1,154 @@
+// Tensor files that crashed or hung the sampled metric's readers
+// (Testing/Data/hostile-tensors/README.md): each is now refused by
+// vtkRiemannMetric with an error that says what is wrong, before VTK's
+// readers see it; and the checks themselves on files written here (a NIfTI
+// cut short, a NRRD whose sizes disagree with its dimension, a raw NRRD
+// shorter than declared, a detached header naming a device).
+#include "vtkNew.h"
+#include "vtkRiemannMetric.h"
+
+#include "RiemannTensorFileChecks.h"
+#include "TestDataDirectory.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+fs::path HostileTensors()
+{
+  return riemann::testing::DataDirectory().parent_path() / "Common" / "Core" / "Testing" /
+    "Data" / "hostile-tensors";
+}
+
+fs::path Scratch(const std::string& name)
+{
+  const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
+  const fs::path dir =
+    fs::path(output ? output : fs::temp_directory_path().string()) / "hostile-tensors";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+/// vtkRiemannMetric's error for {"type": "sampled", "file": FILE} ("" when it loads).
+std::string MetricError(const fs::path& file)
+{
+  const fs::path json = Scratch(file.filename().string() + ".json");
+  std::ofstream(json) << R"({"type": "sampled", "file": ")" << file.string() << R"("})";
+  vtkNew<vtkRiemannMetric> metric;
+  return metric->SetDefinitionFile(json.c_str()) ? std::string() : metric->GetLastError();
+}
+
+void Write(const fs::path& path, const std::string& bytes)
+{
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+/// A little-endian NIfTI-1 header (348 bytes, then 4 of extension flags) of a
+/// 2 x 2 x 2 x 6 float volume, vox_offset 352, and `dataBytes` bytes of data.
+std::string Nifti(int datatype, std::size_t dataBytes)
+{
+  std::string bytes(352 + dataBytes, '\0');
+  const auto put16 = [&](int offset, std::int16_t value) { std::memcpy(&bytes[offset], &value, 2); };
+  const std::int32_t size = 348;
+  std::memcpy(&bytes[0], &size, 4);
+  const std::int16_t dim[8] = { 5, 2, 2, 2, 1, 6, 1, 1 };
+  for (int i = 0; i < 8; ++i)
+  {
+    put16(40 + 2 * i, dim[i]);
+  }
+  put16(70, static_cast<std::int16_t>(datatype));
+  put16(72, 32);
+  const float offset = 352.0f;
+  std::memcpy(&bytes[108], &offset, 4);
+  std::memcpy(&bytes[344], "n+1", 4);
+  return bytes;
+}
+} // namespace
+
+TEST(HostileTensors, EachIsRefusedWithItsReason)
+{
+  const struct
+  {
+    const char* File;
+    const char* Reason;
+  } cases[] = {
+    { "bad_datatype.nii", "unknown NIfTI datatype code 12345" },
+    { "dim99.nrrd", "\"dimension: 99\"; NRRD files have 1 to 16" },
+    { "gzbomb.nii.gz",
+      "the header declares 512 x 512 x 512 x 6 values of 4 bytes (3 GiB); tensor volumes are "
+      "read up to 2 GiB" },
+    { "detached_list.nhdr", "\"data file: LIST\": data in several files is not read" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = HostileTensors() / c.File;
+    ASSERT_TRUE(fs::exists(file)) << file;
+    const std::string error = MetricError(file);
+    EXPECT_NE(error.find(c.Reason), std::string::npos) << c.File << ": " << error;
+  }
+}
+
+TEST(HostileTensors, NiftiHeadersAreChecked)
+{
+  const fs::path good = Scratch("good.nii");
+  Write(good, Nifti(16, 2 * 2 * 2 * 6 * 4));
+  EXPECT_EQ(riemann::CheckNiftiFile(good.string()), "");
+  const fs::path cut = Scratch("cut.nii");
+  Write(cut, Nifti(16, 100));
+  EXPECT_NE(riemann::CheckNiftiFile(cut.string())
+              .find("declares 192 bytes of voxel data after byte 352, but the file has 452 bytes"),
+    std::string::npos)
+    << riemann::CheckNiftiFile(cut.string());
+  const fs::path tiny = Scratch("tiny.nii");
+  Write(tiny, "not a header");
+  EXPECT_NE(riemann::CheckNiftiFile(tiny.string()).find("shorter than a NIfTI header"),
+    std::string::npos);
+}
+
+TEST(HostileTensors, NrrdHeadersAreChecked)
+{
+  const std::string header = "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 2 2\n"
+                             "encoding: raw\nendian: little\n";
+  const fs::path good = Scratch("good.nrrd");
+  Write(good, header + "\n" + std::string(6 * 8 * 4, '\0'));
+  EXPECT_EQ(riemann::CheckNrrdFile(good.string()), "");
+  const struct
+  {
+    const char* Name;
+    std::string Bytes;
+    const char* Reason;
+  } cases[] = {
+    { "short.nrrd", header + "\n" + std::string(10, '\0'),
+      "declares 192 bytes of values, but the file has 10 after its header" },
+    { "sizes.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 2\nencoding: raw\n\n",
+      "\"dimension: 4\" but 3 sizes" },
+    { "zero.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 0 2 2\nencoding: raw\n\n",
+      "\"0\" is not a positive count" },
+    { "type.nrrd", "NRRD0004\ntype: quad\ndimension: 1\nsizes: 6\nencoding: raw\n\n",
+      "unknown type \"quad\"" },
+    { "encoding.nrrd", "NRRD0004\ntype: float\ndimension: 1\nsizes: 6\nencoding: bzip2\n\n",
+      "\"encoding: bzip2\"; tensor files are read raw or gzip" },
+    { "device.nhdr", header + "data file: /dev/zero\n",
+      "the data file /dev/zero is not a regular file" },
+    { "missing.nhdr", header + "data file: nowhere.raw\n", "nowhere.raw does not exist" },
+    { "huge.nrrd",
+      "NRRD0004\ntype: double\ndimension: 4\nsizes: 6 1000 1000 1000\nencoding: gzip\n\n",
+      "the header declares more than 2 GiB of values" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = Scratch(c.Name);
+    Write(file, c.Bytes);
+    const std::string problem = riemann::CheckNrrdFile(file.string());
+    EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
+  }
+}
