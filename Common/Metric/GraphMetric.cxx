@@ -3,6 +3,7 @@
 #include "PacketCurvature.h"
 #include "PacketKernels.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace riemann
@@ -164,6 +165,30 @@ double GraphMetric::VolumeForm(const Vec3& p) const
   ScalarJet f;
   this->Field->Evaluate(p, FirstDerivatives, f);
   return std::sqrt(1.0 + f.Gradient.squaredNorm());
+}
+
+std::string GraphMetric::Validate() const
+{
+  if (!this->Bumps)
+  {
+    return this->Metric::Validate();
+  }
+  // Term k's gradient: |a| e^(-Q/2) sqrt(sum_i w_i^2 d_i^2) <= |a| sqrt(w_max Q) e^(-Q/2),
+  // Q = sum_i w_i d_i^2, at most |a| sqrt(w_max) e^(-1/2) (at Q = 1).
+  const GaussianTerms& terms = *this->Bumps;
+  double bound = 0.0;
+  for (size_t k = 0; k < terms.Size(); ++k)
+  {
+    const double w = std::max({ terms.InverseVariance[0][k], terms.InverseVariance[1][k],
+      terms.InverseVariance[2][k] });
+    bound += std::abs(terms.Amplitude[k]) * std::sqrt(w) * std::exp(-0.5);
+  }
+  if (std::isfinite(bound) && std::isfinite(1.0 + bound * bound))
+  {
+    return std::string();
+  }
+  // The bound overflows (huge amplitudes or tiny spreads): look where.
+  return this->Metric::Validate();
 }
 
 void GraphMetric::AppendSamplePoints(std::vector<Vec3>& points) const

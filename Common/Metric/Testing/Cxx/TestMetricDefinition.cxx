@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
 #include <cstdio>
 
 namespace riemann
@@ -210,3 +213,49 @@ TEST(MetricDefinition, AnimatedNumbersFollowTime)
 }
 } // namespace
 } // namespace riemann
+
+TEST(MetricDefinition, ManyGaussiansValidateByTheirGradientBound)
+{
+  // A graph metric of Gaussians is positive definite wherever grad f is
+  // finite: validated from the bumps' gradient bounds, so thousands of
+  // bumps (a point cloud's worth) load (sampling around every bump cost
+  // O(N^2): over 100 s for 1600). The bound must be right: g at points
+  // near every bump is finite and positive definite.
+  std::string json = R"({"type": "graph", "gaussians": [)";
+  const int count = 3000;
+  for (int k = 0; k < count; ++k)
+  {
+    char bump[160];
+    std::snprintf(bump, sizeof(bump),
+      R"(%s{"amplitude": %g, "center": [%g, %g, %g], "sigma": [%g, %g, %g]})", k ? ", " : "",
+      (k % 2 ? -1.0 : 1.0) * (0.5 + 0.001 * k), std::sin(k) * 3, std::cos(1.3 * k) * 3,
+      std::sin(0.7 * k) * 3, 0.1 + 0.0001 * k, 0.2, 0.15);
+    json += bump;
+  }
+  json += "]}";
+  const auto metric = riemann::ParseMetricDefinition(json); // throws when not valid
+  ASSERT_TRUE(metric);
+  EXPECT_EQ(metric->Validate(), "");
+  for (int k = 0; k < count; k += 97)
+  {
+    const riemann::Vec3 near(std::sin(k) * 3 + 0.1, std::cos(1.3 * k) * 3, std::sin(0.7 * k) * 3);
+    riemann::Mat3 g;
+    ASSERT_TRUE(metric->Tensor(near, g));
+    EXPECT_TRUE(g.allFinite());
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<riemann::Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues().minCoeff(), 0.999);
+  }
+
+  // A bound that overflows (amplitude 1e300, spread 1e-10) falls back to
+  // sampling, which finds where g is not finite.
+  const std::string wild = R"({"type": "graph", "gaussians": [{"amplitude": 1e300,
+    "center": [0, 0, 0], "sigma": [1e-10, 1e-10, 1e-10]}]})";
+  try
+  {
+    riemann::ParseMetricDefinition(wild);
+    FAIL() << "an overflowing bump was accepted";
+  }
+  catch (const std::exception& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
+  }
+}
