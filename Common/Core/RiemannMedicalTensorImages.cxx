@@ -1,4 +1,5 @@
 #include "RiemannMedicalTensorImages.h"
+#include "RiemannGzipNrrd.h"
 #include "RiemannTensorFileChecks.h"
 
 #include "vtkCharArray.h"
@@ -454,15 +455,23 @@ vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
   {
     throw std::runtime_error(problem);
   }
-  vtkNew<SpaceBlindNrrdReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
-  {
-    throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
-  }
-  reader->SetFileName(path.c_str());
-  reader->Update();
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->ShallowCopy(reader->GetOutput());
+  if (IsGzipNrrd(path))
+  {
+    // vtkNrrdReader (VTK 9.1) misreads gzip bodies without an error.
+    image = ReadGzipNrrdImage(path);
+  }
+  else
+  {
+    vtkNew<SpaceBlindNrrdReader> reader;
+    if (!reader->CanReadFile(path.c_str()))
+    {
+      throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
+    }
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    image->ShallowCopy(reader->GetOutput());
+  }
   vtkDataArray* scalars = OnlyArray(image, "NRRD");
   const int count = scalars->GetNumberOfComponents();
   if (count != 6 && count != 7 && count != 9)

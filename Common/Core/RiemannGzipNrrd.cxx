@@ -1,0 +1,216 @@
+#include "RiemannGzipNrrd.h"
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkType.h"
+#include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace riemann
+{
+namespace
+{
+/// The header's "field: value" lines and the number of bytes up to the body.
+std::map<std::string, std::string> HeaderFields(const std::string& file, std::size_t& body)
+{
+  std::map<std::string, std::string> fields;
+  std::size_t at = file.find('\n');
+  while (at != std::string::npos)
+  {
+    const std::size_t start = at + 1;
+    at = file.find('\n', start);
+    std::string line = file.substr(start, (at == std::string::npos ? file.size() : at) - start);
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      body = at == std::string::npos ? file.size() : at + 1;
+      return fields;
+    }
+    const std::size_t colon = line.find(": ");
+    if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
+    {
+      fields[line.substr(0, colon)] = line.substr(colon + 2);
+    }
+  }
+  throw std::runtime_error("the NRRD header has no blank line before its gzip data");
+}
+
+/// The VTK type of a NRRD type name (VTK_VOID when unknown).
+int VtkType(const std::string& type)
+{
+  static const std::map<std::string, int> types = { { "float", VTK_FLOAT },
+    { "double", VTK_DOUBLE }, { "signed char", VTK_SIGNED_CHAR }, { "int8", VTK_SIGNED_CHAR },
+    { "int8_t", VTK_SIGNED_CHAR }, { "uchar", VTK_UNSIGNED_CHAR },
+    { "unsigned char", VTK_UNSIGNED_CHAR }, { "uint8", VTK_UNSIGNED_CHAR },
+    { "uint8_t", VTK_UNSIGNED_CHAR }, { "short", VTK_SHORT }, { "short int", VTK_SHORT },
+    { "signed short", VTK_SHORT }, { "signed short int", VTK_SHORT }, { "int16", VTK_SHORT },
+    { "int16_t", VTK_SHORT }, { "ushort", VTK_UNSIGNED_SHORT },
+    { "unsigned short", VTK_UNSIGNED_SHORT }, { "unsigned short int", VTK_UNSIGNED_SHORT },
+    { "uint16", VTK_UNSIGNED_SHORT }, { "uint16_t", VTK_UNSIGNED_SHORT }, { "int", VTK_INT },
+    { "signed int", VTK_INT }, { "int32", VTK_INT }, { "int32_t", VTK_INT },
+    { "uint", VTK_UNSIGNED_INT }, { "unsigned int", VTK_UNSIGNED_INT },
+    { "uint32", VTK_UNSIGNED_INT }, { "uint32_t", VTK_UNSIGNED_INT },
+    { "longlong", VTK_LONG_LONG }, { "long long", VTK_LONG_LONG }, { "int64", VTK_LONG_LONG },
+    { "int64_t", VTK_LONG_LONG }, { "ulonglong", VTK_UNSIGNED_LONG_LONG },
+    { "unsigned long long", VTK_UNSIGNED_LONG_LONG }, { "uint64", VTK_UNSIGNED_LONG_LONG },
+    { "uint64_t", VTK_UNSIGNED_LONG_LONG } };
+  const auto found = types.find(type);
+  return found == types.end() ? VTK_VOID : found->second;
+}
+
+/// Inflate `compressed` (gzip or zlib) into exactly `size` bytes at `out`.
+void Inflate(const char* compressed, std::size_t length, unsigned char* out, std::size_t size)
+{
+  z_stream stream;
+  std::memset(&stream, 0, sizeof(stream));
+  if (inflateInit2(&stream, 15 + 32) != Z_OK) // 32: a gzip or a zlib header
+  {
+    throw std::runtime_error("zlib could not start inflating");
+  }
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed));
+  stream.avail_in = static_cast<uInt>(std::min<std::size_t>(length, 0xffffffffu));
+  std::size_t produced = 0;
+  int status = Z_OK;
+  while (status == Z_OK && produced < size)
+  {
+    stream.next_out = out + produced;
+    stream.avail_out = static_cast<uInt>(std::min<std::size_t>(size - produced, 1u << 30));
+    const uInt before = stream.avail_out;
+    status = inflate(&stream, Z_NO_FLUSH);
+    produced += before - stream.avail_out;
+  }
+  unsigned char extra = 0;
+  if (status == Z_OK)
+  {
+    // Full: the stream must end here, with nothing more to give.
+    stream.next_out = &extra;
+    stream.avail_out = 1;
+    status = inflate(&stream, Z_NO_FLUSH);
+    if (stream.avail_out == 0)
+    {
+      inflateEnd(&stream);
+      throw std::runtime_error("the gzip data inflates to more than the " +
+        std::to_string(size) + " bytes the header declares");
+    }
+  }
+  const bool ended = status == Z_STREAM_END || status == Z_BUF_ERROR;
+  inflateEnd(&stream);
+  if (produced < size)
+  {
+    throw std::runtime_error("the gzip data inflates to " + std::to_string(produced) +
+      " bytes; the header declares " + std::to_string(size) + " (cut short?)");
+  }
+  if (!ended)
+  {
+    throw std::runtime_error("the gzip data is corrupt (zlib status " + std::to_string(status) + ")");
+  }
+}
+
+bool LittleEndianHost()
+{
+  const std::uint16_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+} // namespace
+
+bool IsGzipNrrd(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && !line.empty() && line != "\r")
+  {
+    if (line.rfind("encoding: ", 0) == 0)
+    {
+      const std::string value = line.substr(10, line.find_last_not_of("\r") - 9);
+      return value == "gzip" || value == "gz";
+    }
+  }
+  return false;
+}
+
+vtkSmartPointer<vtkImageData> ReadGzipNrrdImage(const std::string& path)
+{
+  // Step 1: the header: type, sizes (components first in 4D), byte order.
+  std::ifstream in(path, std::ios::binary);
+  const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::size_t body = 0;
+  std::map<std::string, std::string> fields = HeaderFields(file, body);
+  if (fields.count("data file") || fields.count("datafile"))
+  {
+    throw std::runtime_error("a detached gzip NRRD header is not read; attach the data");
+  }
+  const int type = VtkType(fields["type"]);
+  if (type == VTK_VOID)
+  {
+    throw std::runtime_error("unknown type \"" + fields["type"] + "\"");
+  }
+  std::vector<long long> sizes;
+  std::istringstream words(fields["sizes"]);
+  for (long long size; words >> size;)
+  {
+    sizes.push_back(size);
+  }
+  if (sizes.size() != 3 && sizes.size() != 4)
+  {
+    throw std::runtime_error("a tensor volume has 3 or 4 axes; \"sizes: " + fields["sizes"] + "\"");
+  }
+  const bool components = sizes.size() == 4;
+  const int count = components ? static_cast<int>(sizes[0]) : 1;
+  const long long* axes = sizes.data() + (components ? 1 : 0);
+
+  // Step 2: the values, inflated in place.
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(static_cast<int>(axes[0]), static_cast<int>(axes[1]),
+    static_cast<int>(axes[2]));
+  image->AllocateScalars(type, count);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  const int valueSize = values->GetDataTypeSize();
+  const std::size_t bytes =
+    static_cast<std::size_t>(values->GetNumberOfValues()) * static_cast<std::size_t>(valueSize);
+  auto* out = static_cast<unsigned char*>(values->GetVoidPointer(0));
+  Inflate(file.data() + body, file.size() - body, out, bytes);
+  const std::string endian = fields["endian"];
+  if (valueSize > 1 && (endian == "big") == LittleEndianHost())
+  {
+    for (std::size_t at = 0; at < bytes; at += static_cast<std::size_t>(valueSize))
+    {
+      std::reverse(out + at, out + at + valueSize);
+    }
+  }
+  values->Modified();
+
+  // Step 3: "spacings" (the voxel axes' only, NaN for the components').
+  std::istringstream spacingWords(fields["spacings"]);
+  std::vector<double> spacings;
+  for (std::string word; spacingWords >> word;)
+  {
+    spacings.push_back(std::strtod(word.c_str(), nullptr));
+  }
+  if (spacings.size() == sizes.size())
+  {
+    const double* s = spacings.data() + (components ? 1 : 0);
+    if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]) && s[0] > 0 &&
+      s[1] > 0 && s[2] > 0)
+    {
+      image->SetSpacing(s[0], s[1], s[2]);
+    }
+  }
+  return image;
+}
+} // namespace riemann
