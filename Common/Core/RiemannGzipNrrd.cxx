@@ -1,4 +1,5 @@
 #include "RiemannGzipNrrd.h"
+#include "RiemannTensorFileChecks.h"
 
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
@@ -21,34 +22,6 @@ namespace riemann
 {
 namespace
 {
-/// The header's "field: value" lines and the number of bytes up to the body.
-std::map<std::string, std::string> HeaderFields(const std::string& file, std::size_t& body)
-{
-  std::map<std::string, std::string> fields;
-  std::size_t at = file.find('\n');
-  while (at != std::string::npos)
-  {
-    const std::size_t start = at + 1;
-    at = file.find('\n', start);
-    std::string line = file.substr(start, (at == std::string::npos ? file.size() : at) - start);
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    if (line.empty())
-    {
-      body = at == std::string::npos ? file.size() : at + 1;
-      return fields;
-    }
-    const std::size_t colon = line.find(": ");
-    if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
-    {
-      fields[line.substr(0, colon)] = line.substr(colon + 2);
-    }
-  }
-  throw std::runtime_error("the NRRD header has no blank line before its gzip data");
-}
-
 /// The VTK type of a NRRD type name (VTK_VOID when unknown).
 int VtkType(const std::string& type)
 {
@@ -131,26 +104,19 @@ bool LittleEndianHost()
 
 bool IsGzipNrrd(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line) && !line.empty() && line != "\r")
-  {
-    if (line.rfind("encoding: ", 0) == 0)
-    {
-      const std::string value = line.substr(10, line.find_last_not_of("\r") - 9);
-      return value == "gzip" || value == "gz";
-    }
-  }
-  return false;
+  const NrrdHeader header = ReadNrrdHeader(path);
+  const auto encoding = header.Fields.find("encoding");
+  return encoding != header.Fields.end() && (encoding->second == "gzip" || encoding->second == "gz");
 }
 
 vtkSmartPointer<vtkImageData> ReadGzipNrrdImage(const std::string& path)
 {
   // Step 1: the header: type, sizes (components first in 4D), byte order.
+  NrrdHeader header = ReadNrrdHeader(path);
+  std::map<std::string, std::string>& fields = header.Fields;
   std::ifstream in(path, std::ios::binary);
   const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::size_t body = 0;
-  std::map<std::string, std::string> fields = HeaderFields(file, body);
+  const std::size_t body = static_cast<std::size_t>(std::min<std::uint64_t>(header.Bytes, file.size()));
   if (fields.count("data file") || fields.count("datafile"))
   {
     throw std::runtime_error("a detached gzip NRRD header is not read; attach the data");

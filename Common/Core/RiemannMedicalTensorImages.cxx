@@ -243,34 +243,6 @@ private:
 };
 vtkStandardNewMacro(SpaceBlindNrrdReader);
 
-/// The "field: value" lines of a NRRD header, up to the blank line that ends
-/// an attached header (a detached .nhdr is all header). Comments and
-/// "key:=value" pairs are skipped.
-std::map<std::string, std::string> ReadNrrdHeaderFields(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::map<std::string, std::string> fields;
-  std::string line;
-  std::getline(in, line); // the magic, NRRD000X
-  while (std::getline(in, line))
-  {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    if (line.empty())
-    {
-      break;
-    }
-    const std::size_t colon = line.find(": ");
-    if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
-    {
-      fields[line.substr(0, colon)] = line.substr(colon + 2);
-    }
-  }
-  return fields;
-}
-
 /// The vectors "(a,b,c)" of a NRRD field's value, in order; "none" gives no vector.
 std::vector<std::array<double, 3>> NrrdVectors(const std::string& value, const std::string& field)
 {
@@ -314,7 +286,7 @@ std::vector<std::array<double, 3>> NrrdVectors(const std::string& value, const s
  */
 void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
 {
-  const std::map<std::string, std::string> fields = ReadNrrdHeaderFields(path);
+  const std::map<std::string, std::string> fields = ReadNrrdHeader(path).Fields;
   const auto directions = fields.find("space directions");
   if (directions != fields.end())
   {

@@ -211,21 +211,17 @@ std::string CheckNiftiFile(const std::string& path)
   return std::string();
 }
 
-std::string CheckNrrdFile(const std::string& path)
+NrrdHeader ReadNrrdHeader(const std::string& path)
 {
-  // Step 1: the header's fields, up to the blank line (or the file's end).
+  NrrdHeader header;
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::getline(in, line);
-  if (line.rfind("NRRD000", 0) != 0)
+  header.Magic = line.rfind("NRRD000", 0) == 0;
+  header.Bytes = line.size() + 1;
+  while (header.Magic && std::getline(in, line))
   {
-    return "not a NRRD file (it does not start with NRRD000X)";
-  }
-  std::map<std::string, std::string> fields;
-  std::uint64_t headerBytes = line.size() + 1;
-  while (std::getline(in, line))
-  {
-    headerBytes += line.size() + 1;
+    header.Bytes += line.size() + 1;
     if (!line.empty() && line.back() == '\r')
     {
       line.pop_back();
@@ -237,13 +233,31 @@ std::string CheckNrrdFile(const std::string& path)
     const std::size_t colon = line.find(": ");
     if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
     {
-      fields[line.substr(0, colon)] = line.substr(colon + 2);
+      header.Fields[line.substr(0, colon)] = line.substr(colon + 2);
     }
-    if (headerBytes > (1u << 20))
+    if (header.Bytes > (1u << 20))
     {
-      return "the header runs past 1 MiB";
+      header.TooLong = true;
+      break;
     }
   }
+  return header;
+}
+
+std::string CheckNrrdFile(const std::string& path)
+{
+  // Step 1: the header's fields, up to the blank line (or the file's end).
+  NrrdHeader header = ReadNrrdHeader(path);
+  if (!header.Magic)
+  {
+    return "not a NRRD file (it does not start with NRRD000X)";
+  }
+  if (header.TooLong)
+  {
+    return "the header runs past 1 MiB";
+  }
+  std::map<std::string, std::string>& fields = header.Fields;
+  const std::uint64_t headerBytes = header.Bytes;
 
   // Step 2: dimension, sizes, type and encoding agree.
   const std::string dimensionText = fields["dimension"];

@@ -16,6 +16,7 @@
 #include "RiemannCommonCoreModule.h" // For export macro (tested on their own)
 
 #include <cstdint>
+#include <map>
 #include <string>
 
 namespace riemann
@@ -27,6 +28,22 @@ constexpr std::uint64_t MaximumTensorFileBytes = std::uint64_t(2) << 30;
 /// "" when the NIfTI-1 file (.nii, .nii.gz, .hdr with its .img) at `path` can be given to
 /// vtkNIFTIImageReader, else why not. NIfTI-2 headers pass to VTK's own checks.
 RIEMANNCOMMONCORE_EXPORT std::string CheckNiftiFile(const std::string& path);
+
+/// A NRRD header: its "field: value" lines (comments and "key:=value" pairs
+/// left out) and its length in bytes, up to and including the blank line
+/// that ends an attached header (a detached .nhdr is all header).
+struct NrrdHeader
+{
+  std::map<std::string, std::string> Fields;
+  std::uint64_t Bytes = 0;
+  /// The file starts with the NRRD magic (NRRD000X).
+  bool Magic = false;
+  /// The header ran past 1 MiB (reading stopped there).
+  bool TooLong = false;
+};
+
+/// Read the header of the NRRD file at `path`.
+NrrdHeader ReadNrrdHeader(const std::string& path);
 
 /// "" when the NRRD file (.nrrd, or a detached .nhdr) at `path` can be given to vtkNrrdReader,
 /// else why not.
