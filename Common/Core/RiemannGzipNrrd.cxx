@@ -1,7 +1,9 @@
 #include "RiemannGzipNrrd.h"
 #include "RiemannTensorFileChecks.h"
 
+#include "vtkByteSwap.h"
 #include "vtkDataArray.h"
+#include "vtkEndian.h"
 #include "vtkPointData.h"
 #include "vtkType.h"
 #include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
@@ -22,29 +24,6 @@ namespace riemann
 {
 namespace
 {
-/// The VTK type of a NRRD type name (VTK_VOID when unknown).
-int VtkType(const std::string& type)
-{
-  static const std::map<std::string, int> types = { { "float", VTK_FLOAT },
-    { "double", VTK_DOUBLE }, { "signed char", VTK_SIGNED_CHAR }, { "int8", VTK_SIGNED_CHAR },
-    { "int8_t", VTK_SIGNED_CHAR }, { "uchar", VTK_UNSIGNED_CHAR },
-    { "unsigned char", VTK_UNSIGNED_CHAR }, { "uint8", VTK_UNSIGNED_CHAR },
-    { "uint8_t", VTK_UNSIGNED_CHAR }, { "short", VTK_SHORT }, { "short int", VTK_SHORT },
-    { "signed short", VTK_SHORT }, { "signed short int", VTK_SHORT }, { "int16", VTK_SHORT },
-    { "int16_t", VTK_SHORT }, { "ushort", VTK_UNSIGNED_SHORT },
-    { "unsigned short", VTK_UNSIGNED_SHORT }, { "unsigned short int", VTK_UNSIGNED_SHORT },
-    { "uint16", VTK_UNSIGNED_SHORT }, { "uint16_t", VTK_UNSIGNED_SHORT }, { "int", VTK_INT },
-    { "signed int", VTK_INT }, { "int32", VTK_INT }, { "int32_t", VTK_INT },
-    { "uint", VTK_UNSIGNED_INT }, { "unsigned int", VTK_UNSIGNED_INT },
-    { "uint32", VTK_UNSIGNED_INT }, { "uint32_t", VTK_UNSIGNED_INT },
-    { "longlong", VTK_LONG_LONG }, { "long long", VTK_LONG_LONG }, { "int64", VTK_LONG_LONG },
-    { "int64_t", VTK_LONG_LONG }, { "ulonglong", VTK_UNSIGNED_LONG_LONG },
-    { "unsigned long long", VTK_UNSIGNED_LONG_LONG }, { "uint64", VTK_UNSIGNED_LONG_LONG },
-    { "uint64_t", VTK_UNSIGNED_LONG_LONG } };
-  const auto found = types.find(type);
-  return found == types.end() ? VTK_VOID : found->second;
-}
-
 /// Inflate `compressed` (gzip or zlib) into exactly `size` bytes at `out`.
 void Inflate(const char* compressed, std::size_t length, unsigned char* out, std::size_t size)
 {
@@ -93,13 +72,6 @@ void Inflate(const char* compressed, std::size_t length, unsigned char* out, std
   }
 }
 
-bool LittleEndianHost()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
 } // namespace
 
 bool IsGzipNrrd(const std::string& path)
@@ -121,7 +93,7 @@ vtkSmartPointer<vtkImageData> ReadGzipNrrdImage(const std::string& path)
   {
     throw std::runtime_error("a detached gzip NRRD header is not read; attach the data");
   }
-  const int type = VtkType(fields["type"]);
+  const int type = NrrdVtkType(fields["type"]);
   if (type == VTK_VOID)
   {
     throw std::runtime_error("unknown type \"" + fields["type"] + "\"");
@@ -151,13 +123,15 @@ vtkSmartPointer<vtkImageData> ReadGzipNrrdImage(const std::string& path)
     static_cast<std::size_t>(values->GetNumberOfValues()) * static_cast<std::size_t>(valueSize);
   auto* out = static_cast<unsigned char*>(values->GetVoidPointer(0));
   Inflate(file.data() + body, file.size() - body, out, bytes);
-  const std::string endian = fields["endian"];
-  if (valueSize > 1 && (endian == "big") == LittleEndianHost())
+#ifdef VTK_WORDS_BIGENDIAN
+  const bool swap = fields["endian"] != "big";
+#else
+  const bool swap = fields["endian"] == "big";
+#endif
+  if (swap && valueSize > 1)
   {
-    for (std::size_t at = 0; at < bytes; at += static_cast<std::size_t>(valueSize))
-    {
-      std::reverse(out + at, out + at + valueSize);
-    }
+    vtkByteSwap::SwapVoidRange(out, bytes / static_cast<std::size_t>(valueSize),
+      static_cast<std::size_t>(valueSize));
   }
   values->Modified();
 

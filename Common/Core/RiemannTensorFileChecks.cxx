@@ -1,5 +1,7 @@
 #include "RiemannTensorFileChecks.h"
 
+#include "vtkAbstractArray.h"
+#include "vtkType.h"
 #include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
 
 
@@ -64,24 +66,6 @@ int NiftiBytesPerValue(int datatype)
   return found == sizes.end() ? 0 : found->second;
 }
 
-/// Bytes per value of a NRRD type name; 0 for a name NRRD does not define.
-int NrrdBytesPerValue(const std::string& type)
-{
-  static const std::map<std::string, int> sizes = { { "signed char", 1 }, { "int8", 1 },
-    { "int8_t", 1 }, { "uchar", 1 }, { "unsigned char", 1 }, { "uint8", 1 }, { "uint8_t", 1 },
-    { "short", 2 }, { "short int", 2 }, { "signed short", 2 }, { "signed short int", 2 },
-    { "int16", 2 }, { "int16_t", 2 }, { "ushort", 2 }, { "unsigned short", 2 },
-    { "unsigned short int", 2 }, { "uint16", 2 }, { "uint16_t", 2 }, { "int", 4 },
-    { "signed int", 4 }, { "int32", 4 }, { "int32_t", 4 }, { "uint", 4 }, { "unsigned int", 4 },
-    { "uint32", 4 }, { "uint32_t", 4 }, { "longlong", 8 }, { "long long", 8 },
-    { "long long int", 8 }, { "signed long long", 8 }, { "signed long long int", 8 },
-    { "int64", 8 }, { "int64_t", 8 }, { "ulonglong", 8 }, { "unsigned long long", 8 },
-    { "unsigned long long int", 8 }, { "uint64", 8 }, { "uint64_t", 8 }, { "float", 4 },
-    { "double", 8 } };
-  const auto found = sizes.find(type);
-  return found == sizes.end() ? 0 : found->second;
-}
-
 /// A regular file that exists (not a device, a FIFO or a folder).
 std::string RegularFileProblem(const fs::path& path, const std::string& what)
 {
@@ -98,6 +82,31 @@ std::string RegularFileProblem(const fs::path& path, const std::string& what)
   return std::string();
 }
 } // namespace
+
+int NrrdVtkType(const std::string& type)
+{
+  static const std::map<std::string, int> types = { { "float", VTK_FLOAT },
+    { "double", VTK_DOUBLE }, { "signed char", VTK_SIGNED_CHAR }, { "int8", VTK_SIGNED_CHAR },
+    { "int8_t", VTK_SIGNED_CHAR }, { "uchar", VTK_UNSIGNED_CHAR },
+    { "unsigned char", VTK_UNSIGNED_CHAR }, { "uint8", VTK_UNSIGNED_CHAR },
+    { "uint8_t", VTK_UNSIGNED_CHAR }, { "short", VTK_SHORT }, { "short int", VTK_SHORT },
+    { "signed short", VTK_SHORT }, { "signed short int", VTK_SHORT }, { "int16", VTK_SHORT },
+    { "int16_t", VTK_SHORT }, { "ushort", VTK_UNSIGNED_SHORT },
+    { "unsigned short", VTK_UNSIGNED_SHORT }, { "unsigned short int", VTK_UNSIGNED_SHORT },
+    { "uint16", VTK_UNSIGNED_SHORT }, { "uint16_t", VTK_UNSIGNED_SHORT }, { "int", VTK_INT },
+    { "signed int", VTK_INT }, { "int32", VTK_INT }, { "int32_t", VTK_INT },
+    { "uint", VTK_UNSIGNED_INT }, { "unsigned int", VTK_UNSIGNED_INT },
+    { "uint32", VTK_UNSIGNED_INT }, { "uint32_t", VTK_UNSIGNED_INT },
+    { "longlong", VTK_LONG_LONG }, { "long long", VTK_LONG_LONG },
+    { "long long int", VTK_LONG_LONG }, { "signed long long", VTK_LONG_LONG },
+    { "signed long long int", VTK_LONG_LONG }, { "int64", VTK_LONG_LONG },
+    { "int64_t", VTK_LONG_LONG }, { "ulonglong", VTK_UNSIGNED_LONG_LONG },
+    { "unsigned long long", VTK_UNSIGNED_LONG_LONG },
+    { "unsigned long long int", VTK_UNSIGNED_LONG_LONG }, { "uint64", VTK_UNSIGNED_LONG_LONG },
+    { "uint64_t", VTK_UNSIGNED_LONG_LONG } };
+  const auto found = types.find(type);
+  return found == types.end() ? VTK_VOID : found->second;
+}
 
 std::string CheckNiftiFile(const std::string& path)
 {
@@ -284,7 +293,8 @@ std::string CheckNrrdFile(const std::string& path)
     return "\"dimension: " + std::to_string(dimension) + "\" but " +
       std::to_string(sizes.size()) + " sizes (\"sizes: " + fields["sizes"] + "\")";
   }
-  const int bytesPerValue = NrrdBytesPerValue(fields["type"]);
+  const int type = NrrdVtkType(fields["type"]);
+  const int bytesPerValue = type == VTK_VOID ? 0 : vtkAbstractArray::GetDataTypeSize(type);
   if (bytesPerValue == 0)
   {
     return "unknown type \"" + fields["type"] + "\"";

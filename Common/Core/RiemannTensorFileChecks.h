@@ -42,6 +42,10 @@ struct NrrdHeader
   bool TooLong = false;
 };
 
+/// The VTK type of a NRRD type name ("float", "unsigned short", "int32_t", ...); VTK_VOID for a
+/// name NRRD does not define.
+int NrrdVtkType(const std::string& type);
+
 /// Read the header of the NRRD file at `path`.
 NrrdHeader ReadNrrdHeader(const std::string& path);
 

@@ -15,26 +15,14 @@ namespace
 /// The info log of a shader (`isProgram` false) or program object, trimmed.
 std::string InfoLog(GLuint object, bool isProgram)
 {
+  const auto getParameter = isProgram ? glGetProgramiv : glGetShaderiv;
+  const auto getLog = isProgram ? glGetProgramInfoLog : glGetShaderInfoLog;
   GLint length = 0;
-  if (isProgram)
-  {
-    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-  }
-  else
-  {
-    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-  }
+  getParameter(object, GL_INFO_LOG_LENGTH, &length);
   std::vector<char> text(static_cast<std::size_t>(length > 0 ? length : 0) + 1, '\0');
   if (length > 0)
   {
-    if (isProgram)
-    {
-      glGetProgramInfoLog(object, length, nullptr, text.data());
-    }
-    else
-    {
-      glGetShaderInfoLog(object, length, nullptr, text.data());
-    }
+    getLog(object, length, nullptr, text.data());
   }
   std::string log(text.data());
   const std::size_t end = log.find_last_not_of(" \n\r\t");

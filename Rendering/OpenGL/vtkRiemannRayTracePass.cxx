@@ -281,12 +281,12 @@ public:
     int Group[2] = { 0, 0 };
     std::string Extra;
 
-    bool operator==(const ProgramIngredients& other) const
+    /// The same compile-time choices (the texts are compared where they are, not copied).
+    bool SameChoices(const ProgramIngredients& other) const
     {
       return this->Integrator == other.Integrator && this->Meshes == other.Meshes &&
         this->Compute == other.Compute && this->Group[0] == other.Group[0] &&
-        this->Group[1] == other.Group[1] && this->Extra == other.Extra &&
-        this->MetricSource == other.MetricSource;
+        this->Group[1] == other.Group[1];
     }
   };
   /// The last frame's ingredients and program: while a frame's ingredients
@@ -864,15 +864,16 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
   vtkInternals& internals = *this->Internals;
   // Step 1: the same ingredients as the last frame: the same program.
   vtkInternals::ProgramIngredients ingredients;
-  ingredients.MetricSource = frame.MetricGlsl.Source;
   ingredients.Integrator = static_cast<int>(frame.Rays.Integrator);
   ingredients.Meshes = frame.Scene->HasMeshes();
   ingredients.Compute = frame.UseCompute;
   ingredients.Group[0] = frame.UseCompute ? this->ComputeWorkgroupSize[0] : 0;
   ingredients.Group[1] = frame.UseCompute ? this->ComputeWorkgroupSize[1] : 0;
-  ingredients.Extra = this->ExtraShaderCode ? this->ExtraShaderCode : "";
+  const char* extra = this->ExtraShaderCode ? this->ExtraShaderCode : "";
+  const vtkInternals::ProgramIngredients& last = internals.LastIngredients;
   if (internals.LastProgram && internals.LastProgram->IsValid() &&
-    ingredients == internals.LastIngredients)
+    ingredients.SameChoices(last) && last.Extra == extra &&
+    last.MetricSource == frame.MetricGlsl.Source)
   {
     return this->BindProgram(*internals.LastProgram, frame);
   }
@@ -923,6 +924,8 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
     }
     found = internals.StoreProgram(source, std::move(built));
   }
+  ingredients.MetricSource = frame.MetricGlsl.Source;
+  ingredients.Extra = extra;
   internals.LastIngredients = std::move(ingredients);
   internals.LastProgram = &found->second;
   return this->BindProgram(found->second, frame);

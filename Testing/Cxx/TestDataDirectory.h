@@ -1,10 +1,12 @@
 // Shared by the tests that read the project's Data folder (scenes, metrics,
-// meshes): where it is. VTK-free, for the base's tests too.
+// meshes): where it is, and where a test writes its own files. VTK-free, for
+// the base's tests too.
 #ifndef RiemannTestDataDirectory_h
 #define RiemannTestDataDirectory_h
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 namespace riemann
 {
@@ -16,6 +18,17 @@ inline std::filesystem::path DataDirectory()
 {
   const char* dir = std::getenv("RIEMANN_DATA_DIR");
   return dir && *dir ? std::filesystem::path(dir) : std::filesystem::path(RIEMANN_TEST_DATA_DIR);
+}
+/// A folder `name` for a test's own files, created: under $RIEMANN_TEST_OUTPUT_DIR when set,
+/// else under the system's temporary folder.
+inline std::filesystem::path TestOutputDirectory(const std::string& name)
+{
+  const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
+  const std::filesystem::path dir =
+    (output && *output ? std::filesystem::path(output) : std::filesystem::temp_directory_path()) /
+    name;
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 } // namespace testing
 } // namespace riemann

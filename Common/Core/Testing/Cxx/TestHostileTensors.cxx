@@ -33,11 +33,7 @@ fs::path HostileTensors()
 
 fs::path Scratch(const std::string& name)
 {
-  const char* output = std::getenv("RIEMANN_TEST_OUTPUT_DIR");
-  const fs::path dir =
-    fs::path(output ? output : fs::temp_directory_path().string()) / "hostile-tensors";
-  fs::create_directories(dir);
-  return dir / name;
+  return riemann::testing::TestOutputDirectory("hostile-tensors") / name;
 }
 
 /// vtkRiemannMetric's error for {"type": "sampled", "file": FILE} ("" when it loads).

@@ -37,9 +37,7 @@ fs::path HostileMeshes()
 
 fs::path Scratch(const std::string& name)
 {
-  const fs::path dir = fs::temp_directory_path() / "riemann-hostile-meshes";
-  fs::create_directories(dir);
-  return dir / name;
+  return riemann::testing::TestOutputDirectory("hostile-meshes") / name;
 }
 
 /// The message of the SceneDefinitionError that reading `file` as a scene mesh throws ("" if none).
