@@ -67,4 +67,34 @@ SceneUniforms PackSceneUniforms(const Scene& scene)
   }
   return uniforms;
 }
+
+std::vector<float> SceneUniformBlock(const SceneUniforms& uniforms)
+{
+  constexpr int slots = MaximumSceneUniformObjects;
+  std::vector<float> block(SceneUniformBlockFloats, 0.0f);
+  auto element = [&block](SceneBlockArray array, int slot) {
+    return block.data() + 4 * (static_cast<int>(array) * slots + slot);
+  };
+  auto store3 = [&](SceneBlockArray array, const std::vector<float>& values) {
+    for (int slot = 0; slot < slots; ++slot)
+    {
+      std::copy_n(values.data() + 3 * slot, 3, element(array, slot));
+    }
+  };
+  for (int slot = 0; slot < slots; ++slot)
+  {
+    float* kind = element(SceneBlockArray::Kind, slot);
+    kind[0] = static_cast<float>(uniforms.ObjectType[slot]);
+    kind[1] = static_cast<float>(uniforms.MaterialType[slot]);
+    kind[2] = uniforms.Size[slot];
+  }
+  store3(SceneBlockArray::A, uniforms.A);
+  store3(SceneBlockArray::B, uniforms.B);
+  store3(SceneBlockArray::P, uniforms.P);
+  store3(SceneBlockArray::Color, uniforms.Color);
+  store3(SceneBlockArray::Color2, uniforms.Color2);
+  store3(SceneBlockArray::Low, uniforms.Low);
+  store3(SceneBlockArray::High, uniforms.High);
+  return block;
+}
 } // namespace riemann

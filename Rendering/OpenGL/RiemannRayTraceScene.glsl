@@ -6,7 +6,7 @@
 // order, the same closed solids, the same tie rule (the object listed first
 // wins) and the same normals; triangle meshes (RiemannRayTraceMeshes.glsl,
 // when RT_MESHES) after them, as riemann::IntersectSceneSegment: the nearer
-// wins, the analytic object on a tie. Objects are uniform arrays in scene order, up to
+// wins, the analytic object on a tie. Objects are arrays of a uniform block in scene order, up to
 // RT_MAX_OBJECTS (= the sum of the per-type limits of RiemannScene.h, which
 // the scene parser enforces); their values are uniforms, so editing a scene
 // never recompiles the shader.
@@ -25,21 +25,34 @@
 #define RT_INFINITY 1e30
 
 uniform int rt_object_count;
-uniform int rt_object_type[RT_MAX_OBJECTS];
-// Sphere: centre; plane: point; box: min; grid: extent min.
-uniform vec3 rt_object_a[RT_MAX_OBJECTS];
-// Plane: unit normal; box: max; grid: extent max.
-uniform vec3 rt_object_b[RT_MAX_OBJECTS];
-// (sphere radius, grid spacing, grid thickness).
-uniform vec3 rt_object_p[RT_MAX_OBJECTS];
+// One std140 block (RiemannSceneUniforms.h, SceneUniformBlock): on NVIDIA, a
+// compute shader's plain uniform arrays this large fail to compile.
+layout(std140) uniform rt_scene_objects
+{
+  // (object type, material type, checker size, 0): the types as floats.
+  vec4 rt_object_kind[RT_MAX_OBJECTS];
+  // Sphere: centre; plane: point; box: min; grid: extent min.
+  vec4 rt_object_a[RT_MAX_OBJECTS];
+  // Plane: unit normal; box: max; grid: extent max.
+  vec4 rt_object_b[RT_MAX_OBJECTS];
+  // (sphere radius, grid spacing, grid thickness).
+  vec4 rt_object_p[RT_MAX_OBJECTS];
+  vec4 rt_material_color[RT_MAX_OBJECTS];
+  vec4 rt_material_color2[RT_MAX_OBJECTS];
+  // Position bounds: (x0, y0, z0) and (x1, y1, z1).
+  vec4 rt_material_lo[RT_MAX_OBJECTS];
+  vec4 rt_material_hi[RT_MAX_OBJECTS];
+};
 
-uniform int rt_material_type[RT_MAX_OBJECTS];
-uniform vec3 rt_material_color[RT_MAX_OBJECTS];
-uniform vec3 rt_material_color2[RT_MAX_OBJECTS];
-uniform float rt_material_size[RT_MAX_OBJECTS];
-// Position bounds: (x0, y0, z0) and (x1, y1, z1).
-uniform vec3 rt_material_lo[RT_MAX_OBJECTS];
-uniform vec3 rt_material_hi[RT_MAX_OBJECTS];
+int rt_object_type(int index)
+{
+  return int(rt_object_kind[index].x);
+}
+
+int rt_material_type(int index)
+{
+  return int(rt_object_kind[index].y);
+}
 
 // -d / |d|, or zero for d == 0: the normal of a hit at a start inside a solid.
 vec3 rt_facing_normal(vec3 d)
@@ -255,26 +268,26 @@ bool rt_intersect_segment(
   hitObject = -1;
   for (int index = 0; index < rt_object_count; ++index)
   {
-    int type = rt_object_type[index];
+    int type = rt_object_type(index);
     float t = RT_INFINITY;
     vec3 normal = vec3(0.0);
     bool hits = false;
     if (type == RT_GRID)
     {
-      hits = rt_intersect_grid(a, d, rt_object_a[index], rt_object_b[index], rt_object_p[index].y,
-        rt_object_p[index].z, t, normal);
+      hits = rt_intersect_grid(a, d, rt_object_a[index].xyz, rt_object_b[index].xyz,
+        rt_object_p[index].y, rt_object_p[index].z, t, normal);
     }
     else if (type == RT_SPHERE)
     {
-      hits = rt_intersect_sphere(a, d, rt_object_a[index], rt_object_p[index].x, t, normal);
+      hits = rt_intersect_sphere(a, d, rt_object_a[index].xyz, rt_object_p[index].x, t, normal);
     }
     else if (type == RT_PLANE)
     {
-      hits = rt_intersect_plane(a, d, rt_object_a[index], rt_object_b[index], t, normal);
+      hits = rt_intersect_plane(a, d, rt_object_a[index].xyz, rt_object_b[index].xyz, t, normal);
     }
     else if (type == RT_BOX)
     {
-      hits = rt_intersect_box(a, d, rt_object_a[index], rt_object_b[index], t, normal);
+      hits = rt_intersect_box(a, d, rt_object_a[index].xyz, rt_object_b[index].xyz, t, normal);
     }
     // Strictly smaller: a tie keeps the object listed first.
     if (hits && t < best)
@@ -320,34 +333,34 @@ vec3 rt_surface_color(int object, vec3 position, vec3 normal)
   }
 #if RT_MESHES
   vec3 vertexColor;
-  if (rt_object_type[object] == RT_MESH && rt_mesh_hit_triangle >= 0 &&
+  if (rt_object_type(object) == RT_MESH && rt_mesh_hit_triangle >= 0 &&
     rt_mesh_color(rt_mesh_hit_triangle, rt_mesh_hit_uv, vertexColor))
   {
     return vertexColor;
   }
 #endif
-  int type = rt_material_type[object];
+  int type = rt_material_type(object);
   if (type == RT_POSITION)
   {
     // Component-wise without dynamic indexing (see rt_intersect_box).
-    vec3 lo = rt_material_lo[object];
-    vec3 width = rt_material_hi[object] - lo;
+    vec3 lo = rt_material_lo[object].xyz;
+    vec3 width = rt_material_hi[object].xyz - lo;
     vec3 thin = vec3(lessThanEqual(width, vec3(0.0)));
     vec3 scaled = clamp((position - lo) / mix(width, vec3(1.0), thin), 0.0, 1.0);
     return mix(scaled, vec3(0.5), thin);
   }
   if (type == RT_SOLID)
   {
-    return rt_material_color[object];
+    return rt_material_color[object].xyz;
   }
   // Checker, sampled just inside the surface. The CPU steps 1e-6 size inwards;
   // float positions need a larger step (1e-4 size) to leave the rounding noise
   // of a face that lies on a checker plane.
-  float size = rt_material_size[object] > 0.0 ? rt_material_size[object] : 1.0;
+  float size = rt_object_kind[object].z > 0.0 ? rt_object_kind[object].z : 1.0;
   float normalLength = length(normal);
   vec3 inward = normalLength > 0.0 ? -normal / normalLength : vec3(0.0);
   vec3 q = position + (1e-4 * size) * inward;
   vec3 cells3 = floor(q / size);
   float cells = cells3.x + cells3.y + cells3.z;
-  return mod(abs(cells), 2.0) == 0.0 ? rt_material_color[object] : rt_material_color2[object];
+  return mod(abs(cells), 2.0) == 0.0 ? rt_material_color[object].xyz : rt_material_color2[object].xyz;
 }

@@ -12,6 +12,7 @@
 #include "RiemannComputeProgram.h"
 #include "RiemannImageIO.h"
 #include "RiemannMeshTextures.h"
+#include "RiemannSceneUniformBuffer.h"
 #include "RiemannMetricTextures.h"
 #include "RiemannReducedView.h"
 #include "RiemannScene.h"
@@ -308,6 +309,8 @@ public:
   vtkSmartPointer<vtkTextureObject> HitTexture;
   vtkNew<vtkFloatArray> HitImage;
 
+  /// The scene's objects as a uniform buffer.
+  riemann::SceneUniformBuffer SceneBlock;
   /// The scene's triangle meshes as buffer textures.
   riemann::MeshTextures Meshes;
   /// A sampled metric's tensor volume as 3D textures.
@@ -451,6 +454,9 @@ public:
     }
     this->EnvironmentPath.clear();
     this->EnvironmentError.clear();
+    // Release(nullptr) comes from the destructor or a switch to another
+    // window: the buffer's context may not be current then.
+    this->SceneBlock.Release(window != nullptr);
     this->Meshes.Release(window);
     this->MetricVolumes.Release(window);
     this->Reduced.Release(window);
@@ -627,8 +633,7 @@ void vtkRiemannRayTracePass::Render(const vtkRenderState* s)
   {
     return;
   }
-  this->SetSceneUniforms(program, frame);
-  if (!this->ActivateMeshes(program, frame))
+  if (!this->SetSceneUniforms(program, frame) || !this->ActivateMeshes(program, frame))
   {
     this->Internals->MetricVolumes.Deactivate();
     return;
@@ -1020,7 +1025,7 @@ bool vtkRiemannRayTracePass::SetMetricUniforms(vtkShaderProgram* program, FrameS
 }
 
 //------------------------------------------------------------------------------
-void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame)
+bool vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame)
 {
   const riemann::SceneUniforms packed = riemann::PackSceneUniforms(*frame.Scene);
   if (packed.Truncated)
@@ -1029,18 +1034,14 @@ void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const F
                     << " objects; the GPU pass draws the first "
                     << riemann::MaximumSceneUniformObjects);
   }
-  const int slots = riemann::MaximumSceneUniformObjects;
   program->SetUniformi("rt_object_count", packed.ObjectCount);
-  program->SetUniform1iv("rt_object_type", slots, packed.ObjectType.data());
-  program->SetUniform3fv("rt_object_a", slots, packed.A.data());
-  program->SetUniform3fv("rt_object_b", slots, packed.B.data());
-  program->SetUniform3fv("rt_object_p", slots, packed.P.data());
-  program->SetUniform1iv("rt_material_type", slots, packed.MaterialType.data());
-  program->SetUniform3fv("rt_material_color", slots, packed.Color.data());
-  program->SetUniform3fv("rt_material_color2", slots, packed.Color2.data());
-  program->SetUniform1fv("rt_material_size", slots, packed.Size.data());
-  program->SetUniform3fv("rt_material_lo", slots, packed.Low.data());
-  program->SetUniform3fv("rt_material_hi", slots, packed.High.data());
+  std::string error;
+  if (!this->Internals->SceneBlock.Bind(
+        riemann::SceneUniformBlock(packed), program->GetHandle(), error))
+  {
+    this->Fail(error, frame.Window, frame.Viewport);
+    return false;
+  }
 
   const riemann::Scene& scene = *frame.Scene;
   float v3[3];
@@ -1050,6 +1051,7 @@ void vtkRiemannRayTracePass::SetSceneUniforms(vtkShaderProgram* program, const F
   program->SetUniform3f("rt_fog_color", v3);
   program->SetUniformf("rt_fog_density", static_cast<float>(scene.FogDensity));
   program->SetUniformi("rt_observer_light", scene.ObserverLight ? 1 : 0);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -450,7 +450,7 @@ private:
   vtkShaderProgram* ReadyProgram(FrameState& frame);
   vtkShaderProgram* BindProgram(CachedProgram& cached, FrameState& frame);
   bool SetMetricUniforms(vtkShaderProgram* program, FrameState& frame);
-  void SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
+  bool SetSceneUniforms(vtkShaderProgram* program, const FrameState& frame);
   void SetObserverUniforms(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateMetricTextures(vtkShaderProgram* program, const FrameState& frame);
   bool ActivateMeshes(vtkShaderProgram* program, const FrameState& frame);

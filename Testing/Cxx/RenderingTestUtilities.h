@@ -5,10 +5,15 @@
 
 #include "ErrorObserver.h"
 
+#include "vtkFloatArray.h"
 #include "vtkFloatingPointExceptions.h"
 #include "vtkRenderPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
 
 namespace riemann
 {
@@ -52,6 +57,26 @@ inline void SetUpOffscreenView(
   window->SetSize(width, height);
   window->AddRenderer(renderer);
   renderer->SetPass(pass);
+}
+
+/// (x, y, z, s) of pixel (column, row) of a pass's hit image `width` pixels
+/// wide. A failed frame empties the image: that is a test failure and
+/// (-2, -2, -2, -2), never a read past the array's end.
+inline std::array<double, 4> HitOfPixel(vtkFloatArray* hits, int width, int column, int row)
+{
+  std::array<double, 4> hit{ -2.0, -2.0, -2.0, -2.0 };
+  const vtkIdType pixel = static_cast<vtkIdType>(row) * width + column;
+  if (pixel >= hits->GetNumberOfTuples())
+  {
+    ADD_FAILURE() << "no hit for pixel (" << column << ", " << row << "): the hit image has "
+                  << hits->GetNumberOfTuples() << " pixels";
+    return hit;
+  }
+  for (int c = 0; c < 4; ++c)
+  {
+    hit[c] = hits->GetComponent(pixel, c);
+  }
+  return hit;
 }
 } // namespace testing
 } // namespace riemann

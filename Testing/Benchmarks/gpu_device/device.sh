@@ -12,7 +12,8 @@
 #
 # For a local test: RIEMANN_GL_VENDOR=mesa RIEMANN_EXTRA_LD_PATH=<dir with a
 # real libLLVM> RIEMANN_CLIENT_GALLIUM=llvmpipe RIEMANN_SMALL=1 (64x36 benchmarks, short test filters;
-# RIEMANN_SMALL_TESTS=0: whole test binaries all the same).
+# RIEMANN_SMALL_TESTS=0: whole test binaries all the same). RIEMANN_ONLY=paths:
+# the OpenGL tests and the two GPU paths' benchmark, nothing else.
 set -u
 REPO=$(pwd)
 OUT=${OUT:-/tmp/riemann-out}
@@ -165,6 +166,22 @@ EOF
   export OPENIMAGEIO_OPTIONS=try_all_readers=0
   local data="$REPO/Data"
   local so="stdbuf -oL -eL"
+  # RIEMANN_ONLY=paths: issue 28's check alone. The whole OpenGL test binary
+  # (fragment against compute on every shipped scene: the compute path must
+  # draw the same pictures on this driver), then the two paths' benchmark
+  # with all the time left.
+  if [ "${RIEMANN_ONLY:-}" = paths ]; then
+    export RIEMANN_DATA_DIR="$data" RIEMANN_TEST_OUTPUT_DIR=/tmp/riemann-test-out
+    mkdir -p "$RIEMANN_TEST_OUTPUT_DIR"
+    (cd "$RIEMANN_TEST_OUTPUT_DIR" &&
+      step "RiemannRenderingOpenGLTests (whole)" 90 "$B/bin/RiemannRenderingOpenGLTests" \
+        --gtest_output=xml:"$OUT/gtest_opengl.xml" >>"$OUT/tests.log" 2>&1)
+    grep -E '^\[ *(FAILED|PASSED) *\]|^\[==========\]' "$OUT/tests.log"
+    grep -A6 'Failure' "$OUT/tests.log" | head -60
+    step "RiemannGpuPathsBenchmark ${W}x${H}" 600 \
+      $so "$B/bin/RiemannGpuPathsBenchmark" --width $W --height $H --repetitions 3 --data "$data"
+    return
+  fi
   # (2) issue 28's figures first: the fragment and the compute path side by
   # side at 1080p (ns per ray step, frames/s, the workgroup sizes)
   step "RiemannGpuPathsBenchmark ${W}x${H}" 180 \

@@ -97,5 +97,40 @@ TEST(SceneUniforms, EmptySceneHasNoObjects)
   EXPECT_FALSE(u.Truncated);
   EXPECT_EQ(u.ObjectType.size(), static_cast<std::size_t>(MaximumSceneUniformObjects));
 }
+TEST(SceneUniforms, TheBlockIsStd140ArraysOfVec4InTheShadersOrder)
+{
+  const Scene scene = ParseScene(R"({"objects": [
+    {"type": "sphere", "center": [1, 2, 3], "radius": 0.25,
+     "material": {"type": "checker", "color": [0.1, 0.2, 0.3], "color2": [0.4, 0.5, 0.6],
+                  "size": 0.75}},
+    {"type": "box", "min": [-1, -2, -3], "max": [4, 5, 6],
+     "material": {"type": "position", "bounds": [0, 1, 2, 3, 4, 5]}}]})");
+  const std::vector<float> block = SceneUniformBlock(PackSceneUniforms(scene));
+  // 8 arrays x 60 slots x 16 bytes: what the program reports as
+  // GL_UNIFORM_BLOCK_DATA_SIZE (SceneUniformBuffer checks it at every bind).
+  ASSERT_EQ(block.size(), static_cast<std::size_t>(SceneUniformBlockFloats));
+  EXPECT_EQ(block.size() * sizeof(float), 8u * MaximumSceneUniformObjects * 16u);
+  auto at = [&block](SceneBlockArray array, int slot, int component) {
+    return block[4 * (static_cast<int>(array) * MaximumSceneUniformObjects + slot) + component];
+  };
+  EXPECT_EQ(at(SceneBlockArray::Kind, 0, 0), static_cast<float>(ObjectType::Sphere));
+  EXPECT_EQ(at(SceneBlockArray::Kind, 0, 1), static_cast<float>(MaterialType::Checker));
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::Kind, 0, 2), 0.75f);
+  EXPECT_EQ(at(SceneBlockArray::Kind, 1, 0), static_cast<float>(ObjectType::Box));
+  EXPECT_EQ(at(SceneBlockArray::Kind, 1, 1), static_cast<float>(MaterialType::Position));
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::Kind, 5, 2), 1.0f) << "unused slots: size 1";
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::A, 0, 2), 3.0f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::P, 0, 0), 0.25f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::Color, 0, 1), 0.2f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::Color2, 0, 2), 0.6f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::A, 1, 1), -2.0f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::B, 1, 0), 4.0f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::Low, 1, 1), 2.0f);
+  EXPECT_FLOAT_EQ(at(SceneBlockArray::High, 1, 2), 5.0f);
+  for (int array = 0; array < static_cast<int>(SceneBlockArray::Count); ++array)
+  {
+    EXPECT_EQ(at(static_cast<SceneBlockArray>(array), 0, 3), 0.0f) << "w is padding, array " << array;
+  }
+}
 } // namespace
 } // namespace riemann

@@ -138,13 +138,7 @@ struct View
   /// (x, y, z, s) of the captured hit of a pixel.
   std::array<double, 4> Hit(int column, int row) const
   {
-    vtkFloatArray* hits = this->Pass->GetHitImage();
-    std::array<double, 4> hit;
-    for (int c = 0; c < 4; ++c)
-    {
-      hit[c] = hits->GetComponent(static_cast<vtkIdType>(row) * this->Width + column, c);
-    }
-    return hit;
+    return riemann::testing::HitOfPixel(this->Pass->GetHitImage(), this->Width, column, row);
   }
 };
 
