@@ -1,5 +1,7 @@
 #include "JobRunner.h"
 
+#include "RiemannVtkMessages.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -96,12 +98,13 @@ void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
     progress->SetClientData(&context);
     vtkNew<vtkCallbackCommand> errors;
     errors->SetClientData(job.get());
-    errors->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    errors->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
       auto* owner = static_cast<Job*>(clientData);
       std::lock_guard<std::mutex> lock(owner->ErrorLock);
       if (callData && owner->Errors.empty())
       {
-        owner->Errors = static_cast<const char*>(callData);
+        owner->Errors =
+          riemann::PlainVtkMessage(static_cast<const char*>(callData), caller->GetClassName());
       }
     });
     job->Algorithm->AddObserver(vtkCommand::ProgressEvent, progress);

@@ -5,6 +5,7 @@
 
 #include "CliUtilities.h"
 #include "Distributed.h"
+#include "Interrupts.h"
 
 #include <CLI/CLI.hpp>
 
@@ -45,6 +46,9 @@ namespace cli
 {
 int RunCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& registerCommands)
 {
+  // Before any other thread starts (they inherit the blocked signals):
+  // SIGINT and SIGTERM stop the command and remove its partial files.
+  InterruptHandling interrupts;
   // Before anything else: VTK's messages go to the CLI's output window, which
   // keeps them (and prints them plainly with --verbose), never to the terminal
   // as raw log lines.

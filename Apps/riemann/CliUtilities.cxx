@@ -1,5 +1,8 @@
 #include "CliUtilities.h"
 
+#include "Interrupts.h"
+#include "RiemannVtkMessages.h"
+
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPolyData.h"
@@ -14,6 +17,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <unistd.h>
@@ -243,10 +247,79 @@ vtkSmartPointer<vtkRiemannMetric> LoadMetric(const std::string& path)
   return metric;
 }
 
+namespace
+{
+/// The same file: the same inode where both exist, else the same normal absolute path.
+bool SamePath(const std::string& a, const std::string& b)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::exists(a, error) && fs::exists(b, error))
+  {
+    const bool same = fs::equivalent(a, b, error);
+    if (!error)
+    {
+      return same;
+    }
+  }
+  const fs::path left = fs::weakly_canonical(fs::absolute(a), error);
+  const fs::path right = fs::weakly_canonical(fs::absolute(b), error);
+  return left == right;
+}
+} // namespace
+
+void CheckFilePaths(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs)
+{
+  namespace fs = std::filesystem;
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+  {
+    const NamedPath& output = outputs[i];
+    if (output.Path.empty())
+    {
+      continue;
+    }
+    std::error_code error;
+    const fs::file_status status = fs::status(output.Path, error);
+    if (!error && fs::exists(status) && !fs::is_regular_file(status))
+    {
+      throw Failure(output.Option + " " + output.Path + ": " +
+          (fs::is_directory(status) ? "is a folder" : "is not a regular file (a device, FIFO or socket)") +
+          "; outputs are written whole, as a temporary file renamed over the name: give a file name",
+        2);
+    }
+    for (const NamedPath& input : inputs)
+    {
+      if (!input.Path.empty() && SamePath(input.Path, output.Path))
+      {
+        throw Failure(output.Option + " " + output.Path + ": is also the input " + input.Option +
+            "; writing it would replace the input: choose another output name",
+          2);
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j)
+    {
+      if (!outputs[j].Path.empty() && SamePath(outputs[j].Path, output.Path))
+      {
+        throw Failure(output.Option + " " + output.Path + ": is also " + outputs[j].Option +
+            "; one would replace the other: give each output its own name",
+          2);
+      }
+    }
+  }
+  for (const NamedPath& output : outputs)
+  {
+    if (!output.Path.empty())
+    {
+      InterruptHandling::AddOutput(output.Path);
+    }
+  }
+}
+
 void WriteAtomically(const std::string& path, const std::function<bool(const std::string&)>& write)
 {
-  // Same directory, so that rename() is atomic; the pid keeps concurrent runs apart.
-  const std::string temporary = path + ".partial-" + std::to_string(::getpid());
+  // Same directory, so that rename() is atomic; the pid keeps concurrent runs
+  // apart, and names the file for InterruptHandling.
+  const std::string temporary = path + ".partial-" + InterruptHandling::PartialTag();
   bool written = false;
   try
   {
@@ -306,6 +379,35 @@ void WritePolyDataAtomically(
     { return WritePolyDataFile(data, temporary, compress); });
 }
 
+void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options)
+{
+  const auto byDefault = [&options](const std::string& value)
+  { return options.SceneDefaults ? std::string(" (default: the scene's)") : " (default " + value + ")"; };
+  command
+    ->add_option("--integrator", *options.Integrator,
+      "euler, rk4 or dp45" + byDefault(*options.Integrator))
+    ->check(IntegratorName());
+  command
+    ->add_option("--step", *options.Step,
+      "Step in arc length; the first step of dp45" + byDefault(FormatNumber(*options.Step)))
+    ->check(FiniteNumber(1e-9, 1e6));
+  command
+    ->add_option(options.SceneDefaults ? "-l,--length,--max-length" : "-l,--length", *options.Length,
+      "Arc length of each " + options.Curve + " at most" + byDefault(FormatNumber(*options.Length)))
+    ->check(PositiveNumber(1e9));
+  command
+    ->add_option("--tolerance", *options.Tolerance,
+      (options.ToleranceHelp.empty() ? std::string("Per-step error tolerance of dp45")
+                                     : options.ToleranceHelp) +
+        byDefault(FormatNumber(*options.Tolerance)))
+    ->check(FiniteNumber(1e-15, 1.0));
+  command
+    ->add_option("--max-steps", *options.MaximumSteps,
+      "Steps of each " + options.Curve + " at most" +
+        byDefault(std::to_string(*options.MaximumSteps)))
+    ->check(WholeNumber(1, options.MostSteps));
+}
+
 IntegratorType ParseIntegratorOption(const std::string& name)
 {
   IntegratorType type;
@@ -318,18 +420,9 @@ IntegratorType ParseIntegratorOption(const std::string& name)
 
 void ErrorCollector::Execute(vtkObject* caller, unsigned long, void* data)
 {
-  std::string message = data ? static_cast<const char*>(data) : "unknown error";
-  // VTK prefixes "ERROR: In file, line N\nvtkClass (0x...): "; keep the last part.
-  const size_t separator = message.find("): ");
-  if (separator != std::string::npos)
-  {
-    message = message.substr(separator + 3);
-  }
-  while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
-  {
-    message.pop_back();
-  }
-  this->Messages.push_back((caller ? std::string(caller->GetClassName()) + ": " : "") + message);
+  const std::string message = data ? static_cast<const char*>(data) : "unknown error";
+  const std::string plain = PlainVtkMessage(message, caller ? caller->GetClassName() : nullptr);
+  this->Messages.push_back(plain.empty() ? message : plain);
 }
 
 void ErrorCollector::Observe(vtkObject* object)
@@ -355,27 +448,10 @@ vtkStandardNewMacro(CliOutputWindow);
 
 namespace
 {
-/// `text` without ANSI escape sequences (ESC [ ... letter) and trailing blanks.
-std::string Plain(std::string text)
+/// `text` without ANSI escape sequences and trailing blanks.
+std::string Plain(const std::string& text)
 {
-  std::string plain;
-  plain.reserve(text.size());
-  for (size_t i = 0; i < text.size(); ++i)
-  {
-    if (text[i] == '\033')
-    {
-      if (i + 1 < text.size() && text[i + 1] == '[')
-      {
-        i += 2;
-        while (i < text.size() && !std::isalpha(static_cast<unsigned char>(text[i])))
-        {
-          ++i;
-        }
-      }
-      continue;
-    }
-    plain += text[i];
-  }
+  std::string plain = WithoutAnsiEscapes(text);
   while (!plain.empty() && std::isspace(static_cast<unsigned char>(plain.back())))
   {
     plain.pop_back();

@@ -119,6 +119,23 @@ std::string Extension(const std::string& path);
 /// Load and validate a metric file; throws Failure with the parser's message.
 vtkSmartPointer<vtkRiemannMetric> LoadMetric(const std::string& path);
 
+/// A file named on the command line, with the option that named it ("-o", "--seeds").
+struct NamedPath
+{
+  std::string Option;
+  std::string Path;
+};
+
+/**
+ * Before any work, the files of a command (empty paths are left out): an
+ * output that is also an input or another output, or that names an existing
+ * thing other than a regular file (a device, a FIFO, a folder: writing
+ * whole files renames a temporary over it), is a usage error (Failure,
+ * status 2) that names both options. The outputs are then registered with
+ * InterruptHandling, which removes their partial files on SIGINT/SIGTERM.
+ */
+void CheckFilePaths(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
+
 /**
  * Write `path` whole or not at all: `write` fills a temporary file next to
  * it, which is renamed over `path` only if `write` returns true.
@@ -145,6 +162,34 @@ bool WritePolyDataFile(
 /// WritePolyDataFile through WriteAtomically: the file whole or not at all.
 void WritePolyDataAtomically(
   vtkPolyData* data, const std::string& path, const std::string& compress = "lz4");
+
+/**
+ * The integration options of every command that integrates (trace, expmap,
+ * conjugate, render), bound to the command's own values: one name, one
+ * range and one wording each, so that a setting is spelled and checked the
+ * same everywhere (TestCli.py checks each command's --help lists all five):
+ *   --integrator euler|rk4|dp45, --step (1e-9 to 1e6), -l/--length (above 0,
+ *   at most 1e9), --tolerance (1e-15 to 1), --max-steps (1 to MostSteps).
+ * The help says each default: the bound value, or "the scene's" where
+ * SceneDefaults (render: 0 and "" mean "not given"). `render` also accepts
+ * --max-length, the name --length had there before.
+ */
+struct IntegrationOptions
+{
+  std::string* Integrator = nullptr;
+  double* Step = nullptr;
+  double* Length = nullptr;
+  double* Tolerance = nullptr;
+  long long* MaximumSteps = nullptr;
+  /// What is integrated, for the help: "geodesic" or "ray".
+  std::string Curve = "geodesic";
+  bool SceneDefaults = false;
+  /// The largest --max-steps (render: the scene format's 1000000).
+  long long MostSteps = 1000000000;
+  /// --tolerance's help where it means more than dp45's per-step error (conjugate).
+  std::string ToleranceHelp;
+};
+void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options);
 
 /// "euler", "rk4" or "dp45"; throws Failure (status 2) naming --integrator.
 IntegratorType ParseIntegratorOption(const std::string& name);

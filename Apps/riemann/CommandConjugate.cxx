@@ -14,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannConjugateLocus.h"
+#include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
@@ -46,6 +47,7 @@ struct ConjugateArguments
   double Step = 0.01;
   double MaximumStep = 0.1;
   double Tolerance = 1e-8;
+  long long MaximumSteps = 100000;
   long long Count = 1;
   std::string Integrator = "dp45";
   std::string Compress = "lz4";
@@ -54,7 +56,8 @@ struct ConjugateArguments
   std::string Surface;
 };
 
-constexpr long long MaximumDirections = 10000000;
+/// The filters' own limit (more would be refused there, after the metric loaded).
+constexpr long long MaximumDirections = vtkRiemannDirectionGrid::MaximumNumberOfDirections;
 /// Sheets the summary tells apart (sheet indices are not bounded by --count:
 /// a point of multiplicity 2 starts two).
 constexpr long long MaximumCountedSheets = 1024;
@@ -122,6 +125,7 @@ std::string DescribeSheets(const std::vector<long long>& counts)
 
 void RunConjugate(const ConjugateArguments& args)
 {
+  CheckFilePaths({ { "-m", args.Metric } }, { { "-o", args.Output }, { "--surface", args.Surface } });
   const std::string extension = Extension(args.Output);
   if (extension != "vtp" && extension != "csv" && extension != "pvtp")
   {
@@ -172,6 +176,7 @@ void RunConjugate(const ConjugateArguments& args)
   locus->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
   locus->GetIntegrationSettings()->SetMaximumIntegrationStep(args.MaximumStep);
   locus->SetTolerance(args.Tolerance);
+  locus->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
   locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
   vtkNew<ProgressBar> progress;
   progress->Observe(locus, "riemann conjugate", ProgressBar::StderrIsTerminal());
@@ -243,27 +248,18 @@ void RegisterConjugateCommand(CLI::App& app)
     ->add_option("--cone-angle", args->ConeAngle,
       "Half-angle of the cone of directions in degrees (default 180: every direction)")
     ->check(FiniteNumber(0.0, 180.0));
-  command->add_option("--length,-l", args->Length, "Arc length searched (default 10)")
-    ->check(PositiveNumber());
-  command
-    ->add_option(
-      "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
-    ->check(PositiveNumber());
   command
     ->add_option("--max-step", args->MaximumStep,
       "Largest step of dp45 in arc length (default 0.1). Conjugate points are counted, not "
       "searched for between steps, so no step can jump over one whatever its length")
     ->check(PositiveNumber());
-  command
-    ->add_option("--integrator", args->Integrator,
-      "Integrator of the Jacobi fields: euler, rk4 or dp45 (default; its tolerance follows "
-      "--tolerance: tolerance / 100). With euler and rk4 the step decides the accuracy")
-    ->check(IntegratorName());
-  command
-    ->add_option("--tolerance", args->Tolerance,
-      "Accuracy of the conjugate points in arc length, and their resolution: two closer than "
-      "this are one point of multiplicity 2 (default 1e-8)")
-    ->check(FiniteNumber(1e-15, 1.0));
+  IntegrationOptions integration{ &args->Integrator, &args->Step, &args->Length, &args->Tolerance,
+    &args->MaximumSteps };
+  integration.ToleranceHelp =
+    "Accuracy of the conjugate points in arc length, and their resolution: two closer than this "
+    "are one point of multiplicity 2; dp45 integrates the Jacobi fields to tolerance / 100 (with "
+    "euler and rk4 the step decides the accuracy)";
+  AddIntegrationOptions(command, integration);
   command
     ->add_option("--count,-k", args->Count,
       "Conjugate points kept per direction, first ones first (default 1)")

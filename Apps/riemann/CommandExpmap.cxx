@@ -38,6 +38,7 @@ struct ExpmapArguments
   std::string Integrator = "rk4";
   double Step = 0.01;
   double Tolerance = 1e-8;
+  long long MaximumSteps = 100000;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;
@@ -79,6 +80,8 @@ std::string CheckRadii(const std::string& text, std::vector<double>& radii)
 
 void RunExpmap(const ExpmapArguments& args)
 {
+  CheckFilePaths(
+    { { "-m", args.Metric } }, { { "-o", args.Output }, { "--wavefronts", args.Wavefronts } });
   if (Extension(args.Output) != "vtp" && Extension(args.Output) != "pvtp")
   {
     throw Failure("-o " + args.Output + ": the ray bundle must be a .vtp or .pvtp file", 2);
@@ -147,6 +150,7 @@ void RunExpmap(const ExpmapArguments& args)
   expmap->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
   expmap->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
   expmap->GetIntegrationSettings()->SetMaximumError(args.Tolerance);
+  expmap->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
   for (double r : radii)
   {
     expmap->AddRadius(r);
@@ -208,8 +212,6 @@ void RegisterExpmapCommand(CLI::App& app)
     ->add_option("--cone-angle", args->ConeAngle,
       "Half-angle of the cone of directions in degrees (default 180: every direction)")
     ->check(FiniteNumber(0.0, 180.0));
-  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 5)")
-    ->check(PositiveNumber());
   command->add_option("--radii", args->Radii, "Radii R1,R2,... of the wavefronts")
     ->check(Checked(
       [](const std::string& text)
@@ -218,14 +220,8 @@ void RegisterExpmapCommand(CLI::App& app)
         return CheckRadii(text, radii);
       },
       "R1,R2,..."));
-  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
-    ->check(IntegratorName());
-  command
-    ->add_option(
-      "--step", args->Step, "Step in arc length (default 0.01; the initial step for dp45)")
-    ->check(PositiveNumber());
-  command->add_option("--tolerance", args->Tolerance, "Per-step tolerance of dp45 (default 1e-8)")
-    ->check(FiniteNumber(1e-15, 1.0));
+  AddIntegrationOptions(command,
+    { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command

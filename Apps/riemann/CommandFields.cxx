@@ -169,6 +169,7 @@ bool WriteCsv(vtkImageData* image, const std::string& path)
 
 void RunFields(const FieldsArguments& args)
 {
+  CheckFilePaths({ { "-m", args.Metric } }, { { "-o", args.Output } });
   const std::string extension = Extension(args.Output);
   if (extension != "vti" && extension != "csv" && extension != "pvti")
   {

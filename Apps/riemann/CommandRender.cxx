@@ -77,8 +77,9 @@ struct RenderArguments
   bool Equirectangular = false;
   std::string Integrator;
   double Step = 0.0;
-  int MaximumSteps = 0;
+  long long MaximumSteps = 0;
   double MaximumLength = 0.0;
+  double Tolerance = 0.0;
   int Frames = 1;
   int Samples = 1;
   bool HitError = false;
@@ -439,6 +440,17 @@ void CheckRenderOptions(const RenderArguments& args)
   {
     throw Failure("--reference compares one picture: it cannot be used with --frames", 2);
   }
+  // Before any work: 16384 x 16384 once failed only after the whole render.
+  const double pixels = static_cast<double>(args.Width) * args.Height;
+  if (pixels > vtkRiemannCPURayTracer::MaximumNumberOfPixels)
+  {
+    throw Failure("--width " + std::to_string(args.Width) + " --height " +
+        std::to_string(args.Height) + ": " + FormatNumber(pixels / 1e6) +
+        " million pixels; a picture has at most " +
+        FormatNumber(vtkRiemannCPURayTracer::MaximumNumberOfPixels / 1e6) +
+        " million (8192 x 8192)",
+      2);
+  }
 }
 
 /// The scene (its file read once), and the metric: --metric, else the
@@ -469,17 +481,17 @@ vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
 /// The scene's integration, with what the options give in its place.
 void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetup& rays)
 {
-  const bool overrides =
-    !args.Integrator.empty() || args.Step > 0 || args.MaximumSteps > 0 || args.MaximumLength > 0;
+  const bool overrides = !args.Integrator.empty() || args.Step > 0 || args.MaximumSteps > 0 ||
+    args.MaximumLength > 0 || args.Tolerance > 0;
   vtkRiemannIntegrationSettings* settings = rays.Settings;
   settings->SetIntegratorType(static_cast<int>(
     args.Integrator.empty() ? scene.Rays.Integrator : ParseIntegratorOption(args.Integrator)));
   settings->SetInitialIntegrationStep(args.Step > 0 ? args.Step : scene.Rays.Step);
   settings->SetMaximumNumberOfSteps(
-    args.MaximumSteps > 0 ? args.MaximumSteps : scene.Rays.MaximumSteps);
+    args.MaximumSteps > 0 ? static_cast<vtkIdType>(args.MaximumSteps) : scene.Rays.MaximumSteps);
   settings->SetMaximumPropagation(
     args.MaximumLength > 0 ? args.MaximumLength : scene.Rays.MaximumLength);
-  settings->SetMaximumError(scene.Rays.Tolerance);
+  settings->SetMaximumError(args.Tolerance > 0 ? args.Tolerance : scene.Rays.Tolerance);
   rays.UseSceneSettings = !overrides && !args.Equirectangular;
   rays.Projection = args.Equirectangular ||
       (scene.HasCamera && scene.Camera.Mode == riemann::Projection::Equirectangular)
@@ -679,15 +691,25 @@ private:
   vtkNew<ProgressBar> Progress;
 };
 
-/// Compares the picture with --reference; throws (exit 3) when it differs.
-void CompareWithReference(const Image& picture, const RenderArguments& args)
+/// The --reference picture, read before any work: one that cannot be read
+/// is an error before the output is written (usage, status 2).
+Image ReadReference(const RenderArguments& args)
 {
   Image reference;
-  const std::string readError = ReadImage(args.Reference, reference);
-  if (!readError.empty())
+  if (!args.Reference.empty())
   {
-    throw Failure(readError);
+    const std::string readError = ReadImage(args.Reference, reference);
+    if (!readError.empty())
+    {
+      throw Failure("--reference: " + readError, 2);
+    }
   }
+  return reference;
+}
+
+/// Compares the picture with the reference; throws (exit 3) when it differs.
+void CompareWithReference(const Image& picture, const Image& reference, const RenderArguments& args)
+{
   const double difference = ImageDifference(picture, reference);
   if (difference < 0)
   {
@@ -709,6 +731,9 @@ void CompareWithReference(const Image& picture, const RenderArguments& args)
 void RunRender(const RenderArguments& args)
 {
   CheckRenderOptions(args);
+  CheckFilePaths({ { "-m", args.Metric }, { "-s", args.Scene }, { "--reference", args.Reference } },
+    { { "-o", args.Output }, { "--hit-error-image", args.HitErrorImage } });
+  const Image reference = ReadReference(args);
   vtkNew<vtkRiemannScene> scene;
   const vtkSmartPointer<vtkRiemannMetric> metric = LoadSceneAndMetric(args, scene);
   RaySetup rays;
@@ -757,7 +782,7 @@ void RunRender(const RenderArguments& args)
     }
     if (!args.Reference.empty())
     {
-      CompareWithReference(picture, args);
+      CompareWithReference(picture, reference, args);
     }
   }
 }
@@ -814,17 +839,12 @@ void RegisterRenderCommand(CLI::App& app)
       "scene's)")
     ->check(PositiveNumber(179.0));
   command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
-  command->add_option("--integrator", args->Integrator, "euler, rk4 or dp45 (default: the scene's)")
-    ->check(IntegratorName());
-  command->add_option("--step", args->Step, "Step in arc length (default: the scene's)")
-    ->check(FiniteNumber(1e-6, 100.0));
-  command
-    ->add_option("--max-steps", args->MaximumSteps, "Steps per ray at most (default: the scene's)")
-    ->check(WholeNumber(1, 1000000));
-  command
-    ->add_option(
-      "--max-length", args->MaximumLength, "Arc length per ray at most (default: the scene's)")
-    ->check(FiniteNumber(1e-6, 1e6));
+  IntegrationOptions integration{ &args->Integrator, &args->Step, &args->MaximumLength,
+    &args->Tolerance, &args->MaximumSteps };
+  integration.Curve = "ray";
+  integration.SceneDefaults = true;
+  integration.MostSteps = 1000000; // the scene format's limit (the GPU loops over them per pixel)
+  AddIntegrationOptions(command, integration);
   command
     ->add_option("--frames", args->Frames,
       "Animate the metric's time t from 0 to 1 over N frames, written as OUT_0000.png, ...")

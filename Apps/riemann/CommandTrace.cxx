@@ -5,6 +5,7 @@
 #include "CsvWriter.h"
 #include "Distributed.h"
 #include "GeodesicTrace.h"
+#include "InputFiles.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -61,6 +62,13 @@ struct TraceArguments
 /// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
 vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
 {
+  // A regular file of at most 1 GiB (some 20 million seeds): a FIFO would
+  // block, a device read without end.
+  const std::string notAFile = InputFileProblem(path, "the seeds file", std::uint64_t(1) << 30);
+  if (!notAFile.empty())
+  {
+    throw Failure(notAFile);
+  }
   std::ifstream file(path);
   if (!file)
   {
@@ -202,8 +210,36 @@ bool WriteCsv(vtkPolyData* lines, const std::string& path)
   return csv.Finish();
 }
 
+/// The most points a trace writes (about 10 GB as .vtp with its arrays, more as CSV).
+constexpr double MaximumOutputPoints = 2e8;
+
+/**
+ * Refuse (usage, status 2) a run whose geodesics could hold more than
+ * MaximumOutputPoints: per geodesic min(--max-steps, --length / --step) + 1
+ * points (dp45 may shrink its step below --step, still within --max-steps).
+ * `--max-steps 1e9 --step 1e-9 --length 1e9` once wrote 80 MB/s until the
+ * disk was full.
+ */
+void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds)
+{
+  const double stepsPerGeodesic =
+    std::min(static_cast<double>(args.MaximumSteps), std::ceil(args.Length / args.Step));
+  const double ways = args.Propagation == "both" ? 2.0 : 1.0;
+  const double points = static_cast<double>(numberOfSeeds) * ways * (stepsPerGeodesic + 1.0);
+  if (points > MaximumOutputPoints)
+  {
+    std::ostringstream message;
+    message << numberOfSeeds << " seed(s) x " << (ways > 1 ? "2 ways x " : "") << stepsPerGeodesic
+            << " steps (min of --max-steps and --length / --step): up to " << points
+            << " points, more than the " << MaximumOutputPoints
+            << " a trace writes; lower --max-steps or --length, or raise --step";
+    throw Failure(message.str(), 2);
+  }
+}
+
 void RunTrace(const TraceArguments& args)
 {
+  CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile } }, { { "-o", args.Output } });
   const std::string extension = Extension(args.Output);
   if (extension != "vtp" && extension != "csv" && extension != "pvtp")
   {
@@ -228,11 +264,15 @@ void RunTrace(const TraceArguments& args)
   settings->SetMaximumPropagation(args.Length);
   settings->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
+  vtkIdType numberOfSeeds = 1;
   if (!args.SeedsFile.empty())
   {
-    tracer->SetInputData(ReadSeeds(args.SeedsFile));
+    vtkSmartPointer<vtkPolyData> seeds = ReadSeeds(args.SeedsFile);
+    numberOfSeeds = seeds->GetNumberOfPoints();
+    tracer->SetInputData(seeds);
   }
-  else
+  CheckOutputSize(args, numberOfSeeds);
+  if (args.SeedsFile.empty())
   {
     double seed[3], direction[3];
     // Checked while parsing (Point3, Direction3); parsed here.
@@ -314,21 +354,10 @@ void RegisterTraceCommand(CLI::App& app)
     ->check(CLI::ExistingFile)
     ->excludes(command->get_option("--seed"))
     ->excludes(command->get_option("--direction"));
-  command->add_option("--length,-l", args->Length, "Arc length of each geodesic (default 10)")
-    ->check(PositiveNumber(1e9));
-  command->add_option("--integrator", args->Integrator, "euler, rk4 (default) or dp45")
-    ->check(IntegratorName());
+  AddIntegrationOptions(command,
+    { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
   command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
     ->check(CLI::IsMember({ "forward", "backward", "both" }));
-  command
-    ->add_option("--step", args->Step, "Step in arc length (initial step for dp45; default 0.01)")
-    ->check(FiniteNumber(1e-9, 1e6));
-  command
-    ->add_option("--tolerance", args->Tolerance, "Per-step error tolerance of dp45 (default 1e-8)")
-    ->check(FiniteNumber(1e-15, 1.0));
-  command
-    ->add_option("--max-steps", args->MaximumSteps, "Steps per geodesic at most (default 100000)")
-    ->check(WholeNumber(1, 1000000000));
   command->add_flag("--transverse-jacobian", args->TransverseJacobian,
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");

@@ -26,9 +26,14 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 namespace riemann
 {
@@ -87,6 +92,36 @@ bool IsPieceFileOf(const std::string& name, const std::string& base)
 
 /// Replace folder `target` (if it exists, it must hold only piece files of
 /// `base`: another folder of that name is the user's) by `source`.
+/// An exclusive flock() on a folder while this lives (released by close;
+/// nothing is created). Without a lock (a file system that has none) the
+/// step goes on unlocked, as before.
+class FolderLock
+{
+public:
+  explicit FolderLock(const std::string& folder)
+    : Descriptor(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC))
+  {
+    if (this->Descriptor >= 0)
+    {
+      while (::flock(this->Descriptor, LOCK_EX) != 0 && errno == EINTR)
+      {
+      }
+    }
+  }
+  ~FolderLock()
+  {
+    if (this->Descriptor >= 0)
+    {
+      ::close(this->Descriptor); // releases the lock
+    }
+  }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+  int Descriptor;
+};
+
 bool ReplacePieceFolder(const std::string& source, const std::string& target,
   const std::string& base, std::string& problem)
 {
@@ -568,7 +603,14 @@ void WritePieces(
   const std::string directory = folder.empty() ? std::string(".") : folder;
   const std::string name = vtksys::SystemTools::GetFilenameName(path);
   const std::string base = vtksys::SystemTools::GetFilenameWithoutLastExtension(path);
-  const std::string staging = directory + "/." + name + ".partial";
+  // The staging folder is this job's own (rank 0's process id, which every
+  // rank learns): two jobs writing one name once mixed their pieces in a
+  // shared ".name.partial", and InterruptHandling removes it by that tag.
+  const long long jobTag =
+    SumOverRanks(std::vector<long long>{ Rank() == 0 ? static_cast<long long>(::getpid()) : 0 })
+      .front();
+  const std::string staging =
+    directory + "/." + name + ".partial-" + std::to_string(jobTag);
   if (Rank() == 0)
   {
     vtksys::SystemTools::RemoveADirectory(staging);
@@ -614,6 +656,11 @@ void WritePieces(
 
   if (Rank() == 0)
   {
+    // The pieces' folder and the summary are two renames: another job
+    // writing the same name must not come between them (its summary would
+    // list these pieces, or this one its pieces). An exclusive lock on the
+    // output's folder makes the pair one step for every riemann job.
+    const FolderLock lock(directory);
     std::string problem;
     const bool moved =
       ReplacePieceFolder(staging + "/" + base, directory + "/" + base, base, problem) &&

@@ -1,10 +1,18 @@
 #include "RiemannTensorFileChecks.h"
 
+#include "InputFiles.h"
+
 #include "vtkAbstractArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkType.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
+#include "vtkXMLImageDataReader.h"
 #include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
 
-
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -66,21 +74,31 @@ int NiftiBytesPerValue(int datatype)
   return found == sizes.end() ? 0 : found->second;
 }
 
-/// A regular file that exists (not a device, a FIFO or a folder).
-std::string RegularFileProblem(const fs::path& path, const std::string& what)
+/// `text` is exactly `count` finite numbers separated by white space.
+bool FiniteNumbers(const std::string& text, int count)
 {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (error || !fs::exists(status))
+  std::istringstream words(text);
+  std::string word;
+  int found = 0;
+  while (words >> word)
   {
-    return what + " " + path.string() + " does not exist";
+    char* stop = nullptr;
+    const double value = std::strtod(word.c_str(), &stop);
+    if (*stop != '\0' || !std::isfinite(value))
+    {
+      return false;
+    }
+    ++found;
   }
-  if (!fs::is_regular_file(status))
-  {
-    return what + " " + path.string() + " is not a regular file (a device, FIFO or folder)";
-  }
-  return std::string();
+  return found == count;
 }
+
+/// A file's text in a message: at most 80 characters.
+std::string Shortened(const std::string& text)
+{
+  return text.size() <= 80 ? text : text.substr(0, 77) + "...";
+}
+
 } // namespace
 
 int NrrdVtkType(const std::string& type)
@@ -198,7 +216,7 @@ std::string CheckNiftiFile(const std::string& path)
   if (EndsWith(lower, ".hdr"))
   {
     dataFile.replace_extension(".img");
-    const std::string problem = RegularFileProblem(dataFile, "the image file");
+    const std::string problem = InputFileProblem(dataFile.string(), "the image file");
     if (!problem.empty())
     {
       return problem;
@@ -337,7 +355,7 @@ std::string CheckNrrdFile(const std::string& path)
     }
     dataFile = fs::path(name).is_absolute() ? fs::path(name) : fs::path(path).parent_path() / name;
     offset = 0;
-    const std::string problem = RegularFileProblem(dataFile, "the data file");
+    const std::string problem = InputFileProblem(dataFile.string(), "the data file");
     if (!problem.empty())
     {
       return problem;
@@ -355,6 +373,87 @@ std::string CheckNrrdFile(const std::string& path)
               " after its header") +
         " (cut short?)";
     }
+  }
+  return std::string();
+}
+
+std::string CheckVtiFile(const std::string& path)
+{
+  const std::string notRegular = InputFileProblem(path, "the tensor file");
+  if (!notRegular.empty())
+  {
+    return notRegular;
+  }
+  // Step 1: the header alone (the XML up to the data; no array is read).
+  vtkNew<vtkXMLImageDataReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return "not a VTK XML image file";
+  }
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    return "its header has no WholeExtent";
+  }
+  std::array<int, 6> extent{};
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent.data());
+  // VTK reads "nan" or "x" in a geometry attribute as nothing and keeps its
+  // default: the attributes' own text must be finite numbers.
+  vtkXMLDataParser* parser = reader->GetXMLParser();
+  vtkXMLDataElement* image = parser && parser->GetRootElement()
+    ? parser->GetRootElement()->FindNestedElementWithName("ImageData")
+    : nullptr;
+  for (const auto& [name, count] : { std::pair<const char*, int>{ "Spacing", 3 },
+         { "Origin", 3 }, { "Direction", 9 } })
+  {
+    const char* text = image ? image->GetAttribute(name) : nullptr;
+    if (text && !FiniteNumbers(text, count))
+    {
+      return std::string("its ") + name + " \"" + Shortened(text) + "\" is not " +
+        std::to_string(count) + " finite numbers";
+    }
+  }
+
+  // Step 2: the points it declares, and the bytes they take at the least.
+  std::uint64_t points = 1;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const std::int64_t count =
+      static_cast<std::int64_t>(extent[2 * axis + 1]) - extent[2 * axis] + 1;
+    if (count < 1)
+    {
+      return "its WholeExtent is empty or reversed on axis " + std::to_string(axis) + " (" +
+        std::to_string(extent[2 * axis]) + " to " + std::to_string(extent[2 * axis + 1]) + ")";
+    }
+    points *= static_cast<std::uint64_t>(count); // each count < 2^32: no overflow before the check
+    if (points > MaximumTensorFileBytes)
+    {
+      break;
+    }
+  }
+  constexpr std::uint64_t leastBytesPerPoint = 6 * sizeof(float);
+  if (points > MaximumTensorFileBytes / leastBytesPerPoint)
+  {
+    std::ostringstream extentText;
+    extentText << extent[0] << " " << extent[1] << " " << extent[2] << " " << extent[3] << " "
+               << extent[4] << " " << extent[5];
+    return "its WholeExtent (" + extentText.str() + ") declares more than " +
+      GiB(MaximumTensorFileBytes) + " of tensors; tensor volumes are read up to that";
+  }
+  // Step 3: uncompressed data must be in the file. (Compressed data may be
+  // smaller; its blocks are checked by VTK's reader as it inflates them.)
+  std::error_code error;
+  const std::uint64_t fileBytes = fs::file_size(path, error);
+  const std::string header = FirstBytes(path, 4096);
+  const bool compressed = header.find("compressor=") != std::string::npos;
+  if (!error && !compressed && points * leastBytesPerPoint > fileBytes &&
+    header.find("format=\"ascii\"") == std::string::npos)
+  {
+    return "its WholeExtent declares " + std::to_string(points) + " points (" +
+      GiB(points * leastBytesPerPoint) + " of tensors at the least) but the file has " +
+      std::to_string(fileBytes) + " bytes";
   }
   return std::string();
 }

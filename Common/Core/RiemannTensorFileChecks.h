@@ -15,6 +15,7 @@
 
 #include "RiemannCommonCoreModule.h" // For export macro (tested on their own)
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -52,6 +53,16 @@ NrrdHeader ReadNrrdHeader(const std::string& path);
 /// "" when the NRRD file (.nrrd, or a detached .nhdr) at `path` can be given to vtkNrrdReader,
 /// else why not.
 RIEMANNCOMMONCORE_EXPORT std::string CheckNrrdFile(const std::string& path);
+
+/**
+ * "" when the VTK XML image file (.vti) at `path` may be read whole, else
+ * why not: its header is read (vtkXMLImageDataReader::UpdateInformation,
+ * no data) and its whole extent must be ordered, at most
+ * MaximumTensorFileBytes of 6 floats a point, and, where it is stored
+ * raw, no larger than the file. VTK 9.1's reader trusts the extent: a
+ * WholeExtent of 2^31 points an axis made it write past its arrays.
+ */
+RIEMANNCOMMONCORE_EXPORT std::string CheckVtiFile(const std::string& path);
 } // namespace riemann
 
 #endif

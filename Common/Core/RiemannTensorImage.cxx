@@ -1,6 +1,9 @@
 #include "RiemannTensorImage.h"
 
 #include "RiemannMedicalTensorImages.h"
+#include "RiemannTensorFileChecks.h"
+
+#include "InputFiles.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -159,9 +162,11 @@ SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& ar
 SampledTensorGrid ReadTensorGridFile(
   const std::string& path, const std::string& arrayName, SampledTensorFrame frame)
 {
-  if (!vtksys::SystemTools::FileExists(path, true))
+  // A regular file first: a FIFO would block the readers, a device feed them forever.
+  const std::string notAFile = InputFileProblem(path, "the tensor file");
+  if (!notAFile.empty())
   {
-    throw std::runtime_error(path + ": no such file");
+    throw std::runtime_error(notAFile);
   }
   const std::string lower = vtksys::SystemTools::LowerCase(path);
   const auto endsWith = [&lower](const std::string& end)
@@ -202,11 +207,12 @@ SampledTensorGrid ReadTensorGridFile(
   }
   else if (extension == ".vti")
   {
-    vtkNew<vtkXMLImageDataReader> reader;
-    if (!reader->CanReadFile(path.c_str()))
+    const std::string problem = CheckVtiFile(path);
+    if (!problem.empty())
     {
-      throw std::runtime_error(path + ": not a VTK XML image file");
+      throw std::runtime_error(path + ": " + problem);
     }
+    vtkNew<vtkXMLImageDataReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();
     image = reader->GetOutput();

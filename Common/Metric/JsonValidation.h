@@ -21,6 +21,27 @@ namespace json
 {
 using Json = nlohmann::json;
 
+/// A user's text quoted in a message: at most 60 characters (a 2 MB key
+/// was once quoted whole), the length said when cut.
+inline std::string Quoted(const std::string& text)
+{
+  constexpr std::size_t most = 60;
+  if (text.size() <= most)
+  {
+    return "\"" + text + "\"";
+  }
+  return "\"" + text.substr(0, most) + "...\" (" + std::to_string(text.size()) + " characters)";
+}
+
+/// A parser's exception text without nlohmann's "[json.exception.parse_error.101] ".
+inline std::string WithoutExceptionId(const std::string& message)
+{
+  const std::size_t bracket = message.find("] ");
+  return message.compare(0, 16, "[json.exception.") == 0 && bracket != std::string::npos
+    ? message.substr(bracket + 2)
+    : message;
+}
+
 /// "the string \"x\"", "an array of 2", "an object", ... for messages.
 inline std::string Describe(const Json& value)
 {
@@ -31,7 +52,7 @@ inline std::string Describe(const Json& value)
     case Json::value_t::boolean:
       return "a boolean";
     case Json::value_t::string:
-      return "the string \"" + value.get<std::string>() + "\"";
+      return "the string " + Quoted(value.get<std::string>());
     case Json::value_t::array:
       return "an array of " + std::to_string(value.size());
     case Json::value_t::object:
@@ -81,7 +102,7 @@ void CheckKeys(
         expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
       }
       Fail<Error>(path,
-        "unknown key \"" + key + "\"; expected one of " + expected + ", \"name\", \"description\"");
+        "unknown key " + Quoted(key) + "; expected one of " + expected + ", \"name\", \"description\"");
     }
   }
 }

@@ -10,6 +10,7 @@
 #include "ExpressionFields.h"
 #include "GaussianField.h"
 #include "GraphMetric.h"
+#include "InputFiles.h"
 #include "MapComposition.h"
 #include "QuadraticField.h"
 #include "ScalarFieldSum.h"
@@ -51,7 +52,7 @@ const Json& Required(const Json& object, const char* key, const std::string& pat
 /// Guards against absurd inputs (a definition is typed by a person).
 constexpr size_t MaximumTerms = 4096;
 constexpr size_t MaximumCompositionDepth = 64;
-constexpr std::streamoff MaximumFileSize = 64 << 20;
+constexpr std::uint64_t MaximumFileSize = 64 << 20;
 
 /**
  * The time t in [0, 1] at which animated numbers are evaluated. A definition
@@ -691,15 +692,8 @@ std::shared_ptr<const Metric> ParseMetricDefinition(
   }
   catch (const Json::exception& e)
   {
-    // Syntax errors and number overflows. Drop nlohmann's
-    // "[json.exception.parse_error.101] " prefix; keep line and column.
-    std::string message = e.what();
-    const size_t bracket = message.find("] ");
-    if (bracket != std::string::npos)
-    {
-      message = message.substr(bracket + 2);
-    }
-    throw MetricDefinitionError("invalid JSON: " + message);
+    // Syntax errors and number overflows; line and column kept.
+    throw MetricDefinitionError("invalid JSON: " + json::WithoutExceptionId(e.what()));
   }
   std::shared_ptr<const Metric> metric = Build(root);
   const std::string why = ParseHasExpressions ? std::string() : metric->Validate();
@@ -712,19 +706,14 @@ std::shared_ptr<const Metric> ParseMetricDefinition(
 
 std::string ReadMetricDefinitionFile(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file)
+  try
   {
-    throw MetricDefinitionError(path + ": cannot open the metric file");
+    return ReadInputFile(path, "the metric file", MaximumFileSize);
   }
-  if (file.tellg() > MaximumFileSize)
+  catch (const std::runtime_error& e)
   {
-    throw MetricDefinitionError(path + ": file too large for a metric definition");
+    throw MetricDefinitionError(e.what());
   }
-  file.seekg(0);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path, double time)

@@ -162,6 +162,15 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
   double coneAngle, vtkPolyData* grid, std::string& message)
 {
   grid->Initialize();
+  if (numberOfDirections > MaximumNumberOfDirections)
+  {
+    // 2^31 - 1 directions once made the grid's vectors throw bad_alloc
+    // (uncaught: the process aborted).
+    message = "NumberOfDirections: " + std::to_string(numberOfDirections) +
+      " directions; at most " + std::to_string(MaximumNumberOfDirections) +
+      " are traced (each is a geodesic)";
+    return false;
+  }
   const bool wholeSphere = coneAngle >= 180.0;
   Vector axis = { 0.0, 0.0, 1.0 };
   if (!wholeSphere)
@@ -169,7 +178,7 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
     const double norm = vtkMath::Norm(axisIn);
     if (!(norm > 0.0) || !std::isfinite(norm))
     {
-      message = "the cone axis must be a finite nonzero vector";
+      message = "ConeAxis: the cone axis must be a finite nonzero vector";
       return false;
     }
     axis = { axisIn[0] / norm, axisIn[1] / norm, axisIn[2] / norm };
@@ -229,7 +238,7 @@ int vtkRiemannDirectionGrid::RequestData(
   if (!Build(this->NumberOfDirections, this->ConeAxis, this->ConeAngle, output, message))
   {
     output->Initialize();
-    vtkErrorMacro(<< "ConeAxis: " << message << ".");
+    vtkErrorMacro(<< message << ".");
   }
   return 1;
 }

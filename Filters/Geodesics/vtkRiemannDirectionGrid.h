@@ -41,8 +41,12 @@ public:
   vtkTypeMacro(vtkRiemannDirectionGrid, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// The most directions a grid has (`riemann --directions` has the same
+  /// limit); more are refused with an error and an empty output.
+  static constexpr int MaximumNumberOfDirections = 10000000;
+
   ///@{
-  /// Number of directions. Default 100.
+  /// Number of directions. Default 100; at most MaximumNumberOfDirections.
   vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfDirections, int);
   ///@}
@@ -58,7 +62,7 @@ public:
 
   /**
    * The grid's directions and triangles for these settings, or false with a
-   * message (a zero or non-finite axis). `grid` receives the points (unit
+   * message (a zero or non-finite axis, more than MaximumNumberOfDirections). `grid` receives the points (unit
    * directions), the triangles and DirectionId. Used by the filters that
    * shoot geodesics over the grid.
    */

@@ -69,7 +69,7 @@ bool vtkRiemannGeodesicAlgorithm::BuildDirectionGrid(
   std::string message;
   if (!vtkRiemannDirectionGrid::Build(numberOfDirections, coneAxis, coneAngle, grid, message))
   {
-    this->ReportError("ConeAxis: " + message + ".");
+    this->ReportError(message + ".");
     return false;
   }
   return true;

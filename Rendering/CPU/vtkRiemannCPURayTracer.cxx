@@ -167,7 +167,8 @@ int vtkRiemannCPURayTracer::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
-  const int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
+  // Sides out of range are refused in RequestData; here they only must not overflow.
+  const int extent[6] = { 0, std::max(this->Width, 0) - 1, 0, std::max(this->Height, 0) - 1, 0, 0 };
   info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   const double spacing[3] = { 1, 1, 1 };
   const double origin[3] = { 0, 0, 0 };
@@ -212,7 +213,7 @@ int vtkRiemannCPURayTracer::RequestData(
   }
   // The requested part of the image (all of it without a piece request).
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
+  int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 }; // sides checked above
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
   {
     int requested[6];
@@ -286,6 +287,12 @@ std::shared_ptr<riemann::Scene> vtkRiemannCPURayTracer::MakeScene()
 //------------------------------------------------------------------------------
 bool vtkRiemannCPURayTracer::CheckImageSize()
 {
+  if (this->Width < 1 || this->Width > 65536 || this->Height < 1 || this->Height > 65536)
+  {
+    vtkErrorMacro(<< "The image is " << this->Width << " x " << this->Height
+                  << " pixels; each side must be 1 to 65536.");
+    return false;
+  }
   // About 90 bytes per pixel are held at once (the tracer's results and the
   // output arrays): refuse what would exhaust memory rather than crash.
   const double pixels = static_cast<double>(this->Width) * this->Height;

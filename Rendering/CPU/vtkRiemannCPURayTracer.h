@@ -142,10 +142,12 @@ public:
   static constexpr double MaximumNumberOfPixels = 67108864.0;
 
   ///@{
-  /// Image size in pixels (default 640 x 480).
-  vtkSetClampMacro(Width, int, 1, 65536);
+  /// Image size in pixels (default 640 x 480). Each side 1 to 65536 and
+  /// the whole at most MaximumNumberOfPixels: other values are kept and
+  /// refused with an error when the filter runs (not clamped in silence).
+  vtkSetMacro(Width, int);
   vtkGetMacro(Width, int);
-  vtkSetClampMacro(Height, int, 1, 65536);
+  vtkSetMacro(Height, int);
   vtkGetMacro(Height, int);
   ///@}
 

@@ -29,8 +29,10 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -221,6 +223,10 @@ int vtkRiemannRayBundle::RequestData(
     }
   }
 
+  if (!this->CheckSizes(rays))
+  {
+    return 1;
+  }
   std::vector<Pixel> pixels;
   this->SelectPixels(pixels);
   // This piece's share of the pixels (all of them without a piece request).
@@ -234,6 +240,47 @@ int vtkRiemannRayBundle::RequestData(
   this->UpdateProgress(1.0);
   BuildOutput(paths, pixels, *scene, output);
   return 1;
+}
+
+bool vtkRiemannRayBundle::CheckSizes(const riemann::RaySettings& rays)
+{
+  for (const auto& [name, value, most] :
+    { std::tuple<const char*, int, int>{ "Width", this->Width, 1 << 16 },
+      { "Height", this->Height, 1 << 16 }, { "SubgridResolution", this->SubgridResolution, 4096 },
+      { "PixelStride", this->PixelStride, 1 << 16 } })
+  {
+    if (value < 1 || value > most)
+    {
+      this->ReportError(std::string(name) + " " + std::to_string(value) + ": must be 1 to " +
+        std::to_string(most) + ".");
+      return false;
+    }
+  }
+  // The rays before SelectPixels makes them: a 4096^2 sub-grid of 1000-step
+  // rays once took 11.8 GB and aborted.
+  double numberOfRays = static_cast<double>(this->SubgridResolution) * this->SubgridResolution;
+  if (this->UsePixelRegion)
+  {
+    const auto across = [this](int a, int b, int side)
+    {
+      const int low = std::max(0, std::min(a, b));
+      const int high = std::min(side - 1, std::max(a, b));
+      return high < low ? 0.0 : std::floor((high - low) / double(this->PixelStride)) + 1.0;
+    };
+    numberOfRays = across(this->PixelRegion[0], this->PixelRegion[1], this->Width) *
+      across(this->PixelRegion[2], this->PixelRegion[3], this->Height);
+  }
+  const double points = numberOfRays * (static_cast<double>(rays.MaximumSteps) + 1.0);
+  if (points > MaximumNumberOfPoints)
+  {
+    std::ostringstream message;
+    message << numberOfRays << " rays of up to " << rays.MaximumSteps << " steps: up to "
+            << points << " points, more than the " << MaximumNumberOfPoints
+            << " a bundle holds; trace fewer rays (SubgridResolution, PixelStride) or steps.";
+    this->ReportError(message.str());
+    return false;
+  }
+  return true;
 }
 
 void vtkRiemannRayBundle::SelectPixels(std::vector<std::pair<int, int>>& pixels) const

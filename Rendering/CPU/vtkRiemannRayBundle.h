@@ -40,6 +40,10 @@
 #include <utility> // For SelectPixels
 #include <vector>  // For SelectPixels
 
+namespace riemann
+{
+struct RaySettings;
+}
 class vtkCamera;
 class vtkRiemannScene;
 
@@ -65,12 +69,18 @@ public:
   ///@}
 
   ///@{
-  /// Image size in pixels (default 640 x 480): fixes the aspect ratio and pixel centres.
-  vtkSetClampMacro(Width, int, 1, 1 << 16);
+  /// Image size in pixels (default 640 x 480): fixes the aspect ratio and
+  /// pixel centres. Each side 1 to 65536; other values are kept and refused
+  /// with an error when the filter runs (not clamped in silence).
+  vtkSetMacro(Width, int);
   vtkGetMacro(Width, int);
-  vtkSetClampMacro(Height, int, 1, 1 << 16);
+  vtkSetMacro(Height, int);
   vtkGetMacro(Height, int);
   ///@}
+
+  /// The most points a bundle holds (rays times their steps plus one): 10^8,
+  /// about 4 GB with the arrays. Larger bundles are refused with an error.
+  static constexpr double MaximumNumberOfPoints = 1e8;
 
   ///@{
   /// PERSPECTIVE (default) or EQUIRECTANGULAR, as the pass.
@@ -79,8 +89,9 @@ public:
   ///@}
 
   ///@{
-  /// N for an N x N sub-grid of pixels (default 8).
-  vtkSetClampMacro(SubgridResolution, int, 1, 4096);
+  /// N for an N x N sub-grid of pixels (default 8; 1 to 4096, checked when
+  /// the filter runs, as the sides).
+  vtkSetMacro(SubgridResolution, int);
   vtkGetMacro(SubgridResolution, int);
   ///@}
 
@@ -128,6 +139,9 @@ protected:
   bool UseSceneSettings = true;
 
 private:
+  /// The sides, sub-grid and stride in range, and the points the bundle
+  /// would hold within MaximumNumberOfPoints; else ReportError and false.
+  bool CheckSizes(const riemann::RaySettings& rays);
   /// The bundle's pixels, (column, row): the strided PixelRegion when
   /// UsePixelRegion, else the centres of a SubgridResolution^2 grid of blocks.
   void SelectPixels(std::vector<std::pair<int, int>>& pixels) const;

@@ -1,6 +1,7 @@
 #include "RiemannSceneParser.h"
 
 #include "JsonValidation.h"
+#include "InputFiles.h"
 #include "MetricDefinition.h"
 
 #include <Eigen/Geometry> // cross
@@ -37,7 +38,7 @@ const Json& Required(const Json& object, const char* key, const std::string& pat
 }
 
 /// Guards against absurd inputs (a scene is typed by a person).
-constexpr std::streamoff MaximumFileSize = 64 << 20;
+constexpr std::uint64_t MaximumFileSize = 64 << 20;
 /// Lattice lines per axis of one grid (keeps the intersection loops bounded).
 constexpr double MaximumLatticeLines = 10000;
 /// Lattice line indices |extent / spacing| per axis: the intersection loops
@@ -627,7 +628,7 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   catch (const Json::exception& e)
   {
     // Syntax errors, and numbers out of double's range (out_of_range.406).
-    Fail(path, std::string("invalid JSON: ") + e.what());
+    Fail(path, "invalid JSON: " + json::WithoutExceptionId(e.what()));
   }
   if (!root.is_object())
   {
@@ -718,18 +719,15 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
 
 Scene LoadSceneFile(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file)
+  std::string text;
+  try
   {
-    throw SceneDefinitionError(path + ": cannot open the scene file");
+    text = ReadInputFile(path, "the scene file", MaximumFileSize);
   }
-  if (file.tellg() > MaximumFileSize)
+  catch (const std::runtime_error& e)
   {
-    throw SceneDefinitionError(path + ": file too large for a scene definition");
+    throw SceneDefinitionError(e.what());
   }
-  file.seekg(0);
-  std::ostringstream text;
-  text << file.rdbuf();
   std::string baseDirectory = std::filesystem::path(path).parent_path().string();
   if (baseDirectory.empty())
   {
@@ -737,7 +735,7 @@ Scene LoadSceneFile(const std::string& path)
   }
   try
   {
-    return ParseScene(text.str(), baseDirectory);
+    return ParseScene(text, baseDirectory);
   }
   catch (const SceneDefinitionError& e)
   {

@@ -1,5 +1,7 @@
 #include "RiemannImageIO.h"
 
+#include "InputFiles.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -12,6 +14,72 @@ namespace riemann
 {
 namespace
 {
+/**
+ * The process's stderr (file descriptor 2) sent to a temporary file while
+ * this lives. libpng, under OpenImageIO 2.4, prints "libpng error: ..." on
+ * stderr itself before OpenImageIO reports the same error: that raw line
+ * would come before the tool's own message. What was caught is dropped;
+ * the error is told once, by OpenImageIO's text.
+ */
+class QuietStderr
+{
+public:
+  QuietStderr()
+  {
+    std::fflush(stderr);
+    this->Saved = ::dup(2);
+    this->Sink = std::tmpfile();
+    if (this->Saved < 0 || !this->Sink || ::dup2(::fileno(this->Sink), 2) < 0)
+    {
+      this->Restore();
+    }
+  }
+  ~QuietStderr() { this->Restore(); }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+private:
+  void Restore()
+  {
+    std::fflush(stderr);
+    if (this->Saved >= 0)
+    {
+      ::dup2(this->Saved, 2);
+      ::close(this->Saved);
+      this->Saved = -1;
+    }
+    if (this->Sink)
+    {
+      std::fclose(this->Sink);
+      this->Sink = nullptr;
+    }
+  }
+  int Saved = -1;
+  std::FILE* Sink = nullptr;
+};
+
+/// OpenImageIO's error text on one line: its lines joined by "; ".
+std::string OneLine(std::string text)
+{
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+  {
+    text.pop_back();
+  }
+  std::string line;
+  for (char c : text)
+  {
+    if (c == '\n')
+    {
+      line += "; ";
+    }
+    else
+    {
+      line += c;
+    }
+  }
+  return line;
+}
+
 std::string Extension(const std::string& path)
 {
   const size_t dot = path.find_last_of('.');
@@ -71,10 +139,17 @@ std::string WriteImage(const std::string& path, const Image& image)
 
 std::string ReadImage(const std::string& path, Image& image)
 {
+  // OpenImageIO opens whatever it is given: a FIFO would block it.
+  const std::string notAFile = InputFileProblem(path, "the image");
+  if (!notAFile.empty())
+  {
+    return notAFile;
+  }
+  QuietStderr quiet;
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
   if (!input)
   {
-    return "cannot read image " + path + ": " + OIIO::geterror();
+    return "cannot read image " + path + ": " + OneLine(OIIO::geterror());
   }
   const OIIO::ImageSpec& spec = input->spec();
   constexpr long long maximumPixels = 1LL << 28;
@@ -89,7 +164,7 @@ std::string ReadImage(const std::string& path, Image& image)
   image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data()))
   {
-    return "cannot read image " + path + ": " + input->geterror();
+    return "cannot read image " + path + ": " + OneLine(input->geterror());
   }
   input->close();
   return {};

@@ -1,5 +1,9 @@
 #include "RiemannPolyDataMesh.h"
+
+#include "InputFiles.h"
 #include "RiemannPlyCheck.h"
+#include "RiemannStlCheck.h"
+#include "RiemannVtkMessages.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -37,12 +41,13 @@ struct ErrorText
   {
     this->Command->SetClientData(this);
     this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* self, void* message)
+      [](vtkObject* caller, unsigned long, void* self, void* message)
       {
         auto* errors = static_cast<ErrorText*>(self);
         if (errors->Text.empty() && message)
         {
-          errors->Text = static_cast<const char*>(message);
+          errors->Text =
+            PlainVtkMessage(static_cast<const char*>(message), caller->GetClassName());
         }
       });
     object->AddObserver(vtkCommand::ErrorEvent, this->Command);
@@ -340,10 +345,10 @@ std::shared_ptr<TriangleMesh> MeshFromPolyData(vtkPolyData* data, const MeshColo
 
 vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::string& path)
 {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
+  const std::string notAFile = InputFileProblem(path, "the mesh file");
+  if (!notAFile.empty())
   {
-    throw SceneDefinitionError(path + ": mesh file not found");
+    throw SceneDefinitionError(notAFile);
   }
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension)
@@ -382,6 +387,12 @@ vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::string& path)
   }
   else if (extension == ".stl")
   {
+    // VTK's STL reader reads a binary file cut short without a word: checked first.
+    const std::string problem = CheckStlFile(path);
+    if (!problem.empty())
+    {
+      throw SceneDefinitionError(path + ": cannot read the mesh: " + problem);
+    }
     auto stl = vtkSmartPointer<vtkSTLReader>::New();
     stl->SetFileName(path.c_str());
     reader = stl;

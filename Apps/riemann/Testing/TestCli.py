@@ -10,7 +10,9 @@ import math
 import os
 import subprocess
 import sys
+import signal
 import tempfile
+import time
 import unittest
 
 EXE = os.environ.get("RIEMANN_EXECUTABLE", "riemann")
@@ -326,12 +328,44 @@ class HostileInputTests(unittest.TestCase):
                     self.assertIn(reason, err)
                     self.assertFalse(os.path.exists(out), "no output is written")
 
+    def test_messages_are_short_and_plain(self):
+        # A 2 MB key was quoted whole; scene syntax errors carried nlohmann's
+        # "[json.exception.parse_error.101]"; a VTK reader's error its source
+        # path and the reader's address.
+        key = os.path.join(self.dir, "key.json")
+        with open(key, "w") as f:
+            f.write('{"type": "euclidean", "%s": 1}' % ("k" * 2000000))
+        status, _, err = run("info", "-m", key)
+        self.assertEqual(status, 1)
+        self.assertLess(len(err), 400, err[:400])
+        self.assertIn('..." (2000000 characters)', err)
+        scene = os.path.join(self.dir, "scene.json")
+        with open(scene, "w") as f:
+            f.write('{"metric": {"type": "euclidean"}, "objects": [}')
+        status, _, err = run("render", "--backend", "cpu", "-s", scene, "-o", os.path.join(self.dir, "o.png"))
+        self.assertEqual(status, 1, err)
+        self.assertIn("scene: invalid JSON: parse error at line 1, column 47", err)
+        self.assertNotIn("json.exception", err)
+        vtp = os.path.join(self.dir, "garbage.vtp")
+        with open(vtp, "w") as f:
+            f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData"><PolyData><Piece')
+        with open(scene, "w") as f:
+            f.write('{"metric": {"type": "euclidean"}, "objects": [{"type": "mesh", "file": "garbage.vtp"}]}')
+        status, _, err = run("render", "--backend", "cpu", "-s", scene, "-o", os.path.join(self.dir, "o.png"))
+        self.assertEqual(status, 1, err)
+        self.assertIn("cannot read the mesh: vtkXMLPolyDataReader: ", err)
+        self.assertNotIn("ERROR: In", err)
+        self.assertNotIn("(0x", err)
+
     def test_tensor_files_are_clear_errors(self):
         folder = os.path.join(os.path.dirname(__file__), "../../../Common/Core/Testing/Data/hostile-tensors")
         reasons = {"bad_datatype.nii": "unknown NIfTI datatype code 12345",
                    "dim99.nrrd": '"dimension: 99"',
                    "gzbomb.nii.gz": "tensor volumes are read up to 2 GiB",
-                   "detached_list.nhdr": '"data file: LIST"'}
+                   "detached_list.nhdr": '"data file: LIST"',
+                   "huge_extent2.vti": "its WholeExtent (0 2147483646 0 2147483646 0 2147483646) "
+                                       "declares more than 2 GiB of tensors",
+                   "nan_spacing.vti": 'its Spacing "nan 0.5 0.5" is not 3 finite numbers'}
         for name, reason in reasons.items():
             with self.subTest(name=name):
                 metric = os.path.join(self.dir, name + ".json")
@@ -341,6 +375,220 @@ class HostileInputTests(unittest.TestCase):
                 self.assertEqual(status, 1, err)
                 self.assertIn("riemann: error:", err)
                 self.assertIn(reason, err)
+
+
+class FilePathTests(unittest.TestCase):
+    """Inputs must be regular files (a device read without end, a FIFO blocked
+    forever); an output may not replace an input or another output, nor be a
+    device or FIFO (outputs are renamed into place). All before any work."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.twist = os.path.join(METRICS, "twist.json")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_an_output_that_is_an_input_is_refused_and_the_input_kept(self):
+        seeds = os.path.join(self.dir, "S.csv")
+        with open(seeds, "w") as f:
+            f.write("x,y,z,dx,dy,dz\n0,0,0,1,0,0\n")
+        status, _, err = run("trace", "-m", self.twist, "--seeds", seeds, "-o", seeds)
+        self.assertEqual(status, 2, err)
+        self.assertIn("-o %s: is also the input --seeds" % seeds, err)
+        with open(seeds) as f:
+            self.assertEqual(f.read(), "x,y,z,dx,dy,dz\n0,0,0,1,0,0\n")
+        # the same file by another name
+        status, _, err = run("trace", "-m", self.twist, "--seeds", seeds,
+                             "-o", os.path.join(self.dir, ".", "S.csv"))
+        self.assertEqual(status, 2, err)
+
+    def test_two_outputs_with_one_name_are_refused(self):
+        out = os.path.join(self.dir, "a.vtp")
+        for args in (["conjugate", "-m", self.twist, "-o", out, "--surface", out],
+                     ["expmap", "-m", self.twist, "-o", out, "--wavefronts", out]):
+            with self.subTest(args[0]):
+                status, _, err = run(*args)
+                self.assertEqual(status, 2, err)
+                self.assertIn("is also -o; one would replace the other", err)
+                self.assertFalse(os.path.exists(out))
+
+    def test_devices_fifos_and_folders_are_no_files(self):
+        fifo = os.path.join(self.dir, "pipe")
+        os.mkfifo(fifo)
+        seeds = os.path.join(self.dir, "S.csv")
+        with open(seeds, "w") as f:
+            f.write("x,y,z,dx,dy,dz\n0,0,0,1,0,0\n")
+        sampled = os.path.join(self.dir, "sampled.json")
+        with open(sampled, "w") as f:
+            f.write('{"type": "sampled", "file": "pipe"}')
+        cases = [
+            (["info", "-m", "/dev/zero"], 1, "/dev/zero: the metric file is not a regular file"),
+            (["info", "-m", fifo], 1, "the metric file is not a regular file"),
+            (["info", "-m", sampled, "--point", "0,0,0"], 1, "pipe: the tensor file is not a regular file"),
+            (["trace", "-m", self.twist, "--seeds", fifo, "-o", os.path.join(self.dir, "o.csv")], 1,
+             "the seeds file is not a regular file"),
+            (["trace", "-m", self.twist, "-o", "/dev/null"], 2, "-o /dev/null: is not a regular file"),
+            (["trace", "-m", self.twist, "-o", fifo], 2, "is not a regular file"),
+            (["fields", "-m", self.twist, "-o", self.dir + "/"], 2, "is a folder; outputs are written whole"),
+        ]
+        for args, expected, reason in cases:
+            with self.subTest(args=args):
+                started = time.time()
+                status, _, err = run(*args)
+                self.assertLess(time.time() - started, 20, "answers without opening the FIFO")
+                self.assertEqual(status, expected, err)
+                self.assertIn(reason, err)
+        self.assertTrue(os.path.exists("/dev/null") and not os.path.isfile("/dev/null"))
+
+    def test_an_unreadable_reference_is_an_error_before_the_picture(self):
+        reference = os.path.join(self.dir, "cut.png")
+        with open(os.path.join(os.path.dirname(__file__),
+                               "../../../Rendering/OpenGL/Testing/Data/Baseline/paper-twist.png"), "rb") as f:
+            data = f.read()
+        with open(reference, "wb") as f:
+            f.write(data[: len(data) // 3])
+        out = os.path.join(self.dir, "out.png")
+        status, _, err = run("render", "--backend", "cpu", "--scene", os.path.join(DATA, "scenes", "paper-twist.json"),
+                             "--width", "16", "--height", "12", "--reference", reference, "-o", out)
+        self.assertEqual(status, 2, err)
+        self.assertIn("--reference: cannot read image %s: " % reference, err)
+        self.assertTrue(err.startswith("riemann: error:"), "libpng's own line is not printed: " + err)
+        self.assertEqual(len(err.strip().splitlines()), 2, err)  # the error and the --help hint
+        self.assertFalse(os.path.exists(out))
+
+    def test_a_truncated_binary_stl_is_refused(self):
+        stl = os.path.join(self.dir, "cut.stl")
+        with open(stl, "wb") as f:
+            f.write(b"binary".ljust(80, b" ") + (448).to_bytes(4, "little") + bytes(50 * 99))
+        scene = os.path.join(self.dir, "scene.json")
+        with open(scene, "w") as f:
+            f.write('{"metric": {"type": "euclidean"}, "objects": [{"type": "mesh", "file": "cut.stl"}]}')
+        out = os.path.join(self.dir, "out.png")
+        status, _, err = run("render", "--backend", "cpu", "-s", scene, "--width", "8", "--height", "8", "-o", out)
+        self.assertEqual(status, 1, err)
+        self.assertIn("a binary STL of 448 triangles takes 22484 bytes, the file has 5034 (cut short?)", err)
+        self.assertFalse(os.path.exists(out))
+
+
+class InterruptTests(unittest.TestCase):
+    """SIGINT and SIGTERM stop a command: exit 130 / 143, one line, this run's
+    partial files removed, earlier outputs and other processes' files kept."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def interrupt(self, sig, name, status):
+        out = os.path.join(self.dir, "c.vtp")
+        with open(out, "w") as f:
+            f.write("earlier output")
+        # 200,000 directions take minutes: the signal comes mid-computation.
+        proc = subprocess.Popen([EXE, "conjugate", "-m", os.path.join(METRICS, "round-sphere.json"),
+                                 "--directions", "200000", "--length", "30", "-o", out],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        # A partial file of this run, as WriteAtomically names it, and one of
+        # another process whose id starts with this one's.
+        partial = out + ".partial-%d" % proc.pid
+        other = out + ".partial-%d7" % proc.pid
+        for path in (partial, other):
+            with open(path, "w") as f:
+                f.write("x")
+        time.sleep(1.0)
+        self.assertIsNone(proc.poll(), "the command should still be computing")
+        proc.send_signal(sig)
+        _, err = proc.communicate(timeout=60)
+        self.assertEqual(proc.returncode, status, err)
+        self.assertEqual(err.strip(), "riemann: interrupted by %s; stopped, removed 1 partial file "
+                                      "(earlier outputs are kept)" % name)
+        self.assertFalse(os.path.exists(partial))
+        self.assertTrue(os.path.exists(other))
+        with open(out) as f:
+            self.assertEqual(f.read(), "earlier output")
+
+    def test_sigint_exits_130(self):
+        self.interrupt(signal.SIGINT, "SIGINT", 130)
+
+    def test_sigterm_exits_143(self):
+        self.interrupt(signal.SIGTERM, "SIGTERM", 143)
+
+
+class ConcurrentWriteTests(unittest.TestCase):
+    """Several runs writing one .pvti name: whatever order they finish in,
+    the summary names pieces that exist and are of the same run (before,
+    12 of 20 rounds of four runs left a summary with no pieces or another
+    run's pieces)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_one_name_many_runs(self):
+        import re
+        out = os.path.join(self.dir, "same.pvti")
+        for round_ in range(4):
+            # Each run its own grid size, so that a summary and a piece of
+            # different runs disagree on the extent.
+            procs = [subprocess.Popen([EXE, "fields", "-m", os.path.join(METRICS, "twist.json"),
+                                       "--dims", "%d,%d,%d" % (n, n, n), "-o", out],
+                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                     for n in (5, 6, 7, 8)]
+            for proc in procs:
+                _, err = proc.communicate(timeout=120)
+                self.assertEqual(proc.returncode, 0, err)
+            with open(out) as f:
+                summary = f.read()
+            whole = re.search(r'WholeExtent="([^"]*)"', summary).group(1)
+            sources = re.findall(r'Source="([^"]*)"', summary)
+            self.assertEqual(len(sources), 1, summary)
+            piece = os.path.join(self.dir, sources[0])
+            self.assertTrue(os.path.exists(piece), "round %d: %s is missing" % (round_, piece))
+            with open(piece, "rb") as f:
+                head = f.read(2000).decode("latin-1")
+            self.assertIn('WholeExtent="%s"' % whole, head, "round %d: the piece is another run's" % round_)
+            self.assertEqual([n for n in os.listdir(self.dir) if "partial" in n], [])
+
+
+class IntegrationOptionTests(unittest.TestCase):
+    """One name, one range, one wording: every command that integrates lists
+    the same five integration options in its --help (AddIntegrationOptions)."""
+
+    OPTIONS = {
+        "--integrator": "TEXT:euler|rk4|dp45",
+        "--step": "FLOAT:in [1e-09, 1e+06]",
+        "--length": "FLOAT:in (0, 1e+09]",
+        "--tolerance": "FLOAT:in [1e-15, 1]",
+        "--max-steps": "INT:in [1, ",
+    }
+
+    def test_every_integrating_command_lists_them(self):
+        import re
+        for command in ("trace", "expmap", "conjugate", "render"):
+            with self.subTest(command=command):
+                status, out, err = run(command, "--help")
+                self.assertEqual(status, 0, err)
+                for option, kind in self.OPTIONS.items():
+                    line = re.search(r"^\s+(?:-\w,)?%s\b(?:,[-\w]+)* (\S+(?: \S+)*)$" % re.escape(option),
+                                     out, re.MULTILINE)
+                    self.assertIsNotNone(line, "%s --help lacks %s:\n%s" % (command, option, out))
+                    self.assertTrue(line.group(1).startswith(kind), (command, option, line.group(0)))
+                # and nothing else names an integration setting differently
+                self.assertNotRegex(out, r"--max-length(?!\S)(?! FLOAT)" if command == "render" else r"--max-length")
+
+    def test_render_takes_every_one(self):
+        out = os.path.join(tempfile.mkdtemp(), "o.png")
+        status, _, err = run("render", "--backend", "cpu", "--width", "16", "--height", "12",
+                             "--integrator", "dp45", "--step", "0.05", "--length", "12",
+                             "--tolerance", "1e-5", "--max-steps", "400", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertTrue(os.path.exists(out))
 
 
 class CpuRenderTests(unittest.TestCase):
@@ -892,12 +1140,15 @@ NUMERIC_OPTIONS = [
     ("info", ["--point", "nan,0,0"], '--point: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
     ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
     ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
-    ("render", ["--step", "nan"], '--step: expected a finite positive number from 1e-06 to 100, got "nan"'),
+    ("render", ["--step", "nan"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "nan"'),
     ("render", ["--fov", "nan"], '--fov: expected a finite positive number at most 179, got "nan"'),
     ("render", ["--fov", "180"], '--fov: expected a finite positive number at most 179, got "180"'),
     ("render", ["--fov", "0"], '--fov: expected a finite positive number at most 179, got "0"'),
-    ("render", ["--max-length", "nan"], '--max-length: expected a finite positive number from 1e-06 to 1e+06, got "nan"'),
-    ("render", ["--max-length", "inf"], '--max-length: expected a finite positive number from 1e-06 to 1e+06, got "inf"'),
+    ("render", ["--max-length", "nan"], '--length: expected a finite positive number at most 1e+09, got "nan"'),
+    ("render", ["--length", "inf"], '--length: expected a finite positive number at most 1e+09, got "inf"'),
+    ("render", ["--tolerance", "0"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "0"'),
+    ("expmap", ["--max-steps", "0"], '--max-steps: expected a whole number from 1 to 1000000000, got "0"'),
+    ("conjugate", ["--max-steps", "1e10"], '--max-steps: expected a whole number from 1 to 1000000000'),
     ("render", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1000000, got "nan"'),
     ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384, got "nan"'),
     ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384, got "0"'),
@@ -913,8 +1164,8 @@ NUMERIC_OPTIONS = [
      "--view-up 0,0,-2 is parallel to the view direction (from --camera-position 0,0,5 to --look-at 0,0,0)"),
     ("render", ["--camera-position", "1,2,3", "--look-at", "1,2,3"],
      "--camera-position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
-    ("conjugate", ["--step", "nan"], '--step: expected a finite positive number, got "nan"'),
-    ("conjugate", ["--length", "inf"], '--length: expected a finite positive number, got "inf"'),
+    ("conjugate", ["--step", "nan"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "nan"'),
+    ("conjugate", ["--length", "inf"], '--length: expected a finite positive number at most 1e+09, got "inf"'),
     ("conjugate", ["--max-step", "nan"], '--max-step: expected a finite positive number, got "nan"'),
     ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "nan"'),
     ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a finite non-negative number at most 180, got "nan"'),
@@ -923,8 +1174,8 @@ NUMERIC_OPTIONS = [
     ("conjugate", ["--count", "inf"], '--count: expected a whole number from 1 to 1000000, got "inf"'),
     ("conjugate", ["--seed", "nan,0,0"], '--seed: expected three finite comma-separated numbers'),
     ("conjugate", ["--length", "1", "--step", "2"], "--step 2: must be at most --length 1"),
-    ("expmap", ["--step", "nan"], '--step: expected a finite positive number, got "nan"'),
-    ("expmap", ["--length", "nan"], '--length: expected a finite positive number, got "nan"'),
+    ("expmap", ["--step", "nan"], '--step: expected a finite positive number from 1e-09 to 1e+06, got "nan"'),
+    ("expmap", ["--length", "nan"], '--length: expected a finite positive number at most 1e+09, got "nan"'),
     ("expmap", ["--tolerance", "inf"], '--tolerance: expected a finite positive number from 1e-15 to 1, got "inf"'),
     ("expmap", ["--cone-angle", "inf"], '--cone-angle: expected a finite non-negative number at most 180, got "inf"'),
     ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),

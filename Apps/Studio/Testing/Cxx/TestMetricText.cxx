@@ -304,7 +304,7 @@ TEST(LocateMetricError, MessagesAboutTheWholeMetricHaveNoPlace)
     "everywhere (g = n^2 I)")
                  .Known);
   EXPECT_FALSE(LocateMetricError("{\"f\": \"x\"}", "metric: missing required key \"type\"").Known);
-  EXPECT_FALSE(LocateMetricError(conformal, "/no/such.json: cannot open the metric file").Known);
+  EXPECT_FALSE(LocateMetricError(conformal, "/no/such.json: the metric file does not exist").Known);
   EXPECT_FALSE(LocateMetricError(conformal, "").Known);
 }
 

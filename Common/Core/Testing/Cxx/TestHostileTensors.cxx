@@ -85,6 +85,10 @@ TEST(HostileTensors, EachIsRefusedWithItsReason)
       "the header declares 512 x 512 x 512 x 6 values of 4 bytes (3 GiB); tensor volumes are "
       "read up to 2 GiB" },
     { "detached_list.nhdr", "\"data file: LIST\": data in several files is not read" },
+    { "huge_extent2.vti",
+      "its WholeExtent (0 2147483646 0 2147483646 0 2147483646) declares more than 2 GiB of "
+      "tensors" },
+    { "nan_spacing.vti", "its Spacing \"nan 0.5 0.5\" is not 3 finite numbers" },
   };
   for (const auto& c : cases)
   {
@@ -136,8 +140,8 @@ TEST(HostileTensors, NrrdHeadersAreChecked)
     { "encoding.nrrd", "NRRD0004\ntype: float\ndimension: 1\nsizes: 6\nencoding: bzip2\n\n",
       "\"encoding: bzip2\"; tensor files are read raw or gzip" },
     { "device.nhdr", header + "data file: /dev/zero\n",
-      "the data file /dev/zero is not a regular file" },
-    { "missing.nhdr", header + "data file: nowhere.raw\n", "nowhere.raw does not exist" },
+      "/dev/zero: the data file is not a regular file" },
+    { "missing.nhdr", header + "data file: nowhere.raw\n", "nowhere.raw: the data file does not exist" },
     { "huge.nrrd",
       "NRRD0004\ntype: double\ndimension: 4\nsizes: 6 1000 1000 1000\nencoding: gzip\n\n",
       "the header declares more than 2 GiB of values" },
@@ -205,4 +209,60 @@ TEST(HostileTensors, GzipNrrdSizesMustMatch)
   EXPECT_NE(MetricError(less).find("inflates to 1536000 bytes; the header declares 3072000"),
     std::string::npos)
     << MetricError(less);
+}
+
+TEST(HostileTensors, VtiHeadersAreChecked)
+{
+  // A 2 x 2 x 2 image of 6 float64 values a point, raw appended data (384
+  // bytes): good as written; each case changes one attribute.
+  const auto vti = [](const std::string& extent, const std::string& spacing, int points)
+  {
+    const std::uint32_t bytes = static_cast<std::uint32_t>(points * 6 * 8);
+    std::string data(4 + bytes, '\0');
+    std::memcpy(&data[0], &bytes, 4);
+    for (int i = 0; i < points; ++i)
+    {
+      const double tensor[6] = { 2, 3, 4, 0, 0, 0 };
+      std::memcpy(&data[4 + 48 * i], tensor, 48);
+    }
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\" header_type=\"UInt32\">\n<ImageData WholeExtent=\"" +
+      extent + "\" Origin=\"0 0 0\" Spacing=\"" + spacing +
+      "\">\n<Piece Extent=\"" + extent +
+      "\">\n<PointData><DataArray type=\"Float64\" Name=\"Tensors\" "
+      "NumberOfComponents=\"6\" format=\"appended\" offset=\"0\"/></PointData>\n"
+      "</Piece>\n</ImageData>\n<AppendedData encoding=\"raw\">\n_" +
+      data + "\n</AppendedData>\n</VTKFile>\n";
+  };
+  const fs::path good = Scratch("good.vti");
+  Write(good, vti("0 1 0 1 0 1", "0.5 0.5 0.5", 8));
+  EXPECT_EQ(riemann::CheckVtiFile(good.string()), "");
+  EXPECT_EQ(MetricError(good), "");
+  const struct
+  {
+    const char* Name;
+    std::string Bytes;
+    const char* Reason;
+  } cases[] = {
+    { "more.vti", vti("0 99 0 99 0 99", "0.5 0.5 0.5", 8),
+      "its WholeExtent declares 1000000 points (0.0224 GiB of tensors at the least) but the file "
+      "has" },
+    { "reversed.vti", vti("0 1 3 0 0 1", "0.5 0.5 0.5", 8),
+      "its WholeExtent is empty or reversed on axis 1 (3 to 0)" },
+    { "huge.vti", vti("0 4000 0 4000 0 4000", "0.5 0.5 0.5", 8),
+      "declares more than 2 GiB of tensors" },
+    { "nan.vti", vti("0 1 0 1 0 1", "0.5 nan 0.5", 8),
+      "its Spacing \"0.5 nan 0.5\" is not 3 finite numbers" },
+    { "word.vti", vti("0 1 0 1 0 1", "0.5 0.5 x", 8), "its Spacing \"0.5 0.5 x\"" },
+    { "two.vti", vti("0 1 0 1 0 1", "0.5 0.5", 8), "is not 3 finite numbers" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = Scratch(c.Name);
+    Write(file, c.Bytes);
+    const std::string problem = riemann::CheckVtiFile(file.string());
+    EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
+    EXPECT_NE(MetricError(file).find(c.Reason), std::string::npos) << c.Name;
+  }
+  EXPECT_NE(riemann::CheckVtiFile("/dev/zero").find("is not a regular file"), std::string::npos);
 }

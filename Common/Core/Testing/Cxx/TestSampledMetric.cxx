@@ -217,7 +217,7 @@ TEST(SampledMetric, BadDataAndDefinitionsSayWhatAndWhere)
   WriteVti(TensorImage(Affine), Folder() / "affine.vti");
   std::string error = ErrorOf(R"({"type": "sampled", "file": "missing.vti"})");
   EXPECT_NE(error.find("metric.file: "), std::string::npos) << error;
-  EXPECT_NE(error.find("missing.vti: no such file"), std::string::npos) << error;
+  EXPECT_NE(error.find("missing.vti: the tensor file does not exist"), std::string::npos) << error;
 
   error = ErrorOf(R"({"type": "sampled", "file": "affine.vti", "array": "D"})");
   EXPECT_NE(error.find("no point-data array \"D\"; the arrays are Tensors (6 components), FA (1 "

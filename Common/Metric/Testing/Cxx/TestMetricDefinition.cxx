@@ -175,7 +175,7 @@ TEST(MetricDefinition, FileErrorsNameTheFile)
   catch (const MetricDefinitionError& e)
   {
     EXPECT_NE(
-      std::string(e.what()).find("/nonexistent/metric.json: cannot open"), std::string::npos);
+      std::string(e.what()).find("/nonexistent/metric.json: the metric file does not exist"), std::string::npos);
   }
 }
 } // namespace

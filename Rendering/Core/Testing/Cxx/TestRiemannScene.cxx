@@ -434,7 +434,7 @@ TEST(Scene, LoadSceneFileNamesTheFile)
   }
   catch (const SceneDefinitionError& e)
   {
-    EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot open the scene file");
+    EXPECT_EQ(std::string(e.what()), missing.string() + ": the scene file does not exist");
   }
   // Relative names resolve against the scene file's folder.
   fs::create_directories(scratch / "sub");

@@ -2,11 +2,13 @@
 // (Testing/Data/hostile-meshes/README.md): each is now refused with a
 // SceneDefinitionError that says what is wrong, before VTK's filters or
 // Embree see it. Good PLY files (ASCII and binary, both byte orders,
-// written here byte by byte) still load, and a vtkPolyData with a bad cell
-// is refused too (MeshFromPolyData, the actors' path).
+// written here byte by byte) still load, binary STL files are checked
+// against their triangle count, only regular files are read, and a
+// vtkPolyData with a bad cell is refused too (MeshFromPolyData, the actors' path).
 #include "RiemannPlyCheck.h"
 #include "RiemannPolyDataMesh.h"
 #include "RiemannScene.h"
+#include "RiemannStlCheck.h"
 #include "TestDataDirectory.h"
 
 #include "vtkCellArray.h"
@@ -173,6 +175,84 @@ TEST(HostileMeshes, PlyProblemsAreNamed)
     EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
     EXPECT_NE(LoadError(file).find(c.Reason), std::string::npos) << c.Name;
   }
+}
+
+/// A binary STL: 80-byte header, the count, 50 bytes a triangle (normal, 3 corners, attribute).
+std::string BinaryStl(std::uint32_t declared, int written, const char* header = "binary")
+{
+  std::string bytes(80, ' ');
+  std::memcpy(&bytes[0], header, std::strlen(header));
+  bytes.append(reinterpret_cast<const char*>(&declared), 4); // little-endian machines only
+  for (int t = 0; t < written; ++t)
+  {
+    const float values[12] = { 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+    bytes.append(reinterpret_cast<const char*>(values), sizeof(values));
+    bytes.append(2, '\0');
+  }
+  return bytes;
+}
+
+TEST(HostileMeshes, StlFilesAreCheckedAgainstTheirCount)
+{
+  // VTK 9.1 read a binary STL cut short without a word (the missing
+  // triangles were simply not there).
+  const struct
+  {
+    const char* Name;
+    std::string Bytes;
+    const char* Reason; // "" : loads
+  } cases[] = {
+    { "good.stl", BinaryStl(2, 2), "" },
+    { "solid-header.stl", BinaryStl(2, 2, "solid exported by a tool"), "" },
+    { "ascii.stl",
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nendsolid t\n",
+      "" },
+    { "cut.stl", BinaryStl(448, 99),
+      "a binary STL of 448 triangles takes 22484 bytes, the file has 5034 (cut short?)" },
+    { "long.stl", BinaryStl(1, 3), "a binary STL of 1 triangles takes 134 bytes, the file has 234" },
+    { "tiny.stl", "abc", "the file has 3 bytes, fewer than a binary STL's 84-byte header" },
+  };
+  for (const auto& c : cases)
+  {
+    const fs::path file = Scratch(c.Name);
+    Write(file, c.Bytes);
+    const std::string problem = riemann::CheckStlFile(file.string());
+    const std::string error = LoadError(file);
+    if (*c.Reason == '\0')
+    {
+      EXPECT_EQ(problem, "") << c.Name;
+      EXPECT_EQ(error, "") << c.Name;
+    }
+    else
+    {
+      EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
+      EXPECT_NE(error.find(c.Reason), std::string::npos) << c.Name << ": " << error;
+    }
+  }
+}
+
+TEST(HostileMeshes, OnlyRegularFilesAreRead)
+{
+  EXPECT_NE(LoadError("/dev/zero").find("(/dev/zero): the mesh file is not a regular file"),
+    std::string::npos)
+    << LoadError("/dev/zero");
+  EXPECT_NE(LoadError(Scratch("")).find("the mesh file is a folder"), std::string::npos);
+  EXPECT_NE(LoadError(Scratch("nowhere.obj")).find("the mesh file does not exist"),
+    std::string::npos);
+}
+
+TEST(HostileMeshes, VtkReadersMessagesArePlainSentences)
+{
+  // A VTK reader's error reaches the user without VTK's source path and the
+  // reader's address (RiemannVtkMessages.h).
+  const fs::path file = Scratch("garbage.vtp");
+  Write(file, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><PolyData><Piece");
+  const std::string error = LoadError(file);
+  EXPECT_NE(error.find("cannot read the mesh: vtkXMLPolyDataReader: "), std::string::npos) << error;
+  EXPECT_EQ(error.find("ERROR: In"), std::string::npos) << error;
+  EXPECT_EQ(error.find("(0x"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
 TEST(HostileMeshes, PolyDataWithABadCellIsRefused)
