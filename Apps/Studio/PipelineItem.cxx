@@ -1,5 +1,7 @@
 #include "PipelineItem.h"
 
+#include "RungeKutta.h"
+
 #include "ColorMaps.h"
 
 #include "vtkRiemannIntegrationSettings.h"
@@ -343,7 +345,11 @@ std::vector<PropertySpec> IntegrationPropertySpecs()
   integrator.Key = "IntegratorType";
   integrator.Label = "Integrator";
   integrator.Type = PropertySpec::Choice;
-  integrator.Choices = QStringList{ "euler", "rk4", "dp45" };
+  for (riemann::IntegratorType type : { riemann::IntegratorType::Euler,
+         riemann::IntegratorType::RungeKutta4, riemann::IntegratorType::DormandPrince45 })
+  {
+    integrator.Choices << riemann::IntegratorName(type);
+  }
   integrator.Help = "euler (the paper's), rk4 (fixed step) or dp45 (adaptive Dormand-Prince)";
 
   PropertySpec step;

@@ -1,5 +1,7 @@
 #include "ProjectFile.h"
 
+#include "RungeKutta.h"
+
 #include "PipelineItems.h"
 #include "StudioDocument.h"
 
@@ -301,8 +303,7 @@ ProjectData CaptureProject(const StudioDocument& document)
   project.Observer.From(document.Observer());
   project.UseSceneSettings = document.UseSceneSettings();
   vtkRiemannIntegrationSettings* rays = document.RaySettings();
-  const char* integrators[] = { "euler", "rk4", "dp45" };
-  project.Integration = { { "IntegratorType", integrators[rays->GetIntegratorType()] },
+  project.Integration = { { "IntegratorType", riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType())) },
     { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
     { "MaximumError", rays->GetMaximumError() },
     { "MaximumPropagation", rays->GetMaximumPropagation() },

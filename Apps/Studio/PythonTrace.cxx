@@ -1,5 +1,7 @@
 #include "PythonTrace.h"
 
+#include "RungeKutta.h"
+
 #include "PipelineItem.h"
 #include "StudioDocument.h"
 
@@ -137,7 +139,6 @@ void WriteObserver(std::ostream& out, const StudioDocument& document)
 {
   vtkCamera* camera = document.Observer();
   vtkRiemannIntegrationSettings* rays = document.RaySettings();
-  const char* integrators[] = { "euler", "rk4", "dp45" };
   out << "# The observer (the inside view's camera) and its rays.\n"
       << "camera = vtkCamera()\n"
       << "camera.SetPosition" << PythonTuple(nlohmann::json(std::vector<double>(
@@ -150,7 +151,7 @@ void WriteObserver(std::ostream& out, const StudioDocument& document)
       << "width, height = " << document.ViewWidth() << ", " << document.ViewHeight() << "\n"
       << "use_scene_settings = " << (document.UseSceneSettings() ? "True" : "False") << "\n"
       << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n"
-      << "ray_settings.SetIntegratorTypeFromName(\"" << integrators[rays->GetIntegratorType()]
+      << "ray_settings.SetIntegratorTypeFromName(\"" << riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType()))
       << "\")\n"
       << "ray_settings.SetInitialIntegrationStep(" << PythonNumber(rays->GetInitialIntegrationStep())
       << ")\n"

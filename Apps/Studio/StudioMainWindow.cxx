@@ -1,5 +1,8 @@
 #include "StudioMainWindow.h"
 
+#include "GeodesicTrace.h"
+#include "RungeKutta.h"
+
 #include "InsideView.h"
 #include "InsideViewRays.h"
 #include "MetricEditor.h"
@@ -87,27 +90,11 @@ QString ReadText(const QString& path, QString& error)
 }
 
 /// Names of vtkRiemannGeodesicTracer's termination codes (the bundle's too).
+/// Why a picked ray ended, in the core's words (GeodesicTrace.h: every
+/// code, "left the sampled data" included).
 QString ReasonName(int reason)
 {
-  switch (reason)
-  {
-    case 1:
-      return "left the domain";
-    case 3:
-      return "unexpected value";
-    case 4:
-      return "reached its maximum length";
-    case 5:
-      return "ran out of steps";
-    case 6:
-      return "stagnated";
-    case 8:
-      return "the metric degenerates";
-    case 9:
-      return "hit a surface";
-    default:
-      return QStringLiteral("reason %1").arg(reason);
-  }
+  return QString::fromUtf8(riemann::TerminationReasonName(reason));
 }
 }
 
@@ -476,11 +463,11 @@ void StudioMainWindow::ShowInsideViewSettings()
     specs.push_back(spec);
   }
   vtkRiemannIntegrationSettings* rays = this->Doc->RaySettings();
-  const char* integrators[] = { "euler", "rk4", "dp45" };
   const nlohmann::json values = { { "Backend", this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu" },
     { "SamplesPerPixel", this->InsideWidget->GetSamplesPerPixel() },
     { "UseSceneSettings", this->Doc->UseSceneSettings() },
-    { "IntegratorType", integrators[rays->GetIntegratorType()] },
+    { "IntegratorType",
+      riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType())) },
     { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
     { "MaximumError", rays->GetMaximumError() },
     { "MaximumPropagation", rays->GetMaximumPropagation() },
