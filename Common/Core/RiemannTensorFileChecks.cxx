@@ -12,6 +12,8 @@
 #include "vtkXMLImageDataReader.h"
 #include "vtk_zlib.h" // zlib, as VTK has it (the system's on Debian)
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -84,7 +86,7 @@ bool FiniteNumbers(const std::string& text, int count)
   {
     char* stop = nullptr;
     const double value = std::strtod(word.c_str(), &stop);
-    if (*stop != '\0' || !std::isfinite(value))
+    if (stop != word.c_str() + word.size() || !std::isfinite(value))
     {
       return false;
     }
@@ -93,10 +95,27 @@ bool FiniteNumbers(const std::string& text, int count)
   return found == count;
 }
 
-/// A file's text in a message: at most 80 characters.
+/// A file's text in a message: bytes that are not printable ASCII as \xNN
+/// (a binary file's bytes must not reach the terminal), at most 60 characters.
 std::string Shortened(const std::string& text)
 {
-  return text.size() <= 80 ? text : text.substr(0, 77) + "...";
+  std::string shown;
+  for (std::size_t i = 0; i < text.size() && i < 60; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      shown += static_cast<char>(c);
+    }
+    else
+    {
+      static const char* digits = "0123456789abcdef";
+      shown += "\\x";
+      shown += digits[c >> 4];
+      shown += digits[c & 15];
+    }
+  }
+  return text.size() > 60 ? shown + "..." : shown;
 }
 
 } // namespace
@@ -225,6 +244,15 @@ std::string CheckNiftiFile(const std::string& path)
   else
   {
     const float voxOffset = float32(108);
+    // Converted only when it fits: a float of 2.8e20 (found by fuzzing) has
+    // no uint64 value, and the conversion would be undefined.
+    if (!std::isfinite(voxOffset) || voxOffset > float(MaximumTensorFileBytes))
+    {
+      std::ostringstream text;
+      text << "vox_offset " << voxOffset << " is not a byte offset in a file read up to "
+           << GiB(MaximumTensorFileBytes);
+      return text.str();
+    }
     offset = voxOffset >= 348.0f ? static_cast<std::uint64_t>(voxOffset) : 352;
   }
   std::error_code error;
@@ -240,18 +268,43 @@ std::string CheckNiftiFile(const std::string& path)
 
 NrrdHeader ReadNrrdHeader(const std::string& path)
 {
-  NrrdHeader header;
+  // At most 1 MiB and a byte is read (a first "line" of a gigabyte without a
+  // newline once went into memory whole); Bytes is where the header ends in
+  // what was read, never past the file's end.
+  constexpr std::size_t most = std::size_t(1) << 20;
+  std::string text(most + 1, '\0');
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::getline(in, line);
-  header.Magic = line.rfind("NRRD000", 0) == 0;
-  header.Bytes = line.size() + 1;
-  while (header.Magic && std::getline(in, line))
+  in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+
+  NrrdHeader header;
+  std::size_t start = 0;
+  bool first = true;
+  while (start < text.size())
   {
-    header.Bytes += line.size() + 1;
+    const std::size_t newline = text.find('\n', start);
+    const std::size_t end = newline == std::string::npos ? text.size() : newline + 1;
+    if (end > most)
+    {
+      header.TooLong = true;
+      break;
+    }
+    std::string line = text.substr(start, (newline == std::string::npos ? text.size() : newline) - start);
+    header.Bytes = end;
+    start = end;
     if (!line.empty() && line.back() == '\r')
     {
       line.pop_back();
+    }
+    if (first)
+    {
+      header.Magic = line.rfind("NRRD000", 0) == 0;
+      first = false;
+      if (!header.Magic)
+      {
+        break;
+      }
+      continue;
     }
     if (line.empty())
     {
@@ -261,11 +314,6 @@ NrrdHeader ReadNrrdHeader(const std::string& path)
     if (line[0] != '#' && colon != std::string::npos && line.find(":=") == std::string::npos)
     {
       header.Fields[line.substr(0, colon)] = line.substr(colon + 2);
-    }
-    if (header.Bytes > (1u << 20))
-    {
-      header.TooLong = true;
-      break;
     }
   }
   return header;
@@ -291,7 +339,7 @@ std::string CheckNrrdFile(const std::string& path)
   const int dimension = std::atoi(dimensionText.c_str());
   if (dimension < 1 || dimension > 16)
   {
-    return "\"dimension: " + dimensionText + "\"; NRRD files have 1 to 16";
+    return "\"dimension: " + Shortened(dimensionText) + "\"; NRRD files have 1 to 16";
   }
   std::istringstream sizeWords(fields["sizes"]);
   std::vector<std::uint64_t> sizes;
@@ -299,23 +347,26 @@ std::string CheckNrrdFile(const std::string& path)
   while (sizeWords >> word)
   {
     char* stop = nullptr;
+    errno = 0;
     const unsigned long long size = std::strtoull(word.c_str(), &stop, 10);
-    if (*stop != '\0' || word[0] == '-' || size == 0)
+    // The whole word (a NUL byte would end strtoull early), in range.
+    if (stop != word.c_str() + word.size() || errno == ERANGE || word[0] == '-' || size == 0)
     {
-      return "\"sizes: " + fields["sizes"] + "\": \"" + word + "\" is not a positive count";
+      return "\"sizes: " + Shortened(fields["sizes"]) + "\": \"" + Shortened(word) +
+        "\" is not a positive count";
     }
     sizes.push_back(size);
   }
   if (static_cast<int>(sizes.size()) != dimension)
   {
     return "\"dimension: " + std::to_string(dimension) + "\" but " +
-      std::to_string(sizes.size()) + " sizes (\"sizes: " + fields["sizes"] + "\")";
+      std::to_string(sizes.size()) + " sizes (\"sizes: " + Shortened(fields["sizes"]) + "\")";
   }
   const int type = NrrdVtkType(fields["type"]);
   const int bytesPerValue = type == VTK_VOID ? 0 : vtkAbstractArray::GetDataTypeSize(type);
   if (bytesPerValue == 0)
   {
-    return "unknown type \"" + fields["type"] + "\"";
+    return "unknown type \"" + Shortened(fields["type"]) + "\"";
   }
   std::uint64_t data = static_cast<std::uint64_t>(bytesPerValue);
   for (std::uint64_t size : sizes)
@@ -330,13 +381,13 @@ std::string CheckNrrdFile(const std::string& path)
   if (data > MaximumTensorFileBytes)
   {
     return "the header declares more than " + GiB(MaximumTensorFileBytes) +
-      " of values (\"sizes: " + fields["sizes"] + "\"); tensor volumes are read up to that";
+      " of values (\"sizes: " + Shortened(fields["sizes"]) + "\"); tensor volumes are read up to that";
   }
   const std::string encoding = fields["encoding"];
   const bool gzip = encoding == "gzip" || encoding == "gz";
   if (encoding != "raw" && !gzip)
   {
-    return "\"encoding: " + encoding + "\"; tensor files are read raw or gzip";
+    return "\"encoding: " + Shortened(encoding) + "\"; tensor files are read raw or gzip";
   }
 
   // Step 3: where the data is, and (raw) that it is all there.
@@ -347,10 +398,15 @@ std::string CheckNrrdFile(const std::string& path)
   if (detached != fields.end())
   {
     const std::string name = detached->second;
+    if (std::any_of(name.begin(), name.end(),
+          [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+    {
+      return "\"data file: " + Shortened(name) + "\": the name has control characters";
+    }
     if (name.rfind("LIST", 0) == 0 || name.find('%') != std::string::npos ||
       name.find(' ') != std::string::npos)
     {
-      return "\"data file: " + name +
+      return "\"data file: " + Shortened(name) +
         "\": data in several files is not read; give one data file";
     }
     dataFile = fs::path(name).is_absolute() ? fs::path(name) : fs::path(path).parent_path() / name;

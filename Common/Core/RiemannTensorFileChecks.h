@@ -48,7 +48,7 @@ struct NrrdHeader
 int NrrdVtkType(const std::string& type);
 
 /// Read the header of the NRRD file at `path`.
-NrrdHeader ReadNrrdHeader(const std::string& path);
+RIEMANNCOMMONCORE_EXPORT NrrdHeader ReadNrrdHeader(const std::string& path);
 
 /// "" when the NRRD file (.nrrd, or a detached .nhdr) at `path` can be given to vtkNrrdReader,
 /// else why not.

@@ -604,6 +604,10 @@ private:
   int Number(const Token& token)
   {
     const std::string literal = this->Text.substr(token.Begin, token.End - token.Begin);
+    // The literal in quotes, as messages show it: a 310-digit number is not repeated whole.
+    const std::string quoted = literal.size() <= 40
+      ? "\"" + literal + "\""
+      : "\"" + literal.substr(0, 40) + "...\" (" + std::to_string(literal.size()) + " characters)";
     // digits [. digits] [e [+-] digits], or . digits [...]; one dot at most.
     std::string mantissa;
     long fraction = 0;
@@ -616,7 +620,7 @@ private:
       {
         if (dot)
         {
-          this->Fail(token.Begin, "malformed number \"" + literal + "\" (more than one \".\")");
+          this->Fail(token.Begin, "malformed number " + quoted + " (more than one \".\")");
         }
         dot = true;
         continue;
@@ -627,7 +631,7 @@ private:
     }
     if (!digits)
     {
-      this->Fail(token.Begin, "malformed number \"" + literal + "\"");
+      this->Fail(token.Begin, "malformed number " + quoted);
     }
     long exponent = 0;
     if (i < literal.size())
@@ -643,7 +647,7 @@ private:
         exponent = exponent * 10 + (literal[j] - '0');
         if (exponent > MaximumDecimalExponent)
         {
-          this->Fail(token.Begin, "number \"" + literal + "\" out of range");
+          this->Fail(token.Begin, "number " + quoted + " out of range");
         }
       }
       exponent = negative ? -exponent : exponent;
@@ -658,15 +662,21 @@ private:
     if (parsed.ec == std::errc::result_out_of_range)
     {
       // Tiny numbers become 0 in double precision; huge ones are refused.
-      if (exponent > 0)
+      // Which one by the place of the first nonzero digit, not by the sign
+      // of the written exponent: "1" and 309 zeros has none, and was taken
+      // for tiny (then raised 0.5 to it exactly, forever).
+      const std::size_t leadingZeros = std::min(mantissa.find_first_not_of('0'), mantissa.size());
+      const long integerDigits = static_cast<long>(mantissa.size()) - fraction -
+        static_cast<long>(leadingZeros);
+      if (integerDigits + exponent > 0)
       {
-        this->Fail(token.Begin, "number \"" + literal + "\" too large");
+        this->Fail(token.Begin, "number " + quoted + " too large");
       }
       value = 0.0;
     }
     else if (parsed.ec != std::errc() || !std::isfinite(value))
     {
-      this->Fail(token.Begin, "number \"" + literal + "\" out of range");
+      this->Fail(token.Begin, "number " + quoted + " out of range");
     }
     node.Value = value;
     // Exact rational text: mantissa * 10^(exponent - fraction).
@@ -935,7 +945,10 @@ private:
     const double magnitude =
       e.IsConstant ? std::fabs(e.Value) : std::ldexp(1.0, static_cast<int>(std::min(e.Bits, 60.0)));
     const double bits = b.Bits * std::max(1.0, magnitude);
-    if (bits > MaximumExactBits)
+    // Not "bits > limit": a 310-digit exponent is infinite as a double, and a
+    // base of 0 bits times it is NaN, which compares false with anything
+    // (GiNaC then raised 1/2 to it exactly, forever).
+    if (!(bits <= MaximumExactBits) || !std::isfinite(magnitude))
     {
       this->Fail(opOffset,
         "power too large in " + this->Quote(node) + " (exact powers are limited to " +

@@ -1,6 +1,7 @@
 #include "RiemannPlyCheck.h"
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -15,6 +16,36 @@ namespace riemann
 {
 namespace
 {
+/// Text of the file in a message: bytes that are not printable ASCII as
+/// \xNN (a binary file's bytes must not reach the terminal), at most 40
+/// characters of it.
+std::string Printable(const std::string& text)
+{
+  std::string shown;
+  for (std::size_t i = 0; i < text.size() && i < 40; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      shown += static_cast<char>(c);
+    }
+    else
+    {
+      static const char* digits = "0123456789abcdef";
+      shown += "\\x";
+      shown += digits[c >> 4];
+      shown += digits[c & 15];
+    }
+  }
+  return text.size() > 40 ? shown + "..." : shown;
+}
+
+/// Printable(text) in quotes.
+std::string Quoted(const std::string& text)
+{
+  return "\"" + Printable(text) + "\"";
+}
+
 /// A PLY scalar type: its size in bytes and how its bytes read.
 struct PlyType
 {
@@ -118,7 +149,7 @@ std::vector<PlyElement> ParseHeader(const std::string& file, PlyFormat& format, 
       format = name == "ascii" ? PlyFormat::Ascii
         : name == "binary_little_endian" ? PlyFormat::LittleEndian
         : name == "binary_big_endian"    ? PlyFormat::BigEndian
-                                         : throw bad("unknown format \"" + name + "\"");
+                                         : throw bad("unknown format " + Quoted(name));
       formatSeen = true;
     }
     else if (keyword == "element")
@@ -127,8 +158,11 @@ std::vector<PlyElement> ParseHeader(const std::string& file, PlyFormat& format, 
       std::string rows;
       words >> element.Name >> rows;
       char* stop = nullptr;
+      errno = 0;
       const unsigned long long count = std::strtoull(rows.c_str(), &stop, 10);
-      if (element.Name.empty() || rows.empty() || *stop != '\0' || rows[0] == '-')
+      // The whole word (a NUL byte would end strtoull early), in range.
+      if (element.Name.empty() || rows.empty() || stop != rows.c_str() + rows.size() ||
+        errno == ERANGE || rows[0] == '-')
       {
         throw bad("an element needs a name and a count of rows");
       }
@@ -162,14 +196,14 @@ std::vector<PlyElement> ParseHeader(const std::string& file, PlyFormat& format, 
         property.Value = TypeNamed(type);
         if (property.Value.Size == 0)
         {
-          throw bad("unknown property type \"" + type + "\"");
+          throw bad("unknown property type " + Quoted(type));
         }
       }
       elements.back().Properties.push_back(property);
     }
     else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
     {
-      throw bad("unknown keyword \"" + keyword + "\"");
+      throw bad("unknown keyword " + Quoted(keyword));
     }
   }
   if (!formatSeen)
@@ -269,9 +303,10 @@ private:
     const std::string word = f.substr(start, this->At - start);
     char* stop = nullptr;
     const double value = std::strtod(word.c_str(), &stop);
-    if (*stop != '\0')
+    // The whole word: a NUL byte would end strtod's reading early and pass.
+    if (stop != word.c_str() + word.size())
     {
-      throw PlyProblem{ "\"" + word.substr(0, 40) + "\" is not a number" };
+      throw PlyProblem{ Quoted(word) + " is not a number" };
     }
     return value;
   }
@@ -300,7 +335,7 @@ void WalkBody(const std::string& file, std::size_t body, PlyFormat format,
     const bool faces = element.Name == "face";
     for (unsigned long long row = 0; row < element.Rows; ++row)
     {
-      const std::string where = "element " + element.Name + ", row " + std::to_string(row + 1) +
+      const std::string where = "element " + Printable(element.Name) + ", row " + std::to_string(row + 1) +
         " of " + std::to_string(element.Rows);
       try
       {

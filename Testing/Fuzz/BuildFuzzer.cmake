@@ -1,4 +1,5 @@
-# cmake -DSOURCE_DIR=<source> -DBINARY_DIR=<build/fuzz> -DEXPORT_HEADER_DIR=<dir>
+# cmake -DSOURCE_DIR=<source> -DBINARY_DIR=<build/fuzz> -DMAIN_BINARY_DIR=<build>
+#       -DEXPORT_HEADER_DIR=<dir>
 #       -DSCENE_SOURCE_DIR=<dir> -DSCENE_HEADER_DIR=<dir>
 #       -DCLANGXX=<clang++> -DGENERATOR=<generator> [-DLAUNCHER=ccache] -P BuildFuzzer.cmake
 #
@@ -6,8 +7,8 @@
 # Testing/Fuzz/Standalone), then build it; Ninja rebuilds only what changed.
 # The folders are passed on each run (a re-configure of a configured tree
 # takes a second or two), so a moved scene parser is picked up.
-foreach (var SOURCE_DIR BINARY_DIR EXPORT_HEADER_DIR SCENE_SOURCE_DIR SCENE_HEADER_DIR CLANGXX
-             GENERATOR)
+foreach (var SOURCE_DIR BINARY_DIR MAIN_BINARY_DIR EXPORT_HEADER_DIR SCENE_SOURCE_DIR
+             SCENE_HEADER_DIR CLANGXX GENERATOR)
   if (NOT DEFINED ${var})
     message(FATAL_ERROR "BuildFuzzer.cmake: pass -D${var}=...")
   endif ()
@@ -19,7 +20,8 @@ set(configure_arguments
   "-DRIEMANN_SOURCE_DIR=${SOURCE_DIR}"
   "-DRIEMANN_EXPORT_HEADER_DIR=${EXPORT_HEADER_DIR}"
   "-DRIEMANN_SCENE_SOURCE_DIR=${SCENE_SOURCE_DIR}"
-  "-DRIEMANN_SCENE_HEADER_DIR=${SCENE_HEADER_DIR}")
+  "-DRIEMANN_SCENE_HEADER_DIR=${SCENE_HEADER_DIR}"
+  "-DRIEMANN_BINARY_DIR=${MAIN_BINARY_DIR}")
 if (NOT EXISTS "${BINARY_DIR}/CMakeCache.txt")
   list(APPEND configure_arguments -G "${GENERATOR}" "-DCMAKE_CXX_COMPILER=${CLANGXX}")
   if (LAUNCHER)

@@ -358,6 +358,18 @@ class HostileInputTests(unittest.TestCase):
         self.assertNotIn("ERROR: In", err)
         self.assertNotIn("(0x", err)
 
+    def test_exact_arithmetic_is_bounded(self):
+        # A 310-digit exponent kept GiNaC's exact arithmetic busy forever.
+        metric = os.path.join(self.dir, "power.json")
+        with open(metric, "w") as f:
+            f.write('{"type": "graph", "f": "0.5^1%s*x"}' % ("0" * 309))
+        started = time.time()
+        status, _, err = run("info", "-m", metric)
+        self.assertLess(time.time() - started, 20)
+        self.assertEqual(status, 1, err)
+        self.assertIn('column 5: number "1000000000000000000000000000000000000000..." (310 characters) too large', err)
+        self.assertLess(len(err), 400, "the 310 digits are not all quoted")
+
     def test_tensor_files_are_clear_errors(self):
         folder = os.path.join(os.path.dirname(__file__), "../../../Common/Core/Testing/Data/hostile-tensors")
         reasons = {"bad_datatype.nii": "unknown NIfTI datatype code 12345",

@@ -266,3 +266,38 @@ TEST(HostileTensors, VtiHeadersAreChecked)
   }
   EXPECT_NE(riemann::CheckVtiFile("/dev/zero").find("is not a regular file"), std::string::npos);
 }
+
+TEST(HostileTensors, FoundByFuzzing)
+{
+  // Testing/Fuzz/tensor-corpus/found-*: a NIfTI vox_offset of 2.8e20 (its
+  // conversion to an integer was undefined), a NRRD header whose last line
+  // has no newline (its length was counted a byte past the file), a NUL
+  // byte in a size.
+  const fs::path corpus =
+    riemann::testing::DataDirectory().parent_path() / "Testing" / "Fuzz" / "tensor-corpus";
+  EXPECT_NE(riemann::CheckNiftiFile((corpus / "found-vox-offset-2.8e20.nii").string())
+              .find("vox_offset 2.81751e+20 is not a byte offset"),
+    std::string::npos);
+  const fs::path cut = Scratch("no-newline.nrrd");
+  Write(cut, "NRRD0004\ntype: float");
+  const riemann::NrrdHeader header = riemann::ReadNrrdHeader(cut.string());
+  EXPECT_TRUE(header.Magic);
+  EXPECT_EQ(header.Bytes, 20u) << "the file's length, not a byte more";
+  EXPECT_EQ(header.Fields.at("type"), "float");
+  // A NUL byte inside a size ended strtoull's reading: "40666...6\0..." passed
+  // as a count (found-nul-in-sizes.nrrd).
+  const fs::path nul = Scratch("nul-size.nrrd");
+  Write(nul, std::string("NRRD0004\ntype: float\ndimension: 1\nsizes: 6\0\0 \nencoding: raw\n\n", 61));
+  EXPECT_NE(riemann::CheckNrrdFile(nul.string()).find("\"6\\x00\\x00\" is not a positive count"),
+    std::string::npos)
+    << riemann::CheckNrrdFile(nul.string());
+  EXPECT_NE(riemann::CheckNrrdFile((corpus / "found-nul-in-sizes.nrrd").string()).find("is not a positive count"),
+    std::string::npos);
+  // Binary text is shown as \xNN, never raw.
+  const fs::path binary = Scratch("binary.nrrd");
+  Write(binary, std::string("NRRD0004\ntype: fl\x01\0at\ndimension: 1\nsizes: 6\nencoding: raw\n\n", 58));
+  EXPECT_NE(riemann::CheckNrrdFile(binary.string()).find("unknown type \"fl\\x01\\x00at\""),
+    std::string::npos)
+    << riemann::CheckNrrdFile(binary.string());
+}
+

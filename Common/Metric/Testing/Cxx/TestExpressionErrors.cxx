@@ -220,6 +220,21 @@ TEST(ExpressionErrors, Limits)
   }
   EXPECT_THROW(CompiledExpressions(std::vector<std::string>(17, "x"), {}, 0), ExpressionError);
   EXPECT_THROW(CompiledExpressions(std::vector<std::string>{}, {}, 0), ExpressionError);
+  // A huge literal without an exponent ("1" and 309 zeros) was taken for a
+  // tiny one, and GiNaC raised 0.5 to it exactly, forever.
+  try
+  {
+    CompiledExpressions({ "0.5^1" + std::string(309, '0') + "*x" }, {}, 1);
+    ADD_FAILURE() << "a 310-digit exponent accepted";
+  }
+  catch (const ExpressionError& e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+      "column 5: number \"1000000000000000000000000000000000000000...\" (310 characters) too "
+      "large");
+  }
+  EXPECT_NO_THROW(CompiledExpressions({ "x*0." + std::string(400, '0') + "1" }, {}, 1))
+    << "a tiny literal is 0 in double precision, as before";
 }
 
 TEST(ExpressionErrors, ParameterNames)

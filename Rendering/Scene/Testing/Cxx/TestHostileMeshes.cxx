@@ -166,6 +166,16 @@ TEST(HostileMeshes, PlyProblemsAreNamed)
       "header line 4: unknown property type \"quad\"" },
     { "count.ply", "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n",
       "header line 3: an element needs a name and a count of rows" },
+    // Found by fuzzing (Testing/Fuzz/mesh-corpus/found-*): the file's bytes
+    // are shown as \xNN, never raw on the terminal.
+    { "nul-row.ply", // a NUL byte was read as the number 0
+      std::string("ply\nformat ascii 1.0\nelement v 2\nproperty float x\nend_header\n1\n\0\n", 65),
+      "element v, row 2 of 2: \"\\x00\" is not a number" },
+    { "binary-word.ply", TrianglePly("ascii", std::string("0 0 \x01\0\n1 0 0\n0 1 0\n3 0 1 2\n", 24)),
+      "\"\\x01\\x00\" is not a number" },
+    { "binary-name.ply",
+      std::string("ply\nformat ascii 1.0\nelement v\x08x 2\nproperty float x\nend_header\n1\n"),
+      "the file ends in element v\\x08x, row 2 of 2" },
   };
   for (const auto& c : cases)
   {
