@@ -499,6 +499,19 @@ void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetu
     : vtkRiemannRayTracePass::PERSPECTIVE;
 }
 
+/// WriteImage, its ImageFileError told as the command's failure (exit 1).
+void WritePicture(const std::string& path, const Image& picture)
+{
+  try
+  {
+    WriteImage(path, picture);
+  }
+  catch (const riemann::ImageFileError& e)
+  {
+    throw Failure(e.what());
+  }
+}
+
 /**
  * Collective: the pixels of every rank's piece (its extent of the tracer's
  * output) gathered into the whole picture's pixels on rank 0, colour and
@@ -676,12 +689,8 @@ private:
               << " pixels where only one of the two rays hits\n";
     if (!this->Arguments.HitErrorImage.empty())
     {
-      const std::string error = WriteImage(picturePath,
+      WritePicture(picturePath,
         riemann::HitErrorPicture(pixels, this->Arguments.Width, this->Arguments.Height));
-      if (!error.empty())
-      {
-        throw Failure(error);
-      }
     }
   }
 
@@ -698,10 +707,13 @@ Image ReadReference(const RenderArguments& args)
   Image reference;
   if (!args.Reference.empty())
   {
-    const std::string readError = ReadImage(args.Reference, reference);
-    if (!readError.empty())
+    try
     {
-      throw Failure("--reference: " + readError, 2);
+      reference = ReadImage(args.Reference);
+    }
+    catch (const riemann::ImageFileError& e)
+    {
+      throw Failure(std::string("--reference: ") + e.what(), 2);
     }
   }
   return reference;
@@ -770,11 +782,7 @@ void RunRender(const RenderArguments& args)
       picture = SideBySide(picture, RenderOutside(metric, scene, camera, rays, args, errors));
     }
     const std::string path = args.Frames > 1 ? FramePath(args.Output, frame) : args.Output;
-    const std::string error = WriteImage(path, picture);
-    if (!error.empty())
-    {
-      throw Failure(error);
-    }
+    WritePicture(path, picture);
     if (args.Frames > 1)
     {
       std::cerr << "riemann render: frame " << frame + 1 << "/" << args.Frames << " (t = " << t

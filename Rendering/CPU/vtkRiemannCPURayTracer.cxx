@@ -328,14 +328,16 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
   std::shared_ptr<riemann::EnvironmentMap> environment;
   if (!scene->EnvironmentImage.empty())
   {
-    environment = std::make_shared<riemann::EnvironmentMap>();
-    const std::string error = riemann::ReadEnvironmentMap(scene->EnvironmentImage, *environment);
-    if (!error.empty())
+    try
+    {
+      environment = std::make_shared<riemann::EnvironmentMap>(
+        riemann::ReadEnvironmentMap(scene->EnvironmentImage));
+    }
+    catch (const riemann::ImageFileError& e)
     {
       // As the GPU pass: reported, and the background colour stands in for it.
       vtkErrorMacro(<< "cannot use the environment image " << scene->EnvironmentImage << ": "
-                    << error << " (the background colour is shown instead)");
-      environment.reset();
+                    << e.what() << " (the background colour is shown instead)");
     }
   }
 

@@ -94,18 +94,19 @@ std::string Extension(const std::string& path)
 }
 }
 
-std::string WriteImage(const std::string& path, const Image& image)
+void WriteImage(const std::string& path, const Image& image)
 {
   if (image.Width <= 0 || image.Height <= 0 || image.Channels <= 0 ||
     image.Pixels.size() != static_cast<size_t>(image.Width) * image.Height * image.Channels)
   {
-    return "empty or inconsistent image";
+    throw ImageFileError(path + ": empty or inconsistent image");
   }
   const std::string extension = Extension(path);
   const bool exr = extension == "exr";
   if (!exr && extension != "png")
   {
-    return "unsupported image format \"." + extension + "\" (use .png or .exr)";
+    throw ImageFileError(
+      path + ": unsupported image format \"." + extension + "\" (use .png or .exr)");
   }
   // OpenImageIO picks the format from the file name, so the temporary file
   // keeps the extension: "out.png" -> "out.partial-<pid>.png".
@@ -114,7 +115,7 @@ std::string WriteImage(const std::string& path, const Image& image)
   std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(temporary);
   if (!output)
   {
-    return "OpenImageIO cannot write " + path + ": " + OIIO::geterror();
+    throw ImageFileError("OpenImageIO cannot write " + path + ": " + OneLine(OIIO::geterror()));
   }
   OIIO::ImageSpec spec(
     image.Width, image.Height, image.Channels, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
@@ -131,32 +132,32 @@ std::string WriteImage(const std::string& path, const Image& image)
   if (!ok || std::rename(temporary.c_str(), path.c_str()) != 0)
   {
     std::remove(temporary.c_str());
-    return "could not write " + path + (error.empty() ? "" : ": " + error) +
-      " (check that its folder exists and is writable)";
+    throw ImageFileError("could not write " + path + (error.empty() ? "" : ": " + OneLine(error)) +
+      " (check that its folder exists and is writable)");
   }
-  return {};
 }
 
-std::string ReadImage(const std::string& path, Image& image)
+Image ReadImage(const std::string& path)
 {
   // OpenImageIO opens whatever it is given: a FIFO would block it.
   const std::string notAFile = InputFileProblem(path, "the image");
   if (!notAFile.empty())
   {
-    return notAFile;
+    throw ImageFileError(notAFile);
   }
   QuietStderr quiet;
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
   if (!input)
   {
-    return "cannot read image " + path + ": " + OneLine(OIIO::geterror());
+    throw ImageFileError("cannot read image " + path + ": " + OneLine(OIIO::geterror()));
   }
   const OIIO::ImageSpec& spec = input->spec();
   constexpr long long maximumPixels = 1LL << 28;
   if (static_cast<long long>(spec.width) * spec.height > maximumPixels || spec.nchannels <= 0)
   {
-    return path + ": image too large or without channels";
+    throw ImageFileError(path + ": image too large or without channels");
   }
+  Image image;
   image.Width = spec.width;
   image.Height = spec.height;
   image.Channels = spec.nchannels;
@@ -164,16 +165,20 @@ std::string ReadImage(const std::string& path, Image& image)
   image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data()))
   {
-    return "cannot read image " + path + ": " + OneLine(input->geterror());
+    throw ImageFileError("cannot read image " + path + ": " + OneLine(input->geterror()));
   }
   input->close();
-  return {};
+  return image;
 }
 
-std::string ReadEnvironmentMap(const std::string& path, EnvironmentMap& map)
+EnvironmentMap ReadEnvironmentMap(const std::string& path)
 {
-  Image image;
-  const std::string error = ReadImage(path, image);
-  return error.empty() ? map.SetImage(image) : error;
+  EnvironmentMap map;
+  const std::string problem = map.SetImage(ReadImage(path));
+  if (!problem.empty())
+  {
+    throw ImageFileError(path + ": " + problem);
+  }
+  return map;
 }
 } // namespace riemann

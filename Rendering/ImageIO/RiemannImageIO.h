@@ -14,6 +14,7 @@
 #include "RiemannRenderingImageIOExport.h" // For export macro
 #include "RiemannShading.h"     // For EnvironmentMap
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,19 +22,28 @@ namespace riemann
 {
 
 /**
- * Write `image` to `path` (format from the extension: .png as 8 bits per
- * channel, .exr as 32-bit float with the channel names). Returns "" on
- * success, else the reason.
+ * Why a picture could not be read or written, naming the file: the base
+ * layer's convention (Documentation/ErrorConventions.md), as the metric and
+ * scene readers' errors.
  */
-RIEMANNRENDERINGIMAGEIO_EXPORT std::string WriteImage(
-  const std::string& path, const Image& image);
+class RIEMANNRENDERINGIMAGEIO_EXPORT ImageFileError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
 
-/// Read an image file as float pixels. Returns "" on success, else the reason.
-RIEMANNRENDERINGIMAGEIO_EXPORT std::string ReadImage(const std::string& path, Image& image);
+/**
+ * Write `image` to `path` (format from the extension: .png as 8 bits per
+ * channel, .exr as 32-bit float with the channel names). Throws
+ * ImageFileError, and then nothing is left at `path`.
+ */
+RIEMANNRENDERINGIMAGEIO_EXPORT void WriteImage(const std::string& path, const Image& image);
 
-/// Read an image file into an environment map (EnvironmentMap::SetImage). "" or the reason.
-RIEMANNRENDERINGIMAGEIO_EXPORT std::string ReadEnvironmentMap(
-  const std::string& path, EnvironmentMap& map);
+/// Read an image file as float pixels; throws ImageFileError.
+RIEMANNRENDERINGIMAGEIO_EXPORT Image ReadImage(const std::string& path);
+
+/// Read an image file as an environment map (EnvironmentMap::SetImage); throws ImageFileError.
+RIEMANNRENDERINGIMAGEIO_EXPORT EnvironmentMap ReadEnvironmentMap(const std::string& path);
 } // namespace riemann
 
 #endif

@@ -392,10 +392,14 @@ public:
       this->Environment = nullptr;
     }
     riemann::EnvironmentMap map; // float RGB rows, top row first
-    this->EnvironmentError = riemann::ReadEnvironmentMap(path, map);
-    Trim(this->EnvironmentError);
-    if (!this->EnvironmentError.empty())
+    try
     {
+      map = riemann::ReadEnvironmentMap(path);
+    }
+    catch (const riemann::ImageFileError& e)
+    {
+      this->EnvironmentError = e.what();
+      Trim(this->EnvironmentError);
       return;
     }
     vtkNew<vtkTextureObject> texture;

@@ -369,6 +369,34 @@ TEST(SceneSource, GridMatchesTheRayTracersBars)
 }
 
 //------------------------------------------------------------------------------
+/// "" when riemann::WriteImage succeeds, else its ImageFileError's text.
+std::string WriteError(const std::string& path, const riemann::Image& image)
+{
+  try
+  {
+    riemann::WriteImage(path, image);
+  }
+  catch (const riemann::ImageFileError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+/// riemann::ReadImage into `image`: "" when it succeeds, else its ImageFileError's text.
+std::string ReadError(const std::string& path, riemann::Image& image)
+{
+  try
+  {
+    image = riemann::ReadImage(path);
+  }
+  catch (const riemann::ImageFileError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
 TEST(ImageIO, PngRoundTripWithin8Bits)
 {
   const ScratchDirectory scratch("Png");
@@ -392,10 +420,10 @@ TEST(ImageIO, PngRoundTripWithin8Bits)
   image.Pixels[4] = -0.25f;
 
   const fs::path file = dir / "round-trip.png";
-  ASSERT_EQ(riemann::WriteImage(file.string(), image), "");
+  ASSERT_EQ(WriteError(file.string(), image), "");
   ASSERT_TRUE(fs::is_regular_file(file));
   riemann::Image back;
-  ASSERT_EQ(riemann::ReadImage(file.string(), back), "");
+  ASSERT_EQ(ReadError(file.string(), back), "");
   EXPECT_EQ(back.Width, 7);
   EXPECT_EQ(back.Height, 5);
   EXPECT_EQ(back.Channels, 3);
@@ -424,7 +452,7 @@ TEST(ImageIO, PngRoundTripWithin8Bits)
 
   // The extension's case does not matter; no temporary is left behind.
   const fs::path upper = dir / "UPPER.PNG";
-  EXPECT_EQ(riemann::WriteImage(upper.string(), image), "");
+  EXPECT_EQ(WriteError(upper.string(), image), "");
   EXPECT_TRUE(fs::is_regular_file(upper));
   for (const auto& entry : fs::directory_iterator(dir))
   {
@@ -450,9 +478,9 @@ TEST(ImageIO, ExrRoundTripIsExactWithChannelNames)
   image.Pixels[5] = 1234.5678f;
   image.Pixels[6] = -0.0001234f;
   const fs::path file = dir / "aovs.exr";
-  ASSERT_EQ(riemann::WriteImage(file.string(), image), "");
+  ASSERT_EQ(WriteError(file.string(), image), "");
   riemann::Image back;
-  ASSERT_EQ(riemann::ReadImage(file.string(), back), "");
+  ASSERT_EQ(ReadError(file.string(), back), "");
   EXPECT_EQ(back.Width, 4);
   EXPECT_EQ(back.Height, 3);
   EXPECT_EQ(back.Channels, 4);
@@ -537,13 +565,13 @@ TEST(ImageIO, ErrorsLeaveNoFiles)
 
   // A folder that does not exist: an error, no file.
   const fs::path missing = dir / "no-such-folder" / "out.png";
-  std::string error = riemann::WriteImage(missing.string(), image);
+  std::string error = WriteError(missing.string(), image);
   EXPECT_NE(error, "");
   EXPECT_NE(error.find(missing.string()), std::string::npos) << error;
   EXPECT_FALSE(fs::exists(missing));
   EXPECT_FALSE(fs::exists(dir / "no-such-folder"));
   noPartialFiles(dir);
-  error = riemann::WriteImage((dir / "no-such-folder" / "out.exr").string(), image);
+  error = WriteError((dir / "no-such-folder" / "out.exr").string(), image);
   EXPECT_NE(error, "");
   noPartialFiles(dir);
 
@@ -551,7 +579,7 @@ TEST(ImageIO, ErrorsLeaveNoFiles)
   // file is written next to it, the rename fails, the temporary goes.
   const fs::path blocked = dir / "blocked.png";
   fs::create_directories(blocked / "keep");
-  error = riemann::WriteImage(blocked.string(), image);
+  error = WriteError(blocked.string(), image);
   EXPECT_NE(error, "");
   EXPECT_NE(error.find("could not write"), std::string::npos) << error;
   EXPECT_TRUE(fs::is_directory(blocked / "keep")) << "the folder is untouched";
@@ -560,36 +588,36 @@ TEST(ImageIO, ErrorsLeaveNoFiles)
   // An existing file is replaced whole.
   const fs::path existing = dir / "existing.png";
   std::ofstream(existing) << "old contents";
-  EXPECT_EQ(riemann::WriteImage(existing.string(), image), "");
+  EXPECT_EQ(WriteError(existing.string(), image), "");
   riemann::Image back;
-  EXPECT_EQ(riemann::ReadImage(existing.string(), back), "");
+  EXPECT_EQ(ReadError(existing.string(), back), "");
   EXPECT_EQ(back.Width, 2);
   noPartialFiles(dir);
 
   // Unsupported extensions, and none.
   for (const char* name : { "out.jpg", "out.tif", "out", "out.png.txt" })
   {
-    error = riemann::WriteImage((dir / name).string(), image);
+    error = WriteError((dir / name).string(), image);
     EXPECT_NE(error.find("unsupported image format"), std::string::npos) << name << ": " << error;
     EXPECT_FALSE(fs::exists(dir / name)) << name;
   }
   // A dot in a folder name is no extension.
   fs::create_directories(dir / "folder.png");
-  error = riemann::WriteImage((dir / "folder.png" / "out").string(), image);
+  error = WriteError((dir / "folder.png" / "out").string(), image);
   EXPECT_NE(error.find("unsupported image format"), std::string::npos) << error;
 
   // An empty or inconsistent image.
   riemann::Image empty;
-  EXPECT_NE(riemann::WriteImage((dir / "empty.png").string(), empty), "");
+  EXPECT_NE(WriteError((dir / "empty.png").string(), empty), "");
   riemann::Image inconsistent = image;
   inconsistent.Pixels.pop_back();
-  EXPECT_NE(riemann::WriteImage((dir / "inconsistent.png").string(), inconsistent), "");
+  EXPECT_NE(WriteError((dir / "inconsistent.png").string(), inconsistent), "");
   EXPECT_FALSE(fs::exists(dir / "empty.png"));
   EXPECT_FALSE(fs::exists(dir / "inconsistent.png"));
   noPartialFiles(dir);
 
   // Reading: a missing file, and a file that is no image.
-  EXPECT_NE(riemann::ReadImage((dir / "nothing-here.png").string(), back), "");
+  EXPECT_NE(ReadError((dir / "nothing-here.png").string(), back), "");
   std::ofstream(dir / "garbage.png") << "not a png";
-  EXPECT_NE(riemann::ReadImage((dir / "garbage.png").string(), back), "");
+  EXPECT_NE(ReadError((dir / "garbage.png").string(), back), "");
 }
