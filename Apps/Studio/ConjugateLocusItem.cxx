@@ -19,15 +19,14 @@ namespace studio
 {
 ConjugateLocusItem::ConjugateLocusItem(const QString& name)
   : PipelineItem(name,
-      { { "Observer", { 0.0, 0.0, 2.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
-        { "ConeAngle", 30.0 }, { "NumberOfDirections", 800 },
-        { "MaximumNumberOfConjugatePoints", 2 }, { "Tolerance", 1e-8 },
-        // The filter's own defaults: adaptive; its error follows Tolerance
-        // (Tolerance / 100), MaximumError only caps it.
-        { "IntegratorType", "dp45" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
-        { "MaximumIntegrationStep", 0.1 },
-        { "MaximumPropagation", 6.0 }, { "MaximumNumberOfSteps", 100000 },
-        { "ColorArray", "ArcLength" } })
+      // Adaptive, as the filter: its error follows Tolerance (Tolerance /
+      // 100), MaximumError only caps it.
+      WithIntegrationDefaults(
+        { { "Observer", { 0.0, 0.0, 2.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
+          { "ConeAngle", 30.0 }, { "NumberOfDirections", 800 },
+          { "MaximumNumberOfConjugatePoints", 2 }, { "Tolerance", 1e-8 },
+          { "MaximumIntegrationStep", 0.1 }, { "ColorArray", "ArcLength" } },
+        "dp45", 6.0))
 {
   for (vtkActor* actor : { this->Points.Get(), this->Caustics.Get() })
   {

@@ -19,11 +19,11 @@ namespace studio
 {
 ExponentialMapItem::ExponentialMapItem(const QString& name)
   : PipelineItem(name,
-      { { "Observer", { 0.0, 0.0, 3.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
-        { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 }, { "Radii", { 1.25, 2.5, 3.75, 5.0 } },
-        { "IntegratorType", "rk4" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
-        { "MaximumPropagation", 5.0 }, { "MaximumNumberOfSteps", 10000 },
-        { "ColorArray", "TransverseJacobian" } })
+      WithIntegrationDefaults(
+        { { "Observer", { 0.0, 0.0, 3.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
+          { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 },
+          { "Radii", { 1.25, 2.5, 3.75, 5.0 } }, { "ColorArray", "TransverseJacobian" } },
+        "rk4", 5.0))
 {
   for (vtkActor* actor : { this->Rays.Get(), this->Wavefronts.Get() })
   {

@@ -52,10 +52,11 @@ vtkSmartPointer<vtkPolyData> MakeSeeds(
 
 GeodesicsItem::GeodesicsItem(const QString& name)
   : PipelineItem(name,
-      { { "StartPosition", { -3.0, 0.0, 0.0 } }, { "ConeAxis", { 1.0, 0.0, 0.0 } },
-        { "ConeAngle", 15.0 }, { "NumberOfDirections", 24 }, { "IntegrationDirection", "forward" },
-        { "IntegratorType", "rk4" }, { "InitialIntegrationStep", 0.01 }, { "MaximumError", 1e-6 },
-        { "MaximumPropagation", 7.0 }, { "MaximumNumberOfSteps", 10000 } })
+      WithIntegrationDefaults(
+        { { "StartPosition", { -3.0, 0.0, 0.0 } }, { "ConeAxis", { 1.0, 0.0, 0.0 } },
+          { "ConeAngle", 15.0 }, { "NumberOfDirections", 24 },
+          { "IntegrationDirection", "forward" } },
+        "rk4", 7.0))
 {
   vtkNew<vtkPolyDataMapper> mapper;
   this->Lines->SetMapper(mapper);

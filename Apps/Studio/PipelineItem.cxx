@@ -4,6 +4,7 @@
 
 #include "ColorMaps.h"
 
+#include "vtkNew.h"
 #include "vtkRiemannIntegrationSettings.h"
 
 #include "vtkAlgorithm.h"
@@ -337,6 +338,17 @@ void PipelineItem::ApplyIntegration(vtkRiemannIntegrationSettings* settings) con
   settings->SetMaximumError(this->Number("MaximumError"));
   settings->SetMaximumPropagation(this->Number("MaximumPropagation"));
   settings->SetMaximumNumberOfSteps(this->Integer("MaximumNumberOfSteps"));
+}
+
+nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrator, double length)
+{
+  vtkNew<vtkRiemannIntegrationSettings> defaults;
+  own["IntegratorType"] = integrator;
+  own["InitialIntegrationStep"] = defaults->GetInitialIntegrationStep();
+  own["MaximumError"] = defaults->GetMaximumError();
+  own["MaximumPropagation"] = length;
+  own["MaximumNumberOfSteps"] = defaults->GetMaximumNumberOfSteps();
+  return own;
 }
 
 std::vector<PropertySpec> IntegrationPropertySpecs()

@@ -89,6 +89,14 @@ QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value
  */
 std::vector<PropertySpec> IntegrationPropertySpecs();
 
+/**
+ * An item's defaults with the integration settings added: the toolkit's own
+ * (a new vtkRiemannIntegrationSettings, that is the core's GeodesicOptions,
+ * as `riemann trace` has them: one default per setting), except the
+ * integrator and the arc length, which are the item's choice.
+ */
+nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrator, double length);
+
 /// What a job needs from the document, copied on the GUI thread.
 struct JobInputs
 {

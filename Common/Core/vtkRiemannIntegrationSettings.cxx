@@ -10,6 +10,18 @@
 
 vtkStandardNewMacro(vtkRiemannIntegrationSettings);
 
+vtkRiemannIntegrationSettings::vtkRiemannIntegrationSettings()
+{
+  const riemann::GeodesicOptions defaults;
+  this->IntegratorType = static_cast<int>(defaults.Integrator);
+  this->InitialIntegrationStep = defaults.Step;
+  this->MinimumIntegrationStep = defaults.MinimumStep;
+  this->MaximumIntegrationStep = defaults.MaximumStep;
+  this->MaximumError = defaults.Tolerance;
+  this->MaximumPropagation = defaults.MaximumLength;
+  this->MaximumNumberOfSteps = static_cast<vtkIdType>(defaults.MaximumSteps);
+}
+
 namespace
 {
 /// "" when `value` is finite and > 0, else the sentence naming `name`.

@@ -110,7 +110,7 @@ public:
   ///@}
 
   ///@{
-  /// Steps after which each geodesic stops. Default 10000.
+  /// Steps after which each geodesic stops. Default 100000 (GeodesicOptions).
   vtkSetMacro(MaximumNumberOfSteps, vtkIdType);
   vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
   ///@}
@@ -137,16 +137,19 @@ public:
     vtkRiemannIntegrationSettings* settings);
 
 protected:
-  vtkRiemannIntegrationSettings() = default;
+  /// The defaults are the core's (riemann::GeodesicOptions), the same as
+  /// `riemann trace`'s: one default per setting. Renderers then set the
+  /// rays' own (vtkRiemannSetRayDefaults, riemann::RaySettings).
+  vtkRiemannIntegrationSettings();
   ~vtkRiemannIntegrationSettings() override = default;
 
   int IntegratorType = RUNGE_KUTTA4;
-  double InitialIntegrationStep = 0.01;
-  double MinimumIntegrationStep = 1e-7;
-  double MaximumIntegrationStep = 0.5;
-  double MaximumError = 1e-8;
-  double MaximumPropagation = 10.0;
-  vtkIdType MaximumNumberOfSteps = 10000;
+  double InitialIntegrationStep = 0.0;
+  double MinimumIntegrationStep = 0.0;
+  double MaximumIntegrationStep = 0.0;
+  double MaximumError = 0.0;
+  double MaximumPropagation = 0.0;
+  vtkIdType MaximumNumberOfSteps = 0;
 
 private:
   vtkRiemannIntegrationSettings(const vtkRiemannIntegrationSettings&) = delete;

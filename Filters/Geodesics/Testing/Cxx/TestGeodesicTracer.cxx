@@ -683,7 +683,7 @@ TEST(GeodesicTracer, ParallelEqualsSerialCore)
   options.Integrator = riemann::IntegratorType::RungeKutta4;
   options.Step = 0.02;
   options.MaximumLength = 2.0;
-  options.MaximumSteps = 10000; // the filter's default
+  options.MaximumSteps = 100000; // the filter's default: the core's (GeodesicOptions)
   std::vector<riemann::GeodesicPath> reference(2 * count);
   for (int i = 0; i < count; ++i)
   {
