@@ -26,6 +26,7 @@ VTK = re.compile(r"^libvtk")
 ALLOWED = {
     "RiemannCommonMetric": (["libginac", "libcln", "libhwy"], [], False),
     "RiemannRenderingCore": ([], ["RiemannCommonMetric"], False),
+    "RiemannRenderingMeshes": (["libembree3"], ["RiemannRenderingCore", "RiemannCommonMetric"], False),
     "RiemannRenderingImageIO": (["libOpenImageIO", "libOpenImageIO_Util"],
                                 ["RiemannRenderingCore", "RiemannCommonMetric"], False),
     "RiemannCommonCore": (["libz"], ["RiemannCommonMetric"], True),
@@ -34,17 +35,18 @@ ALLOWED = {
     "RiemannRenderingScene": ([], ["RiemannCommonCore", "RiemannRenderingCore", "RiemannCommonMetric"], True),
     "RiemannRenderingCPU": (["libembree3", "libtbb"],
                             ["RiemannFiltersGeodesics", "RiemannRenderingScene", "RiemannRenderingImageIO",
-                             "RiemannCommonCore", "RiemannRenderingCore", "RiemannCommonMetric"], True),
+                             "RiemannRenderingMeshes", "RiemannCommonCore", "RiemannRenderingCore",
+                             "RiemannCommonMetric"], True),
     "RiemannRenderingOpenGL": (["libGLEW"],
-                               ["RiemannRenderingImageIO", "RiemannRenderingScene", "RiemannRenderingCore",
-                                "RiemannCommonCore", "RiemannCommonMetric"], True),
+                               ["RiemannRenderingImageIO", "RiemannRenderingMeshes", "RiemannRenderingScene",
+                                "RiemannRenderingCore", "RiemannCommonCore", "RiemannCommonMetric"], True),
 }
 
 # Linked today against the layering above: (library, dependency) -> why.
 KNOWN = {
-    ("RiemannRenderingOpenGL", "RiemannRenderingCPU"):
-        "the GPU pass builds its mesh hierarchy with the CPU tracer's RiemannMeshBVH, which brings "
-        "Embree and the geodesic filters in; the BVH is to move into a rendering library both use",
+    # None since the meshes' hierarchy moved to Rendering/Meshes: the GPU
+    # module had linked the CPU tracer's module for it, which brought Embree's
+    # ray queries and the geodesic filters in.
 }
 
 

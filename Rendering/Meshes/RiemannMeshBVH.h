@@ -28,7 +28,7 @@
 #ifndef RiemannMeshBVH_h
 #define RiemannMeshBVH_h
 
-#include "RiemannRenderingCPUModule.h" // For export macro
+#include "RiemannRenderingMeshesExport.h" // For export macro
 #include "RiemannSceneIntersection.h"
 
 #include <cstddef>
@@ -102,7 +102,7 @@ struct MeshBVH
  * vertices, or the tree is deeper than MeshBVHStackSize. A scene without
  * meshes gives an empty MeshBVH.
  */
-RIEMANNRENDERINGCPU_EXPORT MeshBVH BuildMeshBVH(
+RIEMANNRENDERINGMESHES_EXPORT MeshBVH BuildMeshBVH(
   const Scene& scene, const std::function<bool(double)>& progress = nullptr);
 
 /**
@@ -111,7 +111,7 @@ RIEMANNRENDERINGCPU_EXPORT MeshBVH BuildMeshBVH(
  * vertex normal where the mesh has them, else the face's), Object,
  * Primitive, U, V as EmbreeMeshIntersector gives them. False when none.
  */
-RIEMANNRENDERINGCPU_EXPORT bool IntersectMeshBVH(
+RIEMANNRENDERINGMESHES_EXPORT bool IntersectMeshBVH(
   const MeshBVH& bvh, const Vec3& a, const Vec3& b, SceneHit& hit);
 } // namespace riemann
 
