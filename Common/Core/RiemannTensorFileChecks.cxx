@@ -95,27 +95,10 @@ bool FiniteNumbers(const std::string& text, int count)
   return found == count;
 }
 
-/// A file's text in a message: bytes that are not printable ASCII as \xNN
-/// (a binary file's bytes must not reach the terminal), at most 60 characters.
+/// A file's text in a message (PrintableFileText): at most 60 characters.
 std::string Shortened(const std::string& text)
 {
-  std::string shown;
-  for (std::size_t i = 0; i < text.size() && i < 60; ++i)
-  {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7f)
-    {
-      shown += static_cast<char>(c);
-    }
-    else
-    {
-      static const char* digits = "0123456789abcdef";
-      shown += "\\x";
-      shown += digits[c >> 4];
-      shown += digits[c & 15];
-    }
-  }
-  return text.size() > 60 ? shown + "..." : shown;
+  return PrintableFileText(text, 60);
 }
 
 } // namespace

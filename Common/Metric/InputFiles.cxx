@@ -89,4 +89,25 @@ std::string ReadInputFile(
   }
   return text;
 }
+
+std::string PrintableFileText(const std::string& text, std::size_t most)
+{
+  static const char* digits = "0123456789abcdef";
+  std::string shown;
+  for (std::size_t i = 0; i < text.size() && i < most; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      shown += static_cast<char>(c);
+    }
+    else
+    {
+      shown += "\\x";
+      shown += digits[c >> 4];
+      shown += digits[c & 15];
+    }
+  }
+  return text.size() > most ? shown + "..." : shown;
+}
 } // namespace riemann

@@ -1,6 +1,7 @@
 /**
  * @file InputFiles.h
- * @brief Files a user names as input, checked before they are opened.
+ * @brief Files a user names as input, checked before they are opened, and
+ * their text as messages show it.
  *
  * A path may name anything: a device (`/dev/zero` reads without end), a
  * FIFO (opening it blocks until a writer comes), a folder. Every reader of
@@ -35,6 +36,12 @@ RIEMANNCOMMONMETRIC_EXPORT std::string InputFileProblem(const std::string& path,
  */
 RIEMANNCOMMONMETRIC_EXPORT std::string ReadInputFile(
   const std::string& path, const std::string& what, std::uint64_t maximumBytes);
+/**
+ * Text read from a file as a message shows it: bytes that are not printable
+ * ASCII as \xNN (a binary file's bytes must not reach the terminal), at
+ * most `most` characters of the text, then "...".
+ */
+RIEMANNCOMMONMETRIC_EXPORT std::string PrintableFileText(const std::string& text, std::size_t most);
 } // namespace riemann
 
 #endif

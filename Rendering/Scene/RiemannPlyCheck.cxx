@@ -1,5 +1,7 @@
 #include "RiemannPlyCheck.h"
 
+#include "InputFiles.h"
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -16,28 +18,10 @@ namespace riemann
 {
 namespace
 {
-/// Text of the file in a message: bytes that are not printable ASCII as
-/// \xNN (a binary file's bytes must not reach the terminal), at most 40
-/// characters of it.
+/// Text of the file in a message (PrintableFileText): at most 40 characters.
 std::string Printable(const std::string& text)
 {
-  std::string shown;
-  for (std::size_t i = 0; i < text.size() && i < 40; ++i)
-  {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7f)
-    {
-      shown += static_cast<char>(c);
-    }
-    else
-    {
-      static const char* digits = "0123456789abcdef";
-      shown += "\\x";
-      shown += digits[c >> 4];
-      shown += digits[c & 15];
-    }
-  }
-  return text.size() > 40 ? shown + "..." : shown;
+  return PrintableFileText(text, 40);
 }
 
 /// Printable(text) in quotes.
