@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace riemann
@@ -19,6 +20,19 @@ inline std::filesystem::path DataDirectory()
   const char* dir = std::getenv("RIEMANN_DATA_DIR");
   return dir && *dir ? std::filesystem::path(dir) : std::filesystem::path(RIEMANN_TEST_DATA_DIR);
 }
+/// The checkout's top folder (the Data folder's parent): regression inputs
+/// kept next to the code they test are found from it.
+inline std::filesystem::path SourceDirectory()
+{
+  return DataDirectory().parent_path();
+}
+
+/// Write `bytes` to `path` as they are (binary), replacing the file.
+inline void WriteTestFile(const std::filesystem::path& path, const std::string& bytes)
+{
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
 /// A folder `name` for a test's own files, created: under $RIEMANN_TEST_OUTPUT_DIR when set,
 /// else under the system's temporary folder.
 inline std::filesystem::path TestOutputDirectory(const std::string& name)

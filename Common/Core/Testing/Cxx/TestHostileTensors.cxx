@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 fs::path HostileTensors()
 {
-  return riemann::testing::DataDirectory().parent_path() / "Common" / "Core" / "Testing" /
+  return riemann::testing::SourceDirectory() / "Common" / "Core" / "Testing" /
     "Data" / "hostile-tensors";
 }
 
@@ -45,10 +45,7 @@ std::string MetricError(const fs::path& file)
   return metric->SetDefinitionFile(json.c_str()) ? std::string() : metric->GetLastError();
 }
 
-void Write(const fs::path& path, const std::string& bytes)
-{
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+using riemann::testing::WriteTestFile;
 
 /// A little-endian NIfTI-1 header (348 bytes, then 4 of extension flags) of a
 /// 2 x 2 x 2 x 6 float volume, vox_offset 352, and `dataBytes` bytes of data.
@@ -102,16 +99,16 @@ TEST(HostileTensors, EachIsRefusedWithItsReason)
 TEST(HostileTensors, NiftiHeadersAreChecked)
 {
   const fs::path good = Scratch("good.nii");
-  Write(good, Nifti(16, 2 * 2 * 2 * 6 * 4));
+  WriteTestFile(good, Nifti(16, 2 * 2 * 2 * 6 * 4));
   EXPECT_EQ(riemann::CheckNiftiFile(good.string()), "");
   const fs::path cut = Scratch("cut.nii");
-  Write(cut, Nifti(16, 100));
+  WriteTestFile(cut, Nifti(16, 100));
   EXPECT_NE(riemann::CheckNiftiFile(cut.string())
               .find("declares 192 bytes of voxel data after byte 352, but the file has 452 bytes"),
     std::string::npos)
     << riemann::CheckNiftiFile(cut.string());
   const fs::path tiny = Scratch("tiny.nii");
-  Write(tiny, "not a header");
+  WriteTestFile(tiny, "not a header");
   EXPECT_NE(riemann::CheckNiftiFile(tiny.string()).find("shorter than a NIfTI header"),
     std::string::npos);
 }
@@ -121,7 +118,7 @@ TEST(HostileTensors, NrrdHeadersAreChecked)
   const std::string header = "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 2 2\n"
                              "encoding: raw\nendian: little\n";
   const fs::path good = Scratch("good.nrrd");
-  Write(good, header + "\n" + std::string(6 * 8 * 4, '\0'));
+  WriteTestFile(good, header + "\n" + std::string(6 * 8 * 4, '\0'));
   EXPECT_EQ(riemann::CheckNrrdFile(good.string()), "");
   const struct
   {
@@ -149,7 +146,7 @@ TEST(HostileTensors, NrrdHeadersAreChecked)
   for (const auto& c : cases)
   {
     const fs::path file = Scratch(c.Name);
-    Write(file, c.Bytes);
+    WriteTestFile(file, c.Bytes);
     const std::string problem = riemann::CheckNrrdFile(file.string());
     EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
   }
@@ -197,13 +194,13 @@ TEST(HostileTensors, GzipNrrdSizesMustMatch)
   const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::size_t body = original.find("\n\n") + 2;
   const fs::path more = Scratch("more.nrrd");
-  Write(more, header + original.substr(body)); // 1.5 MB of values for 192 bytes
+  WriteTestFile(more, header + original.substr(body)); // 1.5 MB of values for 192 bytes
   const std::string error = MetricError(more);
   EXPECT_NE(error.find("inflates to more than the 192 bytes the header declares"),
     std::string::npos)
     << error;
   const fs::path less = Scratch("less.nrrd");
-  Write(less,
+  WriteTestFile(less,
     "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 80 40 40\nencoding: gzip\nendian: little\n\n" +
       original.substr(body));
   EXPECT_NE(MetricError(less).find("inflates to 1536000 bytes; the header declares 3072000"),
@@ -235,7 +232,7 @@ TEST(HostileTensors, VtiHeadersAreChecked)
       data + "\n</AppendedData>\n</VTKFile>\n";
   };
   const fs::path good = Scratch("good.vti");
-  Write(good, vti("0 1 0 1 0 1", "0.5 0.5 0.5", 8));
+  WriteTestFile(good, vti("0 1 0 1 0 1", "0.5 0.5 0.5", 8));
   EXPECT_EQ(riemann::CheckVtiFile(good.string()), "");
   EXPECT_EQ(MetricError(good), "");
   const struct
@@ -259,7 +256,7 @@ TEST(HostileTensors, VtiHeadersAreChecked)
   for (const auto& c : cases)
   {
     const fs::path file = Scratch(c.Name);
-    Write(file, c.Bytes);
+    WriteTestFile(file, c.Bytes);
     const std::string problem = riemann::CheckVtiFile(file.string());
     EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
     EXPECT_NE(MetricError(file).find(c.Reason), std::string::npos) << c.Name;
@@ -274,12 +271,12 @@ TEST(HostileTensors, FoundByFuzzing)
   // has no newline (its length was counted a byte past the file), a NUL
   // byte in a size.
   const fs::path corpus =
-    riemann::testing::DataDirectory().parent_path() / "Testing" / "Fuzz" / "tensor-corpus";
+    riemann::testing::SourceDirectory() / "Testing" / "Fuzz" / "tensor-corpus";
   EXPECT_NE(riemann::CheckNiftiFile((corpus / "found-vox-offset-2.8e20.nii").string())
               .find("vox_offset 2.81751e+20 is not a byte offset"),
     std::string::npos);
   const fs::path cut = Scratch("no-newline.nrrd");
-  Write(cut, "NRRD0004\ntype: float");
+  WriteTestFile(cut, "NRRD0004\ntype: float");
   const riemann::NrrdHeader header = riemann::ReadNrrdHeader(cut.string());
   EXPECT_TRUE(header.Magic);
   EXPECT_EQ(header.Bytes, 20u) << "the file's length, not a byte more";
@@ -287,7 +284,7 @@ TEST(HostileTensors, FoundByFuzzing)
   // A NUL byte inside a size ended strtoull's reading: "40666...6\0..." passed
   // as a count (found-nul-in-sizes.nrrd).
   const fs::path nul = Scratch("nul-size.nrrd");
-  Write(nul, std::string("NRRD0004\ntype: float\ndimension: 1\nsizes: 6\0\0 \nencoding: raw\n\n", 61));
+  WriteTestFile(nul, std::string("NRRD0004\ntype: float\ndimension: 1\nsizes: 6\0\0 \nencoding: raw\n\n", 61));
   EXPECT_NE(riemann::CheckNrrdFile(nul.string()).find("\"6\\x00\\x00\" is not a positive count"),
     std::string::npos)
     << riemann::CheckNrrdFile(nul.string());
@@ -295,7 +292,7 @@ TEST(HostileTensors, FoundByFuzzing)
     std::string::npos);
   // Binary text is shown as \xNN, never raw.
   const fs::path binary = Scratch("binary.nrrd");
-  Write(binary, std::string("NRRD0004\ntype: fl\x01\0at\ndimension: 1\nsizes: 6\nencoding: raw\n\n", 58));
+  WriteTestFile(binary, std::string("NRRD0004\ntype: fl\x01\0at\ndimension: 1\nsizes: 6\nencoding: raw\n\n", 58));
   EXPECT_NE(riemann::CheckNrrdFile(binary.string()).find("unknown type \"fl\\x01\\x00at\""),
     std::string::npos)
     << riemann::CheckNrrdFile(binary.string());

@@ -47,11 +47,6 @@ fs::path ScratchDirectory()
   return dir;
 }
 
-void WriteFile(const fs::path& path, const std::string& text)
-{
-  std::ofstream file(path, std::ios::binary);
-  file << text;
-}
 
 /// The message ParseScene throws for `json` ("" if it parses).
 std::string ErrorOf(const std::string& json, const std::string& base = ".")
@@ -245,7 +240,7 @@ TEST(Scene, PaperScenesShowTheGridFromInside)
 TEST(Scene, ParsesEveryKey)
 {
   const fs::path scratch = ScratchDirectory();
-  WriteFile(scratch / "sky.hdr", "not really an image; only its existence is checked");
+  riemann::testing::WriteTestFile(scratch / "sky.hdr", "not really an image; only its existence is checked");
   const std::string json = R"({
     "name": "everything", "description": "every key of the format",
     "metric": {"type": "graph", "gaussians": [{"amplitude": 1, "center": [0,0,0], "sigma": 0.5}]},
@@ -415,7 +410,7 @@ TEST(Scene, LoadSceneFileNamesTheFile)
 {
   const fs::path scratch = ScratchDirectory();
   const fs::path bad = scratch / "bad-scene.json";
-  WriteFile(bad, R"({"objects": [{"type": "sphere", "center": [0,0,0], "radius": 0}]})");
+  riemann::testing::WriteTestFile(bad, R"({"objects": [{"type": "sphere", "center": [0,0,0], "radius": 0}]})");
   try
   {
     LoadSceneFile(bad.string());
@@ -438,8 +433,8 @@ TEST(Scene, LoadSceneFileNamesTheFile)
   }
   // Relative names resolve against the scene file's folder.
   fs::create_directories(scratch / "sub");
-  WriteFile(scratch / "sub" / "metric.json", R"({"type": "diffeo", "preset": "twist"})");
-  WriteFile(scratch / "sub" / "scene.json", R"({"metric": "metric.json"})");
+  riemann::testing::WriteTestFile(scratch / "sub" / "metric.json", R"({"type": "diffeo", "preset": "twist"})");
+  riemann::testing::WriteTestFile(scratch / "sub" / "scene.json", R"({"metric": "metric.json"})");
   EXPECT_NE(LoadSceneFile((scratch / "sub" / "scene.json").string()).MetricDefinition.find("twist"),
     std::string::npos);
 }

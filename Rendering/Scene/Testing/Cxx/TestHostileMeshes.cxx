@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 /// objects between checkouts, and Ninja gives relative paths).
 fs::path HostileMeshes()
 {
-  return riemann::testing::DataDirectory().parent_path() / "Rendering" / "Scene" / "Testing" /
+  return riemann::testing::SourceDirectory() / "Rendering" / "Scene" / "Testing" /
     "Data" / "hostile-meshes";
 }
 
@@ -98,10 +98,7 @@ std::string BinaryTriangle(bool bigEndian, const std::vector<std::int32_t>& indi
   return body;
 }
 
-void Write(const fs::path& path, const std::string& bytes)
-{
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+using riemann::testing::WriteTestFile;
 } // namespace
 
 TEST(HostileMeshes, EachIsRefusedWithItsReason)
@@ -136,7 +133,7 @@ TEST(HostileMeshes, GoodPlyFilesStillLoad)
          { "little.ply", little }, { "big.ply", big } })
   {
     const fs::path file = Scratch(name);
-    Write(file, bytes);
+    WriteTestFile(file, bytes);
     EXPECT_EQ(riemann::CheckPlyFile(file.string()), "") << name;
     EXPECT_EQ(LoadError(file), "") << name;
   }
@@ -180,7 +177,7 @@ TEST(HostileMeshes, PlyProblemsAreNamed)
   for (const auto& c : cases)
   {
     const fs::path file = Scratch(c.Name);
-    Write(file, c.Bytes);
+    WriteTestFile(file, c.Bytes);
     const std::string problem = riemann::CheckPlyFile(file.string());
     EXPECT_NE(problem.find(c.Reason), std::string::npos) << c.Name << ": " << problem;
     EXPECT_NE(LoadError(file).find(c.Reason), std::string::npos) << c.Name;
@@ -226,7 +223,7 @@ TEST(HostileMeshes, StlFilesAreCheckedAgainstTheirCount)
   for (const auto& c : cases)
   {
     const fs::path file = Scratch(c.Name);
-    Write(file, c.Bytes);
+    WriteTestFile(file, c.Bytes);
     const std::string problem = riemann::CheckStlFile(file.string());
     const std::string error = LoadError(file);
     if (*c.Reason == '\0')
@@ -257,7 +254,7 @@ TEST(HostileMeshes, VtkReadersMessagesArePlainSentences)
   // A VTK reader's error reaches the user without VTK's source path and the
   // reader's address (RiemannVtkMessages.h).
   const fs::path file = Scratch("garbage.vtp");
-  Write(file, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><PolyData><Piece");
+  WriteTestFile(file, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><PolyData><Piece");
   const std::string error = LoadError(file);
   EXPECT_NE(error.find("cannot read the mesh: vtkXMLPolyDataReader: "), std::string::npos) << error;
   EXPECT_EQ(error.find("ERROR: In"), std::string::npos) << error;
