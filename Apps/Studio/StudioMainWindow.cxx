@@ -47,6 +47,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QCoreApplication>
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
@@ -766,6 +767,10 @@ QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
   }
   else
   {
+    // The inside view's still frame finished first (Capture refines it to
+    // the end): the window's own grab would show whichever lattice was last.
+    this->InsideWidget->Capture();
+    QCoreApplication::processEvents();
     image = this->grab().toImage();
   }
   if (image.isNull())

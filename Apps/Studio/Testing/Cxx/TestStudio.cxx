@@ -210,6 +210,7 @@ private Q_SLOTS:
   void MovingTheCameraTracesFewerRaysUntilItStops();
   void HoldingASliderTracesFewerRaysUntilItIsLetGo();
   void StillFramesComeInPiecesAndTheWindowAnswers();
+  void WindowScreenshotWaitsForTheFinishedPicture();
   void TheWheelPreviewsThenRefines();
 };
 
@@ -977,6 +978,29 @@ void TestStudio::StillFramesComeInPiecesAndTheWindowAnswers()
   inside->Pass()->ProgressiveRefinementOff();
   inside->RenderNow();
   QCOMPARE(DifferentPixels(refined, inside->grabFramebuffer()), 0.0);
+}
+
+void TestStudio::WindowScreenshotWaitsForTheFinishedPicture()
+{
+  // `riemann-studio --screenshot` (the whole window) once saved the inside
+  // view at whichever lattice it had reached: "refining: 1 ray per 2.0 x 2.0
+  // pixels" in the status bar of the picture.
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
+  QSignalSpy drawn(inside, &InsideView::ViewDrawn);
+  QSlider* slider = window->Parameters()->Slider("/parameters/a");
+  QVERIFY(slider);
+  slider->setValue(slider->value() + 40);
+  QTRY_VERIFY(drawn.count() >= 1);
+  QVERIFY(!inside->Pass()->GetRefinementComplete());
+  QTemporaryDir folder;
+  const QString path = folder.filePath("window.png");
+  QCOMPARE(window->SaveScreenshot(path, StudioMainWindow::WindowShot), QString());
+  QVERIFY(inside->Pass()->GetRefinementComplete());
+  QVERIFY2(window->FrameTimeText().startsWith("frame "), qPrintable(window->FrameTimeText()));
+  QVERIFY(!QImage(path).isNull());
 }
 
 void TestStudio::TheWheelPreviewsThenRefines()
