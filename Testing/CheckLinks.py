@@ -23,23 +23,34 @@ RUNTIME = re.compile(r"^(libstdc\+\+|libm|libc|libgcc_s|ld-linux-x86-64|libpthre
 VTK = re.compile(r"^libvtk")
 
 # Riemann library -> (third-party soname prefixes, Riemann libraries, may it need VTK)
+CORE = ["RiemannCommonMetricFormat", "RiemannCommonExpressions", "RiemannCommonJacobi",
+        "RiemannCommonMetric", "RiemannCommonPackets"]
 ALLOWED = {
-    "RiemannCommonMetric": (["libginac", "libcln", "libhwy"], [], False),
-    "RiemannRenderingCore": ([], ["RiemannCommonMetric"], False),
-    "RiemannRenderingMeshes": (["libembree3"], ["RiemannRenderingCore", "RiemannCommonMetric"], False),
+    # The VTK-free core, bottom up: the packet engine (Highway), the metric
+    # core (nothing but the engine), typed expressions (GiNaC; Highway for
+    # their packet interpreter), Jacobi fields, the JSON metric format.
+    "RiemannCommonPackets": (["libhwy"], [], False),
+    "RiemannCommonMetric": ([], ["RiemannCommonPackets"], False),
+    "RiemannCommonExpressions": (["libginac", "libcln", "libhwy"],
+                                 ["RiemannCommonMetric", "RiemannCommonPackets"], False),
+    "RiemannCommonJacobi": ([], ["RiemannCommonMetric", "RiemannCommonPackets"], False),
+    "RiemannCommonMetricFormat": ([], ["RiemannCommonExpressions", "RiemannCommonMetric",
+                                       "RiemannCommonPackets"], False),
+    "RiemannRenderingCore": ([], CORE, False),
+    "RiemannRenderingMeshes": (["libembree3"], ["RiemannRenderingCore"] + CORE, False),
     "RiemannRenderingImageIO": (["libOpenImageIO", "libOpenImageIO_Util"],
-                                ["RiemannRenderingCore", "RiemannCommonMetric"], False),
-    "RiemannCommonCore": (["libz"], ["RiemannCommonMetric"], True),
-    "RiemannFiltersGeodesics": (["libtbb"], ["RiemannCommonCore", "RiemannCommonMetric"], True),
-    "RiemannFiltersFields": (["libtbb"], ["RiemannCommonCore", "RiemannCommonMetric"], True),
-    "RiemannRenderingScene": ([], ["RiemannCommonCore", "RiemannRenderingCore", "RiemannCommonMetric"], True),
+                                ["RiemannRenderingCore"] + CORE, False),
+    "RiemannCommonCore": (["libz"], CORE, True),
+    "RiemannFiltersGeodesics": (["libtbb"], ["RiemannCommonCore"] + CORE, True),
+    "RiemannFiltersFields": (["libtbb"], ["RiemannCommonCore"] + CORE, True),
+    "RiemannRenderingScene": ([], ["RiemannCommonCore", "RiemannRenderingCore"] + CORE, True),
     "RiemannRenderingCPU": (["libembree3", "libtbb"],
                             ["RiemannFiltersGeodesics", "RiemannRenderingScene", "RiemannRenderingImageIO",
-                             "RiemannRenderingMeshes", "RiemannCommonCore", "RiemannRenderingCore",
-                             "RiemannCommonMetric"], True),
+                             "RiemannRenderingMeshes", "RiemannCommonCore", "RiemannRenderingCore"] + CORE,
+                            True),
     "RiemannRenderingOpenGL": (["libGLEW"],
                                ["RiemannRenderingImageIO", "RiemannRenderingMeshes", "RiemannRenderingScene",
-                                "RiemannRenderingCore", "RiemannCommonCore", "RiemannCommonMetric"], True),
+                                "RiemannRenderingCore", "RiemannCommonCore"] + CORE, True),
 }
 
 # Linked today against the layering above: (library, dependency) -> why.

@@ -5,6 +5,7 @@
 
 #include "Curvature.h"
 #include "GlslSource.h"
+#include "MetricGlsl.h"
 #include "Metric.h"
 #include "vtkRiemannMetric.h"
 

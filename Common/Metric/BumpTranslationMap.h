@@ -12,6 +12,7 @@
 
 #include "ScalarField.h"
 #include "SpaceMap.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

@@ -251,4 +251,11 @@ bool ComputeCurvature(const Metric& metric, const Vec3& p, CurvatureSample& samp
     std::isfinite(sample.SectionalMin) && std::isfinite(sample.SectionalMax) &&
     sample.Ricci.allFinite() && std::isfinite(sample.VolumeForm);
 }
+LaneMask ComputeCurvature(
+  const Metric& metric, const PacketVec3& x, LaneMask lanes, PacketCurvature& curvature)
+{
+  PacketTensorJet jet;
+  const LaneMask derived = metric.TensorSecondDerivativesPacket(x, jet, lanes);
+  return CurvatureFromTensorJet(jet, curvature) & derived & lanes;
+}
 } // namespace riemann

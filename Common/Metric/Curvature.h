@@ -20,6 +20,8 @@
 #define RiemannCurvature_h
 
 #include "Metric.h"
+#include "PacketCurvature.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {
@@ -55,6 +57,15 @@ struct CurvatureSample
  */
 RIEMANNCOMMONMETRIC_EXPORT bool ComputeCurvature(
   const Metric& metric, const Vec3& p, CurvatureSample& sample);
+
+/**
+ * The same at the lanes of `lanes` of PacketWidth points (the packet
+ * engine's form, PacketCurvature.h): the metric's
+ * TensorSecondDerivativesPacket, then CurvatureFromTensorJet. Returns the
+ * lanes where it is defined (as the scalar ComputeCurvature's true).
+ */
+RIEMANNCOMMONMETRIC_EXPORT LaneMask ComputeCurvature(
+  const Metric& metric, const PacketVec3& x, LaneMask lanes, PacketCurvature& curvature);
 
 /**
  * g, g^-1, the Christoffel symbols gamma[m](i, j) = Gamma^m_ij and their exact

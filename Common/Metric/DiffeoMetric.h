@@ -12,6 +12,7 @@
 
 #include "Metric.h"
 #include "SpaceMap.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

@@ -6,6 +6,7 @@
 #define RiemannEuclideanMetric_h
 
 #include "Metric.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {

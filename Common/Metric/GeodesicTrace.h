@@ -7,6 +7,7 @@
 #define RiemannGeodesicTrace_h
 
 #include "Integrators.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <vector>
 

@@ -1,7 +1,5 @@
 #include "GlslSource.h"
 
-#include "Metric.h"
-
 #include <sstream>
 
 namespace riemann
@@ -49,17 +47,5 @@ std::string GlslBuilder::Source() const
     s << "\n" << f;
   }
   return s.str();
-}
-
-MetricGlsl EmitMetricGlsl(const Metric& metric, const GlslEmitOptions& options)
-{
-  GlslBuilder builder(options);
-  metric.EmitGlsl(builder);
-  const std::string& inside = builder.GetInsideDataFunction();
-  builder.AddFunction("bool rt_metric_inside(vec3 p)\n"
-                      "{\n"
-                      "  return " +
-    (inside.empty() ? std::string("true") : inside + "(p)") + ";\n}\n");
-  return { builder.Source(), builder.GetUniforms(), builder.GetTextures() };
 }
 } // namespace riemann

@@ -37,8 +37,6 @@
 
 namespace riemann
 {
-class Metric;
-
 /// A uniform of the generated source and its value.
 struct GlslUniform
 {
@@ -131,17 +129,6 @@ private:
   std::vector<std::string> Functions;
 };
 
-/// The metric part of the shader, and its uniform values.
-struct MetricGlsl
-{
-  std::string Source;
-  std::vector<GlslUniform> Uniforms;
-  std::vector<GlslTexture3D> Textures;
-};
-
-/// Emit the metric part of the shader; throws GlslUnsupportedError.
-RIEMANNCOMMONMETRIC_EXPORT MetricGlsl EmitMetricGlsl(
-  const Metric& metric, const GlslEmitOptions& options = GlslEmitOptions());
 } // namespace riemann
 
 #endif

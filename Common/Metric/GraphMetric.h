@@ -11,6 +11,7 @@
 
 #include "Metric.h"
 #include "ScalarField.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

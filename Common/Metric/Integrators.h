@@ -15,6 +15,7 @@
 
 #include "Metric.h"
 #include "RungeKutta.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {

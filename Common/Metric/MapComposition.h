@@ -8,6 +8,7 @@
 #define RiemannMapComposition_h
 
 #include "SpaceMap.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

@@ -9,6 +9,9 @@
  * finite (not positive definite, det J = 0, n <= 0, NaN): a geodesic reaching
  * such a point stops there with its own termination reason.
  *
+ * The packet integrators see a metric as a PacketGeodesicSystem (the
+ * interface of the packet engine's library, which lies below this one).
+ *
  * Metrics are immutable after construction: one instance may be evaluated
  * from any number of threads at once, and evaluation never allocates.
  */
@@ -18,6 +21,7 @@
 #include "GlslSource.h"
 #include "Jets.h"
 #include "Packet.h"
+#include "PacketGeodesicSystem.h"
 #include "RiemannCommonMetricExport.h"
 
 #include <string>
@@ -25,7 +29,7 @@
 
 namespace riemann
 {
-class RIEMANNCOMMONMETRIC_EXPORT Metric
+class RIEMANNCOMMONMETRIC_EXPORT Metric : public PacketGeodesicSystem
 {
 public:
   virtual ~Metric() = default;
@@ -71,8 +75,8 @@ public:
    * lane by lane; families whose providers have SIMD forms override it, with
    * results equal to Acceleration()'s to rounding.
    */
-  virtual LaneMask AccelerationPacket(
-    const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const;
+  LaneMask AccelerationPacket(
+    const PacketVec3& x, const PacketVec3& v, PacketVec3& a, LaneMask lanes) const override;
   /**
    * The Jacobi system's accelerations of PacketWidth geodesics with their
    * two variations (JacobiField.h): dy.V = a = -Gamma(v, v) and, for each
@@ -84,8 +88,8 @@ public:
    * packet (PacketCurvature.h); the graph and conformal families override
    * it with the derivatives of their closed-form accelerations.
    */
-  virtual LaneMask JacobiAccelerationPacket(
-    const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const;
+  LaneMask JacobiAccelerationPacket(
+    const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes) const override;
   /// g at PacketWidth points; the default calls Tensor() lane by lane.
   virtual LaneMask TensorPacket(const PacketVec3& x, PacketSym3& g, LaneMask lanes) const;
   /// g^ij at p. The default inverts Tensor() by Cholesky.

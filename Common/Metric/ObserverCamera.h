@@ -15,6 +15,7 @@
 #define RiemannObserverCamera_h
 
 #include "Metric.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {

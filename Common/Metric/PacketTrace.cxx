@@ -192,6 +192,7 @@ LaneMask BasicPacketStepper<State>::AdvanceAdaptive(const Metric& metric, State&
   return retry;
 }
 
+// Exported by the extern declarations in PacketTrace.h.
 template class BasicPacketStepper<PacketState>;
 template class BasicPacketStepper<PacketJacobiState>;
 

@@ -16,6 +16,7 @@
 
 #include "GeodesicTrace.h"
 #include "PacketKernels.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <cstddef>
 
@@ -30,7 +31,7 @@ namespace riemann
  * PacketJacobiStepper); both are instantiated in PacketTrace.cxx.
  */
 template <class State>
-class RIEMANNCOMMONMETRIC_EXPORT BasicPacketStepper
+class BasicPacketStepper
 {
 public:
   /// `tolerance` is dp45's mixed absolute/relative error per step.
@@ -67,8 +68,8 @@ private:
   LaneMask HaveDerivative = 0;
 };
 
-extern template class BasicPacketStepper<PacketState>;
-extern template class BasicPacketStepper<PacketJacobiState>;
+extern template class RIEMANNCOMMONMETRIC_EXPORT BasicPacketStepper<PacketState>;
+extern template class RIEMANNCOMMONMETRIC_EXPORT BasicPacketStepper<PacketJacobiState>;
 using PacketStepper = BasicPacketStepper<PacketState>;
 using PacketJacobiStepper = BasicPacketStepper<PacketJacobiState>;
 

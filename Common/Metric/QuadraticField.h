@@ -7,6 +7,7 @@
 #define RiemannQuadraticField_h
 
 #include "ScalarField.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {

@@ -40,6 +40,7 @@
 #define RiemannSampledTensorField_h
 
 #include "TensorMetric.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <array>
 #include <memory>

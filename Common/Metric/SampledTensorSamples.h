@@ -15,6 +15,7 @@
 #define RiemannSampledTensorSamples_h
 
 #include "SampledTensorField.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 #include <string>

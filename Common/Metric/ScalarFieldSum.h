@@ -8,6 +8,7 @@
 
 #include "PacketKernels.h"
 #include "ScalarField.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

@@ -12,6 +12,7 @@
 #define RiemannTensorMetric_h
 
 #include "Metric.h"
+#include "RiemannCommonMetricExport.h"
 
 #include <memory>
 

@@ -8,6 +8,7 @@
 #define RiemannTwistMap_h
 
 #include "SpaceMap.h"
+#include "RiemannCommonMetricExport.h"
 
 namespace riemann
 {

@@ -1,5 +1,6 @@
 #include "vtkRiemannCurvatureField.h"
 
+#include "Curvature.h"
 #include "PacketCurvature.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"

@@ -7,6 +7,7 @@
 
 #include "GlslSource.h"
 #include "Metric.h"
+#include "MetricGlsl.h"
 #include "ObserverCamera.h"
 #include "RiemannActorMesh.h"
 #include "RiemannComputeProgram.h"

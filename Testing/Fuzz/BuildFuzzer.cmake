@@ -1,5 +1,4 @@
 # cmake -DSOURCE_DIR=<source> -DBINARY_DIR=<build/fuzz> -DMAIN_BINARY_DIR=<build>
-#       -DEXPORT_HEADER_DIR=<dir>
 #       -DSCENE_SOURCE_DIR=<dir> -DSCENE_HEADER_DIR=<dir>
 #       -DCLANGXX=<clang++> -DGENERATOR=<generator> [-DLAUNCHER=ccache] -P BuildFuzzer.cmake
 #
@@ -7,7 +6,7 @@
 # Testing/Fuzz/Standalone), then build it; Ninja rebuilds only what changed.
 # The folders are passed on each run (a re-configure of a configured tree
 # takes a second or two), so a moved scene parser is picked up.
-foreach (var SOURCE_DIR BINARY_DIR MAIN_BINARY_DIR EXPORT_HEADER_DIR SCENE_SOURCE_DIR
+foreach (var SOURCE_DIR BINARY_DIR MAIN_BINARY_DIR SCENE_SOURCE_DIR
              SCENE_HEADER_DIR CLANGXX GENERATOR)
   if (NOT DEFINED ${var})
     message(FATAL_ERROR "BuildFuzzer.cmake: pass -D${var}=...")
@@ -18,7 +17,6 @@ set(configure_arguments
   -S "${SOURCE_DIR}/Testing/Fuzz/Standalone"
   -B "${BINARY_DIR}"
   "-DRIEMANN_SOURCE_DIR=${SOURCE_DIR}"
-  "-DRIEMANN_EXPORT_HEADER_DIR=${EXPORT_HEADER_DIR}"
   "-DRIEMANN_SCENE_SOURCE_DIR=${SCENE_SOURCE_DIR}"
   "-DRIEMANN_SCENE_HEADER_DIR=${SCENE_HEADER_DIR}"
   "-DRIEMANN_BINARY_DIR=${MAIN_BINARY_DIR}")

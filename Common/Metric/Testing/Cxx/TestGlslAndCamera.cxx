@@ -3,6 +3,7 @@
 // numerical agreement with the CPU families is checked by the rendering
 // module's tests, which run it on the GPU (llvmpipe).
 #include "GlslSource.h"
+#include "MetricGlsl.h"
 #include "MetricDefinition.h"
 #include "MetricTestUtilities.h"
 #include "ObserverCamera.h"

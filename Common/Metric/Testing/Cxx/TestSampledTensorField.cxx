@@ -21,6 +21,7 @@
 // first named (index, position, eigenvalue); repair clamps to the floor.
 #include "GeodesicTrace.h"
 #include "GlslSource.h"
+#include "MetricGlsl.h"
 #include "JacobiField.h"
 #include "PacketTrace.h"
 #include "SampledTensorField.h"

@@ -8,7 +8,9 @@
 // under one process-wide mutex, destruction of its objects included.
 #include "ExpressionGraph.h"
 
-#include "Expression.h"
+#include "DerivativeLayout.h"
+#include "ExpressionError.h"
+#include "ExpressionParser.h"
 
 #include <ginac/ginac.h>
 
@@ -683,7 +685,7 @@ public:
     this->FindDependencies(graph);
     // Order by order: nodes needed by order n come after those of lower orders.
     const int order = static_cast<int>(this->Derivatives.size()) - 1;
-    const int perSource = CompiledExpressions::OutputsPerSource(order);
+    const int perSource = DerivativeLayout::OutputsPerSource(order);
     Translator translator(this->Symbols);
     graph.Outputs.assign(static_cast<std::size_t>(this->Sources * perSource), Ref{});
     for (int n = 0; n <= order; ++n)
@@ -752,13 +754,13 @@ private:
     for (int s = 0; s < this->Sources; ++s)
     {
       this->CurrentSource = s;
-      for (int d = FirstOffset(n); d < CompiledExpressions::OutputsPerSource(n); ++d)
+      for (int d = FirstOffset(n); d < DerivativeLayout::OutputsPerSource(n); ++d)
       {
         const DerivativeIndex& index = layout[static_cast<std::size_t>(d)];
         // d_i f, d_j (d_i f), d_k (d_i d_j f): the lower derivative (the
         // first n - 1 indices) along the last index.
         const int last = n == 1 ? index.I : (n == 2 ? index.J : index.K);
-        const int lower = CompiledExpressions::DerivativeOffset(n - 1, index.I, index.J, index.K) -
+        const int lower = DerivativeLayout::Offset(n - 1, index.I, index.J, index.K) -
           FirstOffset(n - 1);
         steps.push_back({ s, lower, last });
         estimate += DifferentiationWork(

@@ -27,8 +27,8 @@
 #ifndef RiemannExpressionParser_h
 #define RiemannExpressionParser_h
 
-#include "Expression.h"
-#include "RiemannCommonMetricExport.h"
+#include "ExpressionError.h"
+#include "RiemannCommonExpressionsExport.h"
 
 #include <cstddef>
 #include <string>
@@ -48,14 +48,14 @@ struct ExpressionFunction
   const char* Name;
   int Arguments;
 };
-RIEMANNCOMMONMETRIC_EXPORT const std::vector<ExpressionFunction>& SupportedExpressionFunctions();
+RIEMANNCOMMONEXPRESSIONS_EXPORT const std::vector<ExpressionFunction>& SupportedExpressionFunctions();
 
 /**
  * Throw ExpressionError (Parameter set, Column 0) unless every name is an
  * identifier ([A-Za-z][A-Za-z0-9_]*) distinct from the others, from x, y, z, t,
  * pi, from the functions and from GiNaC's reserved I, Pi, Euler, Catalan.
  */
-RIEMANNCOMMONMETRIC_EXPORT void CheckExpressionParameterNames(
+RIEMANNCOMMONEXPRESSIONS_EXPORT void CheckExpressionParameterNames(
   const std::vector<std::string>& parameterNames);
 
 /**
@@ -66,7 +66,7 @@ RIEMANNCOMMONMETRIC_EXPORT void CheckExpressionParameterNames(
  * which numbers are exact rationals (0.1 -> (1/10)) and `pi` stays `pi`.
  * Parameter names are assumed checked (CheckExpressionParameterNames).
  */
-RIEMANNCOMMONMETRIC_EXPORT std::string CheckExpressionSyntax(
+RIEMANNCOMMONEXPRESSIONS_EXPORT std::string CheckExpressionSyntax(
   const std::string& text, const std::vector<std::string>& parameterNames);
 } // namespace riemann
 

@@ -28,6 +28,7 @@
 #define RiemannCausticSheets_h
 
 #include "ConjugatePoints.h"
+#include "RiemannCommonJacobiExport.h"
 
 #include <array>
 #include <vector>
@@ -71,7 +72,7 @@ struct CausticSheets
  * conjugate points of direction i (FindConjugatePoints, from `observer`), `g`
  * the metric at the observer (it maps kernel directions to the grid).
  */
-RIEMANNCOMMONMETRIC_EXPORT CausticSheets BuildCausticSheets(const std::vector<Vec3>& directions,
+RIEMANNCOMMONJACOBI_EXPORT CausticSheets BuildCausticSheets(const std::vector<Vec3>& directions,
   const std::vector<std::array<int, 3>>& triangles,
   const std::vector<std::vector<ConjugatePoint>>& found, const Mat3& g);
 } // namespace riemann

@@ -14,21 +14,22 @@
 #define RiemannPacketKernels_h
 
 #include "Packet.h"
-#include "RiemannCommonMetricExport.h"
+#include "PacketGeodesicSystem.h"
+#include "RiemannCommonPacketsExport.h"
 
 #include <string>
 #include <vector>
 
 namespace riemann
 {
-class Metric;
+
 
 /**
  * Gaussian bumps a exp(-sum_i w_i (p_i - c_i)^2 / 2) as flat arrays (one
  * array per parameter), so that a sum of bumps is one loop without a
  * virtual call per term (GaussianField, ScalarFieldSum).
  */
-struct RIEMANNCOMMONMETRIC_EXPORT GaussianTerms
+struct RIEMANNCOMMONPACKETS_EXPORT GaussianTerms
 {
   std::vector<double> Amplitude;
   std::vector<double> Center[3];
@@ -40,21 +41,21 @@ struct RIEMANNCOMMONMETRIC_EXPORT GaussianTerms
 };
 
 /// The Highway target the kernels run on here ("AVX3", "AVX2", "SSE4", ...).
-RIEMANNCOMMONMETRIC_EXPORT std::string PacketTargetName();
+RIEMANNCOMMONPACKETS_EXPORT std::string PacketTargetName();
 
 /**
  * Add the value, and the derivatives up to `order` (up to
  * ThirdDerivatives), of the sum of `terms` at the W points `p` to `jet`:
  * the formulas of GaussianField::Accumulate, every lane at once.
  */
-RIEMANNCOMMONMETRIC_EXPORT void AccumulateGaussianTerms(
+RIEMANNCOMMONPACKETS_EXPORT void AccumulateGaussianTerms(
   const GaussianTerms& terms, const PacketVec3& p, int order, PacketScalarJet& jet);
 
 /**
  * The graph metric's acceleration a = -grad f (v^T H v) / (1 + |grad f|^2)
  * from the jet of f. Returns the lanes where a is finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphAccelerationFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphAccelerationFromJet(
   const PacketScalarJet& f, const PacketVec3& v, PacketVec3& a);
 
 /**
@@ -62,35 +63,35 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphAccelerationFromJet(
  * l = grad n / n, from the jet of n (first order). Returns the lanes where
  * n > 0 and a is finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalAccelerationFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalAccelerationFromJet(
   const PacketScalarJet& n, const PacketVec3& v, PacketVec3& a);
 
 /**
  * GraphAccelerationFromJet of f = a sum of bumps, fused: the jet stays in
  * registers (GraphMetric's hot path when its f is such a sum).
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphAccelerationOfGaussians(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphAccelerationOfGaussians(
   const GaussianTerms& terms, const PacketVec3& x, const PacketVec3& v, PacketVec3& a);
 
 /// ConformalAccelerationFromJet of n = constant + a sum of bumps, fused.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalAccelerationOfGaussians(const GaussianTerms& terms,
+RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalAccelerationOfGaussians(const GaussianTerms& terms,
   double constant, const PacketVec3& x, const PacketVec3& v, PacketVec3& a);
 
 /**
  * The geodesic flow of W geodesics: dy = (v, a(x, v)) on the lanes in
- * `lanes`; returns those where it is defined (Metric::AccelerationPacket).
+ * `lanes`; returns those where it is defined (PacketGeodesicSystem::AccelerationPacket).
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask GeodesicFlowPacket(
-  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask GeodesicFlowPacket(
+  const PacketGeodesicSystem& metric, const PacketState& y, PacketState& dy, LaneMask lanes);
 
 /// y <- y + h F(y) per lane; lanes where F is undefined keep y. Returns the lanes stepped.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask EulerPacketStep(
-  const Metric& metric, PacketState& y, const double* h, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask EulerPacketStep(
+  const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes);
 
 /// Classical RK4 per lane (step h[l]); lanes where F is undefined keep y. Returns the lanes
 /// stepped.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask RungeKutta4PacketStep(
-  const Metric& metric, PacketState& y, const double* h, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask RungeKutta4PacketStep(
+  const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes);
 
 /**
  * One Dormand-Prince 5(4) attempt per lane, the arithmetic of
@@ -111,7 +112,7 @@ struct BasicPacketAttempt
 };
 using PacketAttempt = BasicPacketAttempt<PacketState>;
 using PacketJacobiAttempt = BasicPacketAttempt<PacketJacobiState>;
-RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& metric,
+RIEMANNCOMMONPACKETS_EXPORT LaneMask DormandPrince45PacketAttempt(const PacketGeodesicSystem& metric,
   const PacketState& y, const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
   PacketAttempt& attempt);
 
@@ -124,32 +125,32 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& m
  * -(d_{J_k} Gamma)(v, v) - 2 Gamma(v, DJ_k). Returns the lanes where all
  * are finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphJacobiAccelerationsFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphJacobiAccelerationsFromJet(
   const PacketScalarJet& f, const PacketJacobiState& y, PacketJacobiState& dy);
 
 /// The conformal family's, from the jet of n to second order; the lanes where n > 0 and all are
 /// finite.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalJacobiAccelerationsFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalJacobiAccelerationsFromJet(
   const PacketScalarJet& n, const PacketJacobiState& y, PacketJacobiState& dy);
 
 /**
  * The Jacobi system of W geodesics: dy = (v, a, DJ_0, A_0, DJ_1, A_1) on the
- * lanes of `lanes` (Metric::JacobiAccelerationPacket); returns those where
+ * lanes of `lanes` (PacketGeodesicSystem::JacobiAccelerationPacket); returns those where
  * it is defined.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask JacobiFlowPacket(
-  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask JacobiFlowPacket(
+  const PacketGeodesicSystem& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes);
 
 /// EulerPacketStep of the Jacobi system.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask EulerPacketStep(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask EulerPacketStep(
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
 
 /// RungeKutta4PacketStep of the Jacobi system.
-RIEMANNCOMMONMETRIC_EXPORT LaneMask RungeKutta4PacketStep(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask RungeKutta4PacketStep(
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes);
 
 /// DormandPrince45PacketAttempt of the Jacobi system (error RMS over the 18 components).
-RIEMANNCOMMONMETRIC_EXPORT LaneMask DormandPrince45PacketAttempt(const Metric& metric,
+RIEMANNCOMMONPACKETS_EXPORT LaneMask DormandPrince45PacketAttempt(const PacketGeodesicSystem& metric,
   const PacketJacobiState& y, const PacketJacobiState& k1, const double* step, double tolerance,
   LaneMask lanes, PacketJacobiAttempt& attempt);
 } // namespace riemann

@@ -5,7 +5,8 @@
 // bump) into one instruction.
 #include "ExpressionTape.h"
 
-#include "Expression.h"
+#include "DerivativeLayout.h"
+#include "ExpressionError.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -151,7 +152,7 @@ public:
     , Order(order)
     , Inputs(inputs)
     , One(inputs)
-    , PerSource(CompiledExpressions::OutputsPerSource(order))
+    , PerSource(DerivativeLayout::OutputsPerSource(order))
     , Count(graph.Nodes.size())
   {
   }

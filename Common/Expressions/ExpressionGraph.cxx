@@ -3,7 +3,7 @@
 // distinct node once.
 #include "ExpressionGraph.h"
 
-#include "Expression.h"
+#include "ExpressionError.h"
 
 #include <algorithm>
 #include <cmath>

@@ -36,23 +36,6 @@ std::vector<std::string> CheckSyntax(
 }
 } // namespace
 
-int CompiledExpressions::OutputsPerSource(int order)
-{
-  static const int counts[4] = { 1, 4, 10, 20 };
-  if (order < 0 || order > 3)
-  {
-    throw std::out_of_range("derivative order " + std::to_string(order) + " is not in 0..3");
-  }
-  return counts[order];
-}
-
-void CompiledExpressions::FailIndex(int source, int n, int i, int j, int k)
-{
-  throw std::out_of_range("no output for source " + std::to_string(source) + ", derivative order " +
-    std::to_string(n) + ", indices " + std::to_string(i) + " " + std::to_string(j) + " " +
-    std::to_string(k));
-}
-
 CompiledExpressions::CompiledExpressions(const std::vector<std::string>& sources,
   const std::vector<std::string>& parameterNames, int order)
   : Internal(new Internals)

@@ -5,6 +5,7 @@
 #include "DiffeoMetric.h"
 #include "GeodesicTrace.h"
 #include "GlslSource.h"
+#include "MetricGlsl.h"
 #include "MetricDefinition.h"
 #include "MetricTestUtilities.h"
 

@@ -42,8 +42,10 @@
 #ifndef RiemannExpression_h
 #define RiemannExpression_h
 
+#include "DerivativeLayout.h"
+#include "ExpressionError.h"
 #include "GlslSource.h"
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonExpressionsExport.h"
 
 #include <memory>
 #include <stdexcept>
@@ -54,30 +56,7 @@ namespace riemann
 {
 struct PacketVec3;
 
-/**
- * An expression (or a parameter name) that cannot be used. what() is
- * "column C: cause" (C the 1-based column, in characters, in the expression's
- * own string) or the cause alone; callers prefix the JSON path, e.g.
- * `metric.phi[1]: column 7: unknown symbol "w"; ...`.
- */
-class RIEMANNCOMMONMETRIC_EXPORT ExpressionError : public std::runtime_error
-{
-public:
-  /// A cause without position.
-  explicit ExpressionError(const std::string& cause);
-  ExpressionError(int column, const std::string& cause, int source = -1, int parameter = -1);
-
-  /// 1-based column of the offending text in its source string; 0: no position.
-  int Column = 0;
-  /// Index of the offending source (CompiledExpressions' `sources`), or -1.
-  int Source = -1;
-  /// Index of the offending parameter name, or -1.
-  int Parameter = -1;
-  /// The cause alone, without "column C: ".
-  std::string Cause;
-};
-
-class RIEMANNCOMMONMETRIC_EXPORT CompiledExpressions
+class RIEMANNCOMMONEXPRESSIONS_EXPORT CompiledExpressions
 {
 public:
   /**
@@ -173,7 +152,6 @@ public:
   Statistics GetStatistics() const;
 
 private:
-  [[noreturn]] static void FailIndex(int source, int n, int i, int j, int k);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
@@ -183,39 +161,14 @@ private:
   int Stride = 1;
 };
 
+inline int CompiledExpressions::OutputsPerSource(int order)
+{
+  return DerivativeLayout::OutputsPerSource(order);
+}
+
 inline int CompiledExpressions::DerivativeOffset(int n, int i, int j, int k)
 {
-  // Symmetric tables: no sorting. Only the first n indices are checked.
-  static constexpr signed char second[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
-  static constexpr signed char third[3][3][3] = { { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } },
-    { { 1, 3, 4 }, { 3, 6, 7 }, { 4, 7, 8 } }, { { 2, 4, 5 }, { 4, 7, 8 }, { 5, 8, 9 } } };
-  const auto bad = [](int index) { return static_cast<unsigned>(index) > 2u; };
-  switch (n)
-  {
-    case 0:
-      return 0;
-    case 1:
-      if (bad(i))
-      {
-        break;
-      }
-      return 1 + i;
-    case 2:
-      if (bad(i) || bad(j))
-      {
-        break;
-      }
-      return 4 + second[i][j];
-    case 3:
-      if (bad(i) || bad(j) || bad(k))
-      {
-        break;
-      }
-      return 10 + third[i][j][k];
-    default:
-      break;
-  }
-  FailIndex(-1, n, i, j, k);
+  return DerivativeLayout::Offset(n, i, j, k);
 }
 
 inline int CompiledExpressions::OutputIndex(int source, int n, int i, int j, int k) const
@@ -223,7 +176,7 @@ inline int CompiledExpressions::OutputIndex(int source, int n, int i, int j, int
   if (static_cast<unsigned>(source) >= static_cast<unsigned>(this->Sources) ||
     static_cast<unsigned>(n) > static_cast<unsigned>(this->Order))
   {
-    FailIndex(source, n, i, j, k);
+    DerivativeLayout::FailIndex(source, n, i, j, k);
   }
   return source * this->Stride + DerivativeOffset(n, i, j, k);
 }

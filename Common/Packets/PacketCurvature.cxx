@@ -659,14 +659,6 @@ LaneMask CurvatureFromTensorJet(const PacketTensorJet& jet, PacketCurvature& cur
   return HWY_DYNAMIC_DISPATCH(CurvatureFromTensorJetImpl)(jet, curvature);
 }
 
-LaneMask ComputeCurvature(
-  const Metric& metric, const PacketVec3& x, LaneMask lanes, PacketCurvature& curvature)
-{
-  PacketTensorJet jet;
-  const LaneMask derived = metric.TensorSecondDerivativesPacket(x, jet, lanes);
-  return CurvatureFromTensorJet(jet, curvature) & derived & lanes;
-}
-
 LaneMask JacobiAccelerationsFromTensorJet(
   const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy)
 {

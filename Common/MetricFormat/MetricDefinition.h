@@ -56,6 +56,7 @@
 
 #include "Metric.h"
 #include "SampledTensorField.h"
+#include "RiemannCommonMetricFormatExport.h"
 
 #include <functional>
 #include <memory>
@@ -65,7 +66,7 @@
 namespace riemann
 {
 /// A definition that cannot be turned into a metric; what() says where and why.
-class RIEMANNCOMMONMETRIC_EXPORT MetricDefinitionError : public std::runtime_error
+class RIEMANNCOMMONMETRICFORMAT_EXPORT MetricDefinitionError : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
@@ -76,14 +77,14 @@ public:
  * `time` (animated numbers {"from": a, "to": b} become a + t (b - a)).
  * Throws MetricDefinitionError with a message naming the place and cause.
  */
-RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
+RIEMANNCOMMONMETRICFORMAT_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
   const std::string& json, double time = 0.0);
 
 /**
  * The same, with the folder that relative data files of the definition
  * ("sampled": "file") are read from ("" for the working directory).
  */
-RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
+RIEMANNCOMMONMETRICFORMAT_EXPORT std::shared_ptr<const Metric> ParseMetricDefinition(
   const std::string& json, double time, const std::string& baseDirectory);
 
 /**
@@ -114,13 +115,13 @@ using SampledTensorReader = std::function<SampledTensorGrid(
  * for VTK's formats when it loads: vtkRiemannMetric). Without one, such
  * definitions are refused with a message that says so.
  */
-RIEMANNCOMMONMETRIC_EXPORT void SetSampledTensorReader(SampledTensorReader reader);
+RIEMANNCOMMONMETRICFORMAT_EXPORT void SetSampledTensorReader(SampledTensorReader reader);
 
 /// The text of a metric file (refusing unreadable or absurdly large files).
-RIEMANNCOMMONMETRIC_EXPORT std::string ReadMetricDefinitionFile(const std::string& path);
+RIEMANNCOMMONMETRICFORMAT_EXPORT std::string ReadMetricDefinitionFile(const std::string& path);
 
 /// Read a file and ParseMetricDefinition() it; the message names the file.
-RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> LoadMetricDefinitionFile(
+RIEMANNCOMMONMETRICFORMAT_EXPORT std::shared_ptr<const Metric> LoadMetricDefinitionFile(
   const std::string& path, double time = 0.0);
 } // namespace riemann
 

@@ -14,6 +14,7 @@
 #include "ScalarField.h"
 #include "SpaceMap.h"
 #include "TensorMetric.h"
+#include "RiemannCommonExpressionsExport.h"
 
 #include <memory>
 #include <string>
@@ -32,7 +33,7 @@ struct ExpressionInputs
 };
 
 /// f(x, y, z) typed as an expression; exact derivatives to third order.
-class RIEMANNCOMMONMETRIC_EXPORT ExpressionScalarField : public ScalarField
+class RIEMANNCOMMONEXPRESSIONS_EXPORT ExpressionScalarField : public ScalarField
 {
 public:
   /// Throws ExpressionError.
@@ -55,7 +56,7 @@ private:
 };
 
 /// Phi = (Phi_x, Phi_y, Phi_z) typed as three expressions.
-class RIEMANNCOMMONMETRIC_EXPORT ExpressionMap : public SpaceMap
+class RIEMANNCOMMONEXPRESSIONS_EXPORT ExpressionMap : public SpaceMap
 {
 public:
   /// Throws ExpressionError (the message says which component).
@@ -74,7 +75,7 @@ private:
 };
 
 /// g_ij typed as a symmetric 3x3 array of expressions (the six of the upper triangle are compiled).
-class RIEMANNCOMMONMETRIC_EXPORT ExpressionTensorField : public TensorField
+class RIEMANNCOMMONEXPRESSIONS_EXPORT ExpressionTensorField : public TensorField
 {
 public:
   /// `components` row-major 3x3; throws ExpressionError. Symmetry is checked by the caller.

@@ -3,10 +3,11 @@
  * @brief Curvature and the metric's own fields at PacketWidth points at once
  * (the packet engine's form of Curvature.h), for the field filters.
  *
- * ComputeCurvature below gives what the curvature field stores: Ricci,
+ * CurvatureFromTensorJet below gives what the curvature field stores: Ricci,
  * scalar curvature, the coordinate sectional curvatures, the extremes of the
- * sectional curvature, |Rm| and the volume form. Every step after the
- * metric's derivatives is SIMD arithmetic on the lanes (Highway, with the
+ * sectional curvature, |Rm| and the volume form, from g and its
+ * derivatives (ComputeCurvature in Curvature.h takes them from a metric).
+ * Every step after the metric's derivatives is SIMD arithmetic on the lanes (Highway, with the
  * runtime dispatch of PacketKernels.h): Cholesky of g, g^-1, Gamma, d Gamma,
  * Ricci, then two identities of dimension 3 (the Weyl tensor vanishes),
  * exact, so the results equal the scalar ComputeCurvature's to rounding:
@@ -21,8 +22,8 @@
 #ifndef RiemannPacketCurvature_h
 #define RiemannPacketCurvature_h
 
-#include "Metric.h"
-#include "RiemannCommonMetricExport.h"
+#include "Packet.h"
+#include "RiemannCommonPacketsExport.h"
 
 namespace riemann
 {
@@ -42,18 +43,10 @@ struct alignas(64) PacketCurvature
 };
 
 /**
- * The curvature at the lanes of `lanes` of x: the metric's
- * TensorSecondDerivativesPacket, then CurvatureFromTensorJet. Returns the
- * lanes where it is defined (as the scalar ComputeCurvature's true).
- */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask ComputeCurvature(
-  const Metric& metric, const PacketVec3& x, LaneMask lanes, PacketCurvature& curvature);
-
-/**
  * The curvature from g and its first and second derivatives. Returns the
  * lanes where g is positive definite and every result is finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask CurvatureFromTensorJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask CurvatureFromTensorJet(
   const PacketTensorJet& jet, PacketCurvature& curvature);
 
 /**
@@ -63,21 +56,21 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask CurvatureFromTensorJet(
  * form of its own runs. Returns the lanes where g is positive definite and
  * all are finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask JacobiAccelerationsFromTensorJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask JacobiAccelerationsFromTensorJet(
   const PacketTensorJet& jet, const PacketJacobiState& y, PacketJacobiState& dy);
 
 /**
  * The eigenvalues of a symmetric matrix per lane, ascending:
  * eigenvalues[0] <= eigenvalues[1] <= eigenvalues[2].
  */
-RIEMANNCOMMONMETRIC_EXPORT void SymmetricEigenvalues(
+RIEMANNCOMMONPACKETS_EXPORT void SymmetricEigenvalues(
   const PacketSym3& a, double (&eigenvalues)[3][PacketWidth]);
 
 /**
  * g^-1 per lane by Cholesky (as Eigen::LLT's solve). Returns the lanes where
  * g is positive definite and the inverse finite; the others hold NaN.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask InverseTensor(const PacketSym3& g, PacketSym3& inverse);
+RIEMANNCOMMONPACKETS_EXPORT LaneMask InverseTensor(const PacketSym3& g, PacketSym3& inverse);
 
 /**
  * The graph family's g, d g and d d g from the jet of f to third order:
@@ -85,7 +78,7 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask InverseTensor(const PacketSym3& g, PacketSym
  * d_k d_l g_ij = f_ikl f_j + f_ik f_jl + f_il f_jk + f_i f_jkl. Returns the
  * lanes where all are finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphTensorJetFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphTensorJetFromJet(
   const PacketScalarJet& f, PacketTensorJet& jet);
 
 /**
@@ -93,7 +86,7 @@ RIEMANNCOMMONMETRIC_EXPORT LaneMask GraphTensorJetFromJet(
  * d_k g = 2 n n_k delta, d_k d_l g = 2 (n_k n_l + n n_kl) delta. Returns
  * the lanes where n > 0 and all are finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT LaneMask ConformalTensorJetFromJet(
+RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalTensorJetFromJet(
   const PacketScalarJet& n, PacketTensorJet& jet);
 } // namespace riemann
 

@@ -36,6 +36,7 @@
 #define RiemannConjugatePoints_h
 
 #include "JacobiField.h"
+#include "RiemannCommonJacobiExport.h"
 
 #include <cstddef>
 #include <vector>
@@ -66,7 +67,7 @@ struct ConjugatePoint
 /// The integration tolerance of the adaptive integrator that keeps the
 /// arc-length error of the conjugate points within `tolerance`
 /// (Testing/Benchmarks/README.md, section BenchConjugatePoints.cxx: measured).
-RIEMANNCOMMONMETRIC_EXPORT double ConjugateIntegrationTolerance(double tolerance);
+RIEMANNCOMMONJACOBI_EXPORT double ConjugateIntegrationTolerance(double tolerance);
 
 /**
  * Conjugate points of p along the geodesic in `direction`, up to arc length
@@ -79,7 +80,7 @@ RIEMANNCOMMONMETRIC_EXPORT double ConjugateIntegrationTolerance(double tolerance
  * coordinates). At most `maximumCount` points (no limit when <= 0), in order
  * of arc length; the trace stops once they are found.
  */
-RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
+RIEMANNCOMMONJACOBI_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
   const Vec3& p, const Vec3& direction, const GeodesicOptions& options, double tolerance,
   int maximumCount);
 
@@ -90,12 +91,12 @@ RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const
  * the one-direction form, to rounding. Single-threaded; callers split the
  * directions across threads.
  */
-RIEMANNCOMMONMETRIC_EXPORT void FindConjugatePoints(const Metric& metric, const Vec3& p,
+RIEMANNCOMMONJACOBI_EXPORT void FindConjugatePoints(const Metric& metric, const Vec3& p,
   const Vec3* directions, std::size_t count, const GeodesicOptions& options, double tolerance,
   int maximumCount, std::vector<ConjugatePoint>* found);
 
 /// FindConjugatePoints with fixed-step RK4 of `step` up to `length`.
-RIEMANNCOMMONMETRIC_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
+RIEMANNCOMMONJACOBI_EXPORT std::vector<ConjugatePoint> FindConjugatePoints(const Metric& metric,
   const Vec3& p, const Vec3& direction, double step, double length, double tolerance,
   int maximumCount);
 } // namespace riemann

@@ -3,6 +3,7 @@
 // The printed table of bad inputs is part of the foundation issue's note.
 #include "DiffeoMetric.h"
 #include "GlslSource.h"
+#include "MetricGlsl.h"
 #include "GraphMetric.h"
 #include "MetricDefinition.h"
 

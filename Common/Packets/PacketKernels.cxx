@@ -16,7 +16,6 @@
 #include <hwy/highway.h>
 
 #include "DormandPrinceTableau.h"
-#include "Metric.h"
 #include "PacketKernels.h"
 
 #include <cmath>
@@ -521,7 +520,7 @@ LaneMask ConformalJacobiAccelerationsFromJetImpl(
 // --- The flows and the integrators' arithmetic -------------------------------
 
 LaneMask GeodesicFlowPacketImpl(
-  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
 {
   // dx/dt = v, copied by vectors (a struct copy may become a memmove call).
   const D d;
@@ -538,7 +537,7 @@ LaneMask GeodesicFlowPacketImpl(
 
 /// The Jacobi system (JacobiField.h): dy = (v, a, DJ_0, A_0, DJ_1, A_1).
 LaneMask JacobiFlowPacketImpl(
-  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
 {
   const D d;
   const int n = static_cast<int>(hn::Lanes(d));
@@ -559,13 +558,13 @@ LaneMask JacobiFlowPacketImpl(
 
 /// The flow of each state type: the integrators below are written once.
 HWY_INLINE LaneMask Flow(
-  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
 {
   return GeodesicFlowPacketImpl(metric, y, dy, lanes);
 }
 
 HWY_INLINE LaneMask Flow(
-  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
 {
   return JacobiFlowPacketImpl(metric, y, dy, lanes);
 }
@@ -618,7 +617,7 @@ HWY_INLINE void Commit(const State& candidate, LaneMask lanes, State& y)
 }
 
 template <class State>
-LaneMask EulerStepOf(const Metric& metric, State& y, const double* h, LaneMask lanes)
+LaneMask EulerStepOf(const PacketGeodesicSystem& metric, State& y, const double* h, LaneMask lanes)
 {
   State k1, next;
   const LaneMask defined = Flow(metric, y, k1, lanes) & lanes;
@@ -629,7 +628,7 @@ LaneMask EulerStepOf(const Metric& metric, State& y, const double* h, LaneMask l
 }
 
 template <class State>
-LaneMask RungeKutta4StepOf(const Metric& metric, State& y, const double* h, LaneMask lanes)
+LaneMask RungeKutta4StepOf(const PacketGeodesicSystem& metric, State& y, const double* h, LaneMask lanes)
 {
   State k1, k2, k3, k4, t;
   alignas(64) double half[PacketWidth];
@@ -656,7 +655,7 @@ LaneMask RungeKutta4StepOf(const Metric& metric, State& y, const double* h, Lane
 }
 
 template <class State>
-LaneMask DormandPrince45AttemptOf(const Metric& metric, const State& y, const State& k1,
+LaneMask DormandPrince45AttemptOf(const PacketGeodesicSystem& metric, const State& y, const State& k1,
   const double* step, double tolerance, LaneMask lanes, BasicPacketAttempt<State>& attempt)
 {
   // The Butcher tableau of Dormand-Prince 5(4) (DormandPrinceTableau.h).
@@ -744,18 +743,18 @@ LaneMask DormandPrince45AttemptOf(const Metric& metric, const State& y, const St
 
 // Each kernel per state type (HWY_EXPORT takes plain functions).
 
-LaneMask EulerPacketStepImpl(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+LaneMask EulerPacketStepImpl(const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes)
 {
   return EulerStepOf(metric, y, h, lanes);
 }
 
 LaneMask RungeKutta4PacketStepImpl(
-  const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes)
 {
   return RungeKutta4StepOf(metric, y, h, lanes);
 }
 
-LaneMask DormandPrince45PacketAttemptImpl(const Metric& metric, const PacketState& y,
+LaneMask DormandPrince45PacketAttemptImpl(const PacketGeodesicSystem& metric, const PacketState& y,
   const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
   PacketAttempt& attempt)
 {
@@ -763,18 +762,18 @@ LaneMask DormandPrince45PacketAttemptImpl(const Metric& metric, const PacketStat
 }
 
 LaneMask EulerJacobiPacketStepImpl(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
 {
   return EulerStepOf(metric, y, h, lanes);
 }
 
 LaneMask RungeKutta4JacobiPacketStepImpl(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
 {
   return RungeKutta4StepOf(metric, y, h, lanes);
 }
 
-LaneMask DormandPrince45JacobiPacketAttemptImpl(const Metric& metric, const PacketJacobiState& y,
+LaneMask DormandPrince45JacobiPacketAttemptImpl(const PacketGeodesicSystem& metric, const PacketJacobiState& y,
   const PacketJacobiState& k1, const double* step, double tolerance, LaneMask lanes,
   PacketJacobiAttempt& attempt)
 {
@@ -861,24 +860,24 @@ LaneMask ConformalJacobiAccelerationsFromJet(
 }
 
 LaneMask JacobiFlowPacket(
-  const Metric& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketJacobiState& y, PacketJacobiState& dy, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(JacobiFlowPacketImpl)(metric, y, dy, lanes);
 }
 
 LaneMask EulerPacketStep(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(EulerJacobiPacketStepImpl)(metric, y, h, lanes);
 }
 
 LaneMask RungeKutta4PacketStep(
-  const Metric& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketJacobiState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(RungeKutta4JacobiPacketStepImpl)(metric, y, h, lanes);
 }
 
-LaneMask DormandPrince45PacketAttempt(const Metric& metric, const PacketJacobiState& y,
+LaneMask DormandPrince45PacketAttempt(const PacketGeodesicSystem& metric, const PacketJacobiState& y,
   const PacketJacobiState& k1, const double* step, double tolerance, LaneMask lanes,
   PacketJacobiAttempt& attempt)
 {
@@ -887,23 +886,23 @@ LaneMask DormandPrince45PacketAttempt(const Metric& metric, const PacketJacobiSt
 }
 
 LaneMask GeodesicFlowPacket(
-  const Metric& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
+  const PacketGeodesicSystem& metric, const PacketState& y, PacketState& dy, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(GeodesicFlowPacketImpl)(metric, y, dy, lanes);
 }
 
-LaneMask EulerPacketStep(const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+LaneMask EulerPacketStep(const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(EulerPacketStepImpl)(metric, y, h, lanes);
 }
 
 LaneMask RungeKutta4PacketStep(
-  const Metric& metric, PacketState& y, const double* h, LaneMask lanes)
+  const PacketGeodesicSystem& metric, PacketState& y, const double* h, LaneMask lanes)
 {
   return HWY_DYNAMIC_DISPATCH(RungeKutta4PacketStepImpl)(metric, y, h, lanes);
 }
 
-LaneMask DormandPrince45PacketAttempt(const Metric& metric, const PacketState& y,
+LaneMask DormandPrince45PacketAttempt(const PacketGeodesicSystem& metric, const PacketState& y,
   const PacketState& k1, const double* step, double tolerance, LaneMask lanes,
   PacketAttempt& attempt)
 {

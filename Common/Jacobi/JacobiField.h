@@ -52,6 +52,7 @@
 
 #include "GeodesicTrace.h"
 #include "Metric.h"
+#include "RiemannCommonJacobiExport.h"
 
 #include <cstddef>
 #include <functional>
@@ -89,7 +90,7 @@ struct JacobiSample
  * - 2 Gamma(v, dj[k]), from ChristoffelAndDerivatives. False where the metric
  * refuses second derivatives, is degenerate, or a value is not finite.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool JacobiAccelerations(const Metric& metric, const Vec3& x,
+RIEMANNCOMMONJACOBI_EXPORT bool JacobiAccelerations(const Metric& metric, const Vec3& x,
   const Vec3& v, const Vec3 (&j)[2], const Vec3 (&dj)[2], Vec3& a, Vec3 (&variations)[2]);
 
 /// A geodesic with its Jacobi fields, sampled at every step (and at s = 0).
@@ -112,7 +113,7 @@ struct JacobiTrace
  * without interpolation. RecordSpeedDrift is ignored (always recorded: the
  * metric is evaluated at every sample anyway).
  */
-RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Vec3& p,
+RIEMANNCOMMONJACOBI_EXPORT void TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, const GeodesicOptions& options, JacobiTrace& trace, bool backward = false,
   const std::vector<double>& landings = {});
 
@@ -123,7 +124,7 @@ RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Ve
  * With `withPhases` the samples carry their Maslov phases. Returns the
  * TerminationReason, or 0 when `visit` stopped it.
  */
-RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec3& p,
+RIEMANNCOMMONJACOBI_EXPORT int TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, const GeodesicOptions& options, bool backward,
   const std::vector<double>& landings, bool withPhases,
   const std::function<bool(const JacobiSample&)>& visit);
@@ -135,7 +136,7 @@ RIEMANNCOMMONMETRIC_EXPORT int TraceJacobiFields(const Metric& metric, const Vec
  * Maslov phases when `withPhases`. False where the metric is degenerate on
  * the way.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool ContinueJacobiFields(const Metric& metric, const JacobiSample& from,
+RIEMANNCOMMONJACOBI_EXPORT bool ContinueJacobiFields(const Metric& metric, const JacobiSample& from,
   double s, int subSteps, JacobiSample& sample, bool withPhases = false);
 
 /// Where a trace of TraceJacobiFields' packet form starts: its p, direction and backward.
@@ -153,7 +154,7 @@ struct JacobiSeed
  * reused, so a visitor that keeps state per trace may keep it per lane.
  * Calls come from the thread that runs TraceJacobiFields.
  */
-class RIEMANNCOMMONMETRIC_EXPORT JacobiVisitor
+class RIEMANNCOMMONJACOBI_EXPORT JacobiVisitor
 {
 public:
   virtual ~JacobiVisitor() = default;
@@ -182,12 +183,12 @@ public:
  * samples and reasons equal the scalar form's to rounding. Single-threaded;
  * callers split their seeds across threads.
  */
-RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
+RIEMANNCOMMONJACOBI_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
   std::size_t count, const GeodesicOptions& options, const std::vector<double>& landings,
   bool withPhases, JacobiVisitor& visitor);
 
 /// The packet form into traces[0, count) (every sample kept, no phases).
-RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
+RIEMANNCOMMONJACOBI_EXPORT void TraceJacobiFields(const Metric& metric, const JacobiSeed* seeds,
   std::size_t count, const GeodesicOptions& options, JacobiTrace* traces,
   const std::vector<double>& landings = {});
 
@@ -198,7 +199,7 @@ RIEMANNCOMMONMETRIC_EXPORT void TraceJacobiFields(const Metric& metric, const Ja
  * arguments, or where the metric refuses second derivatives or becomes
  * degenerate before `length`.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool TraceJacobiFields(const Metric& metric, const Vec3& p,
+RIEMANNCOMMONJACOBI_EXPORT bool TraceJacobiFields(const Metric& metric, const Vec3& p,
   const Vec3& direction, double step, double length, std::vector<JacobiSample>& samples);
 
 } // namespace riemann
