@@ -37,8 +37,10 @@ LAYERS = {
     "Filters/Geodesics": ["Common/Core"] + CORE,
     "Filters/Fields": ["Common/Core"] + CORE,
     "Rendering/Scene": ["Common/Core", "Rendering/Core"] + CORE,
-    "Rendering/CPU": ["Filters/Geodesics", "Rendering/Scene", "Rendering/ImageIO",
-                      "Rendering/Meshes", "Common/Core", "Rendering/Core"] + CORE,
+    "Rendering/CPU": ["Rendering/Scene", "Rendering/ImageIO", "Rendering/Meshes", "Common/Core",
+                      "Rendering/Core"] + CORE,
+    "Filters/Rays": ["Filters/Geodesics", "Rendering/Scene", "Rendering/Meshes", "Common/Core",
+                     "Rendering/Core"] + CORE,
     "Rendering/OpenGL": ["Rendering/ImageIO", "Rendering/Meshes", "Rendering/Scene",
                          "Rendering/Core", "Common/Core"] + CORE,
 }

@@ -34,7 +34,7 @@
 #ifndef vtkRiemannRayBundle_h
 #define vtkRiemannRayBundle_h
 
-#include "RiemannRenderingCPUModule.h" // For export macro
+#include "RiemannFiltersRaysModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
 
 #include <utility> // For SelectPixels
@@ -47,7 +47,7 @@ struct RaySettings;
 class vtkCamera;
 class vtkRiemannScene;
 
-class RIEMANNRENDERINGCPU_EXPORT vtkRiemannRayBundle : public vtkRiemannGeodesicAlgorithm
+class RIEMANNFILTERSRAYS_EXPORT vtkRiemannRayBundle : public vtkRiemannGeodesicAlgorithm
 {
 public:
   static vtkRiemannRayBundle* New();

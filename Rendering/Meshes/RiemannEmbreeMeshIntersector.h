@@ -18,7 +18,7 @@
 #ifndef RiemannEmbreeMeshIntersector_h
 #define RiemannEmbreeMeshIntersector_h
 
-#include "RiemannRenderingCPUModule.h" // For export macro
+#include "RiemannRenderingMeshesExport.h" // For export macro
 #include "RiemannSceneIntersection.h" // For MeshIntersector
 
 #include <memory>
@@ -26,7 +26,7 @@
 
 namespace riemann
 {
-class RIEMANNRENDERINGCPU_EXPORT EmbreeMeshIntersector : public MeshIntersector
+class RIEMANNRENDERINGMESHES_EXPORT EmbreeMeshIntersector : public MeshIntersector
 {
 public:
   /**
