@@ -513,36 +513,35 @@ void WritePicture(const std::string& path, const Image& picture)
 }
 
 /**
- * Collective: the pixels of every rank's piece (its extent of the tracer's
- * output) gathered into the whole picture's pixels on rank 0, colour and
- * every arbitrary output variable with them; nothing on the other ranks. In
- * a single process: the tracer's pixels.
+ * Collective: the pixels of every rank's piece (the tracer's output, read
+ * from its arrays: vtkRiemannCPURayTracer::PixelResultsOf) gathered into the
+ * whole picture's pixels on rank 0, colour and every arbitrary output
+ * variable with them; nothing on the other ranks. In a single process: the
+ * output's pixels, which are the whole picture's.
  */
 std::vector<riemann::PixelResult> GatherPixels(vtkRiemannCPURayTracer* tracer)
 {
-  const std::vector<riemann::PixelResult>& pixels = tracer->GetPixelResults();
+  vtkImageData* output = tracer->GetOutput();
+  std::vector<riemann::PixelResult> piece = vtkRiemannCPURayTracer::PixelResultsOf(output);
   if (!IsDistributed())
   {
-    return pixels;
+    return piece;
   }
-  // This rank's rows: its extent x0, x1, y0, y1, then the pixels row by row.
+  // This rank's extent x0, x1, y0, y1, then its pixels (rows from the bottom).
   // Every rank runs the same executable, so the struct's bytes mean the same.
   static_assert(std::is_trivially_copyable<riemann::PixelResult>::value, "sent as bytes");
   const int width = tracer->GetWidth();
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
-  if (tracer->GetOutput()->GetNumberOfPoints() > 0)
+  if (!piece.empty())
   {
-    tracer->GetOutput()->GetExtent(extent);
+    output->GetExtent(extent);
   }
-  const size_t columns = static_cast<size_t>(std::max(0, extent[1] - extent[0] + 1));
-  const size_t rows = static_cast<size_t>(std::max(0, extent[3] - extent[2] + 1));
-  const size_t rowBytes = columns * sizeof(riemann::PixelResult);
-  std::vector<char> bytes(4 * sizeof(int) + rows * rowBytes);
+  const size_t pieceBytes = piece.size() * sizeof(riemann::PixelResult);
+  std::vector<char> bytes(4 * sizeof(int) + pieceBytes);
   std::memcpy(bytes.data(), extent, 4 * sizeof(int));
-  for (size_t row = 0; row < rows; ++row)
+  if (pieceBytes > 0)
   {
-    const size_t first = (extent[2] + row) * static_cast<size_t>(width) + extent[0];
-    std::memcpy(bytes.data() + 4 * sizeof(int) + row * rowBytes, &pixels[first], rowBytes);
+    std::memcpy(bytes.data() + 4 * sizeof(int), piece.data(), pieceBytes);
   }
   const std::vector<char> all = GatherBytes(bytes);
   std::vector<riemann::PixelResult> whole;

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,7 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> Actors;
   /// The image extent this update traces (the whole image, or a piece's).
   int Extent[6] = { 0, -1, 0, -1, 0, 0 };
-  /// The last update's pixels (GetPixelResults).
+  /// The last update's pixels (for the whole image; FillOutput writes the extent's).
   std::vector<riemann::PixelResult> Pixels;
 };
 
@@ -153,9 +154,40 @@ void vtkRiemannCPURayTracer::RemoveAllMeshes()
   }
 }
 
-const std::vector<riemann::PixelResult>& vtkRiemannCPURayTracer::GetPixelResults() const
+std::vector<riemann::PixelResult> vtkRiemannCPURayTracer::PixelResultsOf(vtkImageData* output)
 {
-  return this->Internals->Pixels;
+  std::vector<riemann::PixelResult> pixels;
+  vtkPointData* data = output ? output->GetPointData() : nullptr;
+  if (!data)
+  {
+    return pixels;
+  }
+  // The arrays FillOutput writes, by type: one name for each PixelResult field.
+  auto* color = vtkFloatArray::SafeDownCast(data->GetArray("Color"));
+  auto* hitPosition = vtkFloatArray::SafeDownCast(data->GetArray("HitPosition"));
+  auto* arcLength = vtkFloatArray::SafeDownCast(data->GetArray("ArcLength"));
+  auto* steps = vtkIntArray::SafeDownCast(data->GetArray("Steps"));
+  auto* reason = vtkIntArray::SafeDownCast(data->GetArray("ReasonForTermination"));
+  auto* drift = vtkFloatArray::SafeDownCast(data->GetArray("SpeedDrift"));
+  auto* hitError = vtkFloatArray::SafeDownCast(data->GetArray("HitError"));
+  if (!color || !hitPosition || !arcLength || !steps || !reason || !drift)
+  {
+    return pixels;
+  }
+  const vtkIdType n = output->GetNumberOfPoints();
+  pixels.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    riemann::PixelResult& p = pixels[static_cast<std::size_t>(i)];
+    color->GetTypedTuple(i, p.Color);
+    hitPosition->GetTypedTuple(i, p.HitPosition);
+    p.ArcLength = arcLength->GetValue(i);
+    p.Steps = steps->GetValue(i);
+    p.Reason = reason->GetValue(i);
+    p.SpeedDrift = drift->GetValue(i);
+    p.HitError = hitError ? hitError->GetValue(i) : std::numeric_limits<float>::quiet_NaN();
+  }
+  return pixels;
 }
 
 int vtkRiemannCPURayTracer::GetNumberOfAddedMeshes() const

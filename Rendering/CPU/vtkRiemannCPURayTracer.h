@@ -65,7 +65,7 @@
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <memory> // For std::unique_ptr
-#include <vector> // For GetPixelResults
+#include <vector> // For PixelResultsOf
 
 namespace riemann
 {
@@ -228,11 +228,14 @@ public:
   vtkGetMacro(HitErrorComputed, bool);
 
   /**
-   * The last update's pixels as the core computed them (row 0 at the bottom;
-   * RiemannCPUImage.h turns them into pictures): what the output's arrays
-   * hold, without converting back from VTK arrays.
+   * The pixels of an output of this filter (the whole image or a piece), row
+   * by row from the bottom of its extent, read from its point arrays into the
+   * core's form (RiemannCPUImage.h turns them into pictures): the inverse of
+   * what RequestData writes, so the output port is the only way out of the
+   * filter. Empty when `output` lacks the arrays (an empty output after an
+   * error). "HitError" is NaN where the output has no such array.
    */
-  VTK_WRAPEXCLUDE const std::vector<riemann::PixelResult>& GetPixelResults() const;
+  VTK_WRAPEXCLUDE static std::vector<riemann::PixelResult> PixelResultsOf(vtkImageData* output);
 
 protected:
   vtkRiemannCPURayTracer();

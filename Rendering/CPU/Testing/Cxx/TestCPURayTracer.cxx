@@ -56,6 +56,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -503,6 +504,73 @@ TEST(CPURayTracer, PiecesAreTheWholeImagesPixels)
     }
     EXPECT_EQ(*std::min_element(covered.begin(), covered.end()), 1);
   }
+}
+
+//------------------------------------------------------------------------------
+TEST(CPURayTracer, PixelResultsAreReadFromTheOutputPort)
+{
+  // PixelResultsOf is the only way the pixels leave the filter (the CLI
+  // writes pictures and EXR channels from it): on the whole output and on
+  // each piece it gives the output's arrays, field by field, in the core's
+  // form; an output without the arrays gives nothing.
+  vtkNew<vtkRiemannScene> scene;
+  ASSERT_TRUE(scene->SetDefinitionFile((DataDirectory() / "scenes/paper-twist.json").c_str()));
+  vtkNew<vtkRiemannMetric> metric;
+  ASSERT_TRUE(metric->SetDefinition(scene->GetMetricDefinition().c_str()));
+  vtkNew<vtkRiemannCPURayTracer> tracer;
+  tracer->SetMetric(metric);
+  tracer->SetScene(scene);
+  tracer->SetWidth(31);
+  tracer->SetHeight(23);
+  tracer->SetComputeHitError(true);
+  tracer->Update();
+  ASSERT_TRUE(tracer->GetHitErrorComputed());
+  vtkImageData* output = tracer->GetOutput();
+  const std::vector<riemann::PixelResult> whole = vtkRiemannCPURayTracer::PixelResultsOf(output);
+  ASSERT_EQ(whole.size(), 31u * 23u);
+  vtkPointData* data = output->GetPointData();
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  int hits = 0;
+  for (vtkIdType i = 0; i < 31 * 23; ++i)
+  {
+    const riemann::PixelResult& p = whole[static_cast<std::size_t>(i)];
+    for (int c = 0; c < 3; ++c)
+    {
+      ASSERT_TRUE(same(p.Color[c], data->GetArray("Color")->GetComponent(i, c))) << i;
+      ASSERT_TRUE(same(p.HitPosition[c], data->GetArray("HitPosition")->GetComponent(i, c))) << i;
+    }
+    ASSERT_TRUE(same(p.ArcLength, data->GetArray("ArcLength")->GetTuple1(i))) << i;
+    ASSERT_EQ(p.Steps, data->GetArray("Steps")->GetTuple1(i)) << i;
+    ASSERT_EQ(p.Reason, data->GetArray("ReasonForTermination")->GetTuple1(i)) << i;
+    ASSERT_TRUE(same(p.SpeedDrift, data->GetArray("SpeedDrift")->GetTuple1(i))) << i;
+    ASSERT_TRUE(same(p.HitError, data->GetArray("HitError")->GetTuple1(i))) << i;
+    hits += p.Reason == static_cast<int>(riemann::TerminationReason::HitSurface) ? 1 : 0;
+  }
+  EXPECT_GT(hits, 31 * 23 / 4); // a picture of the grid, not of nothing
+
+  // A piece: its own extent's pixels, row by row from its bottom row.
+  tracer->UpdatePiece(1, 3, 0);
+  const int* e = tracer->GetOutput()->GetExtent();
+  const std::vector<riemann::PixelResult> piece =
+    vtkRiemannCPURayTracer::PixelResultsOf(tracer->GetOutput());
+  ASSERT_EQ(piece.size(), static_cast<std::size_t>((e[1] - e[0] + 1) * (e[3] - e[2] + 1)));
+  ASSERT_LT(piece.size(), whole.size());
+  std::size_t k = 0;
+  for (int y = e[2]; y <= e[3]; ++y)
+  {
+    for (int x = e[0]; x <= e[1]; ++x, ++k)
+    {
+      const riemann::PixelResult& a = piece[k];
+      const riemann::PixelResult& b = whole[static_cast<std::size_t>(y * 31 + x)];
+      ASSERT_EQ(std::memcmp(a.Color, b.Color, sizeof(a.Color)), 0) << x << " " << y;
+      ASSERT_EQ(a.Steps, b.Steps) << x << " " << y;
+      ASSERT_TRUE(same(a.HitError, b.HitError)) << x << " " << y;
+    }
+  }
+
+  vtkNew<vtkImageData> empty;
+  EXPECT_TRUE(vtkRiemannCPURayTracer::PixelResultsOf(empty).empty());
+  EXPECT_TRUE(vtkRiemannCPURayTracer::PixelResultsOf(nullptr).empty());
 }
 
 //------------------------------------------------------------------------------
