@@ -1,5 +1,7 @@
 #include "vtkRiemannFieldAlgorithm.h"
 
+#include "vtkRiemannReportError.h"
+
 #include "Metric.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
@@ -231,9 +233,10 @@ int vtkRiemannFieldAlgorithm::RequestData(
   vtkDataSet* input =
     this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   output->Initialize();
+  this->LastError.clear();
   if (!this->Metric || !this->Metric->HasDefinition())
   {
-    vtkErrorMacro(<< "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
+    vtkRiemannReportErrorMacro(this->LastError, << "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
                      "definition.");
     return 1;
   }
@@ -249,7 +252,7 @@ int vtkRiemannFieldAlgorithm::RequestData(
     const std::string why = this->CheckGrid();
     if (!why.empty())
     {
-      vtkErrorMacro(<< "Invalid grid: " << why << ".");
+      vtkRiemannReportErrorMacro(this->LastError, << "Invalid grid: " << why << ".");
       return 1;
     }
     vtkImageData* image = vtkImageData::SafeDownCast(output);

@@ -71,6 +71,12 @@ public:
   /// Include the metric's modification time.
   vtkMTimeType GetMTime() override;
 
+  /**
+   * The last error this filter reported (also raised through vtkErrorMacro),
+   * or "" when its last update succeeded (ErrorConventions.md).
+   */
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
 protected:
   vtkRiemannFieldAlgorithm();
   ~vtkRiemannFieldAlgorithm() override;
@@ -108,6 +114,9 @@ protected:
   vtkRiemannMetric* Metric = nullptr;
   double Bounds[6] = { -2.0, 2.0, -2.0, 2.0, -2.0, 2.0 };
   int Dimensions[3] = { 33, 33, 33 };
+
+  /// GetLastError(): set by vtkRiemannReportErrorMacro, cleared where RequestData starts.
+  std::string LastError;
 
 private:
   vtkRiemannFieldAlgorithm(const vtkRiemannFieldAlgorithm&) = delete;

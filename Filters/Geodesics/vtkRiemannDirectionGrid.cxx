@@ -1,5 +1,7 @@
 #include "vtkRiemannDirectionGrid.h"
 
+#include "vtkRiemannReportError.h"
+
 #include "DirectionLattice.h"
 #include "vtkCellArray.h"
 #include "vtkDelaunay2D.h"
@@ -234,11 +236,12 @@ int vtkRiemannDirectionGrid::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->LastError.clear();
   std::string message;
   if (!Build(this->NumberOfDirections, this->ConeAxis, this->ConeAngle, output, message))
   {
     output->Initialize();
-    vtkErrorMacro(<< message << ".");
+    vtkRiemannReportErrorMacro(this->LastError, << message << ".");
   }
   return 1;
 }

@@ -78,6 +78,12 @@ public:
   VTK_WRAPEXCLUDE static vtkIdType AppendTriangles(
     vtkPolyData* grid, const std::vector<vtkIdType>& surfacePointIds, vtkCellArray* triangles);
 
+  /**
+   * The last error this filter reported (also raised through vtkErrorMacro),
+   * or "" when its last update succeeded (ErrorConventions.md).
+   */
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
 protected:
   vtkRiemannDirectionGrid();
   ~vtkRiemannDirectionGrid() override = default;
@@ -88,6 +94,9 @@ protected:
   int NumberOfDirections = 100;
   double ConeAxis[3] = { 0.0, 0.0, 1.0 };
   double ConeAngle = 180.0;
+
+  /// GetLastError(): set by vtkRiemannReportErrorMacro, cleared where RequestData starts.
+  std::string LastError;
 
 private:
   vtkRiemannDirectionGrid(const vtkRiemannDirectionGrid&) = delete;

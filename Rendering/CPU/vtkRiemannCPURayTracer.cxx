@@ -1,5 +1,7 @@
 #include "vtkRiemannCPURayTracer.h"
 
+#include "vtkRiemannReportError.h"
+
 #include "RiemannActorMesh.h"
 #include "RiemannCPUTracer.h"
 #include "RiemannImageIO.h"
@@ -107,7 +109,7 @@ void vtkRiemannCPURayTracer::AddActor(vtkActor* actor)
 {
   if (!actor)
   {
-    vtkErrorMacro(<< "AddActor: no actor (null)");
+    vtkRiemannReportErrorMacro(this->LastError, << "AddActor: no actor (null)");
     return;
   }
   this->Internals->Actors.emplace_back(actor);
@@ -133,7 +135,7 @@ void vtkRiemannCPURayTracer::AddMesh(
 {
   if (!mesh)
   {
-    vtkErrorMacro(<< "AddMesh: no mesh (null)");
+    vtkRiemannReportErrorMacro(this->LastError, << "AddMesh: no mesh (null)");
     return;
   }
   vtkInternals::AddedMesh added;
@@ -218,6 +220,7 @@ int vtkRiemannCPURayTracer::RequestData(
 {
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
   output->Initialize();
+  this->LastError.clear();
   this->NumberOfRays = 0;
   this->NumberOfIntegrationSteps = 0;
   this->TraceTime = 0.0;
@@ -229,7 +232,7 @@ int vtkRiemannCPURayTracer::RequestData(
     this->Metric ? this->Metric->GetMetric() : nullptr;
   if (!metric)
   {
-    vtkErrorMacro(<< (this->Metric ? "the metric has no definition: call SetDefinition() on it"
+    vtkRiemannReportErrorMacro(this->LastError, << (this->Metric ? "the metric has no definition: call SetDefinition() on it"
                                    : "no metric: call SetMetric() with a vtkRiemannMetric"));
     return 1;
   }
@@ -288,7 +291,7 @@ std::shared_ptr<riemann::Scene> vtkRiemannCPURayTracer::MakeScene()
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "AddMesh: " << e.what());
+    vtkRiemannReportErrorMacro(this->LastError, << "AddMesh: " << e.what());
     return nullptr;
   }
   // The added actors as the GPU pass draws a renderer's (UseRendererProps):
@@ -306,7 +309,7 @@ std::shared_ptr<riemann::Scene> vtkRiemannCPURayTracer::MakeScene()
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "AddActor: " << e.what());
+    vtkRiemannReportErrorMacro(this->LastError, << "AddActor: " << e.what());
     return nullptr;
   }
   if (!actorMeshes.empty())
@@ -321,7 +324,7 @@ bool vtkRiemannCPURayTracer::CheckImageSize()
 {
   if (this->Width < 1 || this->Width > 65536 || this->Height < 1 || this->Height > 65536)
   {
-    vtkErrorMacro(<< "The image is " << this->Width << " x " << this->Height
+    vtkRiemannReportErrorMacro(this->LastError, << "The image is " << this->Width << " x " << this->Height
                   << " pixels; each side must be 1 to 65536.");
     return false;
   }
@@ -330,7 +333,7 @@ bool vtkRiemannCPURayTracer::CheckImageSize()
   const double pixels = static_cast<double>(this->Width) * this->Height;
   if (pixels > MaximumNumberOfPixels)
   {
-    vtkErrorMacro(<< "The image is too large: " << this->Width << " x " << this->Height << " = "
+    vtkRiemannReportErrorMacro(this->LastError, << "The image is too large: " << this->Width << " x " << this->Height << " = "
                   << pixels / 1e6 << " million pixels, more than " << MaximumNumberOfPixels / 1e6
                   << " million (about " << 90.0 * MaximumNumberOfPixels / (1 << 30)
                   << " GiB of memory); render a smaller image.");
@@ -348,7 +351,7 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
   const std::string settingsError = this->IntegrationSettings->CheckSettings();
   if (!this->UseSceneSettings && !settingsError.empty())
   {
-    vtkErrorMacro(<< "Integration settings: " << settingsError << ".");
+    vtkRiemannReportErrorMacro(this->LastError, << "Integration settings: " << settingsError << ".");
     return nullptr;
   }
   const riemann::RaySettings rays =
@@ -368,7 +371,7 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
     catch (const riemann::ImageFileError& e)
     {
       // As the GPU pass: reported, and the background colour stands in for it.
-      vtkErrorMacro(<< "cannot use the environment image " << scene->EnvironmentImage << ": "
+      vtkRiemannReportErrorMacro(this->LastError, << "cannot use the environment image " << scene->EnvironmentImage << ": "
                     << e.what() << " (the background colour is shown instead)");
     }
   }
@@ -387,7 +390,7 @@ std::unique_ptr<riemann::CPUTracer> vtkRiemannCPURayTracer::MakeCoreTracer(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "cannot trace the scene: " << e.what());
+    vtkRiemannReportErrorMacro(this->LastError, << "cannot trace the scene: " << e.what());
     return nullptr;
   }
   this->NumberOfTriangles = static_cast<vtkIdType>(tracer->NumberOfTriangles());

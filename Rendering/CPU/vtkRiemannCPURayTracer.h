@@ -65,6 +65,7 @@
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <memory> // For std::unique_ptr
+#include <string> // For LastError
 #include <vector> // For PixelResultsOf
 
 namespace riemann
@@ -237,6 +238,12 @@ public:
    */
   VTK_WRAPEXCLUDE static std::vector<riemann::PixelResult> PixelResultsOf(vtkImageData* output);
 
+  /**
+   * The last error this filter reported (also raised through vtkErrorMacro),
+   * or "" when its last update succeeded (ErrorConventions.md).
+   */
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
 protected:
   vtkRiemannCPURayTracer();
   ~vtkRiemannCPURayTracer() override;
@@ -262,6 +269,9 @@ protected:
   double TraceTime = 0.0;
   vtkIdType NumberOfTriangles = 0;
   bool HitErrorComputed = false;
+
+  /// GetLastError(): set by vtkRiemannReportErrorMacro, cleared where RequestData starts.
+  std::string LastError;
 
 private:
   ///@{

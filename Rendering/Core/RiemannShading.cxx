@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace riemann
 {
@@ -59,11 +61,15 @@ Vec3 EnvironmentMap::Lookup(const Vec3& direction, const Vec3& background) const
     fy * ((1 - fx) * texel(c0, r0 + 1) + fx * texel(c0 + 1, r0 + 1));
 }
 
-std::string EnvironmentMap::SetImage(const Image& image)
+void EnvironmentMap::SetImage(const Image& image)
 {
-  if (image.Width <= 0 || image.Height <= 0 || image.Channels <= 0)
+  if (image.Width <= 0 || image.Height <= 0 || image.Channels <= 0 ||
+    image.Pixels.size() <
+      static_cast<std::size_t>(image.Width) * image.Height * static_cast<std::size_t>(image.Channels))
   {
-    return "empty image";
+    throw std::invalid_argument("EnvironmentMap::SetImage: an image without pixels (" +
+      std::to_string(image.Width) + " x " + std::to_string(image.Height) + " x " +
+      std::to_string(image.Channels) + ", " + std::to_string(image.Pixels.size()) + " values)");
   }
   this->Width = image.Width;
   this->Height = image.Height;
@@ -76,7 +82,6 @@ std::string EnvironmentMap::SetImage(const Image& image)
       this->Rgb[3 * i + c] = image.Pixels[i * image.Channels + (image.Channels >= 3 ? c : 0)];
     }
   }
-  return std::string();
 }
 
 double ObserverCosine(const Metric& metric, const Vec3& p, const Vec3& nu, const Vec3& v)

@@ -48,8 +48,11 @@ struct RIEMANNRENDERINGCORE_EXPORT EnvironmentMap
   bool Empty() const { return this->Width <= 0 || this->Height <= 0; }
   /// The colour seen in coordinate direction d; `background` for d == 0.
   Vec3 Lookup(const Vec3& direction, const Vec3& background) const;
-  /// Take `image`'s pixels (grey repeated); returns "" or why not (an empty image).
-  std::string SetImage(const Image& image);
+  /**
+   * Take `image`'s pixels (grey repeated). Throws std::invalid_argument for
+   * an image without pixels (a caller's bug: ReadImage never returns one).
+   */
+  void SetImage(const Image& image);
 };
 
 /**

@@ -174,11 +174,7 @@ Image ReadImage(const std::string& path)
 EnvironmentMap ReadEnvironmentMap(const std::string& path)
 {
   EnvironmentMap map;
-  const std::string problem = map.SetImage(ReadImage(path));
-  if (!problem.empty())
-  {
-    throw ImageFileError(path + ": " + problem);
-  }
+  map.SetImage(ReadImage(path));
   return map;
 }
 } // namespace riemann

@@ -1030,3 +1030,28 @@ TEST(SurfaceColor, PositionColoursOfTheDefaultGrid)
 }
 } // namespace
 } // namespace riemann
+
+//------------------------------------------------------------------------------
+TEST(EnvironmentMapImage, GreyRepeatsAndAnImageWithoutPixelsIsACallersBug)
+{
+  // SetImage takes the pixels (a grey image's one channel in r, g and b); an
+  // image without pixels breaks its contract: std::invalid_argument, the
+  // logic_error family of ErrorConventions.md, and the map stays as it was.
+  riemann::Image grey;
+  grey.Width = 2;
+  grey.Height = 1;
+  grey.Channels = 1;
+  grey.Pixels = { 0.25f, 0.75f };
+  riemann::EnvironmentMap map;
+  map.SetImage(grey);
+  ASSERT_EQ(map.Width, 2);
+  ASSERT_EQ(map.Height, 1);
+  EXPECT_EQ(map.Rgb, (std::vector<float>{ 0.25f, 0.25f, 0.25f, 0.75f, 0.75f, 0.75f }));
+
+  for (const riemann::Image& bad :
+    { riemann::Image(), riemann::Image{ 4, 4, 3, std::vector<float>(10) } })
+  {
+    EXPECT_THROW(map.SetImage(bad), std::invalid_argument);
+    EXPECT_EQ(map.Width, 2);
+  }
+}
