@@ -1,5 +1,6 @@
 #include "PipelineItem.h"
 
+#include "IntegrationSchema.h"
 #include "RungeKutta.h"
 
 #include "ColorMaps.h"
@@ -353,45 +354,42 @@ nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrato
 
 std::vector<PropertySpec> IntegrationPropertySpecs()
 {
-  PropertySpec integrator;
-  integrator.Key = "IntegratorType";
-  integrator.Label = "Integrator";
-  integrator.Type = PropertySpec::Choice;
-  for (riemann::IntegratorType type : { riemann::IntegratorType::Euler,
-         riemann::IntegratorType::RungeKutta4, riemann::IntegratorType::DormandPrince45 })
+  // One field per setting the app shows (those with a label), all from the
+  // integration schema (IntegrationSchema.h): the key is the
+  // vtkRiemannIntegrationSettings property (projects store it so), the
+  // label, help, unit and range are the schema's, as riemann's options are.
+  std::vector<PropertySpec> specs;
+  for (const riemann::IntegrationSetting& setting : riemann::IntegrationSchema)
   {
-    integrator.Choices << riemann::IntegratorName(type);
+    if (!*setting.Label)
+    {
+      continue;
+    }
+    PropertySpec spec;
+    spec.Key = setting.Property;
+    spec.Label = setting.Label;
+    spec.Help = QString::fromStdString(
+      std::string(setting.Help) + ": " + riemann::DescribeIntegrationRange(setting));
+    if (setting.Type == riemann::IntegrationSetting::Choice)
+    {
+      spec.Type = PropertySpec::Choice;
+      for (riemann::IntegratorType type : { riemann::IntegratorType::Euler,
+             riemann::IntegratorType::RungeKutta4, riemann::IntegratorType::DormandPrince45 })
+      {
+        spec.Choices << riemann::IntegratorName(type);
+      }
+    }
+    else
+    {
+      spec.Type =
+        setting.Type == riemann::IntegrationSetting::Count ? PropertySpec::Integer : PropertySpec::Number;
+      spec.Minimum = setting.Minimum;
+      spec.MinimumExclusive = setting.MinimumExclusive;
+      spec.Maximum = setting.Maximum;
+    }
+    specs.push_back(spec);
   }
-  integrator.Help = "euler (the paper's), rk4 (fixed step) or dp45 (adaptive Dormand-Prince)";
-
-  PropertySpec step;
-  step.Key = "InitialIntegrationStep";
-  step.Label = "Step";
-  step.Minimum = 0.0;
-  step.MinimumExclusive = true;
-  step.Help = "Arc length of a step (the first one for dp45)";
-
-  PropertySpec error;
-  error.Key = "MaximumError";
-  error.Label = "Tolerance";
-  error.Minimum = 0.0;
-  error.MinimumExclusive = true;
-  error.Help = "Per-step error allowed to dp45";
-
-  PropertySpec length;
-  length.Key = "MaximumPropagation";
-  length.Label = "Length";
-  length.Minimum = 0.0;
-  length.MinimumExclusive = true;
-  length.Help = "Riemannian arc length at which a geodesic stops";
-
-  PropertySpec steps;
-  steps.Key = "MaximumNumberOfSteps";
-  steps.Label = "Maximum steps";
-  steps.Type = PropertySpec::Integer;
-  steps.Minimum = 1;
-  steps.Maximum = 1e8;
-  return { integrator, step, error, length, steps };
+  return specs;
 }
 
 std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string& var) const

@@ -379,33 +379,65 @@ void WritePolyDataAtomically(
     { return WritePolyDataFile(data, temporary, compress); });
 }
 
+namespace
+{
+/// The option's check: the setting's range in the integration schema.
+CLI::Validator InSchemaRange(const riemann::IntegrationSetting& setting)
+{
+  return CLI::Validator(
+    [&setting](std::string& text) -> std::string
+    {
+      double value = 0.0;
+      if (CLI::detail::lexical_cast(text, value) &&
+        riemann::CheckIntegrationValue(setting, value, text).empty())
+      {
+        return std::string();
+      }
+      return "expected " + riemann::DescribeIntegrationRange(setting) + ", got \"" + text + "\"";
+    },
+    "in " + riemann::IntegrationInterval(setting));
+}
+} // namespace
+
 void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options)
 {
+  // Every flag, help text and range is the integration schema's
+  // (IntegrationSchema.h); only the defaults' values are the command's
+  // (the curves' column of the schema, or the scene's for render).
+  using riemann::IntegrationSettingId;
   const auto byDefault = [&options](const std::string& value)
   { return options.SceneDefaults ? std::string(" (default: the scene's)") : " (default " + value + ")"; };
+  // The help's text; CLI11 shows the range and unit beside it (InSchemaRange).
+  const auto help = [](IntegrationSettingId id, const std::string& text)
+  { return text.empty() ? std::string(riemann::IntegrationSettingOf(id).Help) : text; };
+  const auto flag = [](IntegrationSettingId id) { return riemann::IntegrationSettingOf(id).Flag; };
+
   command
-    ->add_option("--integrator", *options.Integrator,
-      "euler, rk4 or dp45" + byDefault(*options.Integrator))
+    ->add_option(flag(IntegrationSettingId::Integrator), *options.Integrator,
+      help(IntegrationSettingId::Integrator, "") + byDefault(*options.Integrator))
     ->check(IntegratorName());
   command
-    ->add_option("--step", *options.Step,
-      "Step in arc length; the first step of dp45" + byDefault(FormatNumber(*options.Step)))
-    ->check(FiniteNumber(1e-9, 1e6));
+    ->add_option(flag(IntegrationSettingId::Step), *options.Step,
+      help(IntegrationSettingId::Step, "") + byDefault(FormatNumber(*options.Step)))
+    ->check(InSchemaRange(riemann::IntegrationSettingOf(IntegrationSettingId::Step)));
+  // -l is the short form; render also answers to its old name --max-length.
+  const std::string lengthNames = std::string("-l,") + flag(IntegrationSettingId::Length) +
+    (options.SceneDefaults ? ",--max-length" : "");
   command
-    ->add_option(options.SceneDefaults ? "-l,--length,--max-length" : "-l,--length", *options.Length,
-      "Arc length of each " + options.Curve + " at most" + byDefault(FormatNumber(*options.Length)))
-    ->check(PositiveNumber(1e9));
+    ->add_option(lengthNames, *options.Length,
+      help(IntegrationSettingId::Length, "Arc length at which each " + options.Curve + " stops") +
+        byDefault(FormatNumber(*options.Length)))
+    ->check(InSchemaRange(riemann::IntegrationSettingOf(IntegrationSettingId::Length)));
   command
-    ->add_option("--tolerance", *options.Tolerance,
-      (options.ToleranceHelp.empty() ? std::string("Per-step error tolerance of dp45")
-                                     : options.ToleranceHelp) +
+    ->add_option(flag(IntegrationSettingId::Tolerance), *options.Tolerance,
+      help(IntegrationSettingId::Tolerance, options.ToleranceHelp) +
         byDefault(FormatNumber(*options.Tolerance)))
-    ->check(FiniteNumber(1e-15, 1.0));
+    ->check(InSchemaRange(riemann::IntegrationSettingOf(IntegrationSettingId::Tolerance)));
   command
-    ->add_option("--max-steps", *options.MaximumSteps,
-      "Steps of each " + options.Curve + " at most" +
+    ->add_option(flag(IntegrationSettingId::MaximumSteps), *options.MaximumSteps,
+      help(IntegrationSettingId::MaximumSteps, "Steps of each " + options.Curve + " at most") +
         byDefault(std::to_string(*options.MaximumSteps)))
-    ->check(WholeNumber(1, options.MostSteps));
+    ->check(InSchemaRange(riemann::IntegrationSettingOf(IntegrationSettingId::MaximumSteps)));
 }
 
 IntegratorType ParseIntegratorOption(const std::string& name)

@@ -30,7 +30,8 @@
 #ifndef RiemannCliUtilities_h
 #define RiemannCliUtilities_h
 
-#include "RungeKutta.h" // For IntegratorType
+#include "IntegrationSchema.h" // For AddIntegrationOptions
+#include "RungeKutta.h"        // For IntegratorType
 
 #include "vtkCommand.h"
 #include "vtkLogger.h"
@@ -168,8 +169,11 @@ void WritePolyDataAtomically(
  * conjugate, render), bound to the command's own values: one name, one
  * range and one wording each, so that a setting is spelled and checked the
  * same everywhere (TestCli.py checks each command's --help lists all five):
+ * the flags, ranges, units and help texts of riemann::IntegrationSchema
+ * (Common/Metric/IntegrationSchema.h), which vtkRiemannIntegrationSettings,
+ * the app's forms and the scene format use too:
  *   --integrator euler|rk4|dp45, --step (1e-9 to 1e6), -l/--length (above 0,
- *   at most 1e9), --tolerance (1e-15 to 1), --max-steps (1 to MostSteps).
+ *   at most 1e9), --tolerance (1e-15 to 1), --max-steps (1 to 1e9).
  * The help says each default: the bound value, or "the scene's" where
  * SceneDefaults (render: 0 and "" mean "not given"). `render` also accepts
  * --max-length, the name --length had there before.
@@ -184,8 +188,6 @@ struct IntegrationOptions
   /// What is integrated, for the help: "geodesic" or "ray".
   std::string Curve = "geodesic";
   bool SceneDefaults = false;
-  /// The largest --max-steps (render: the scene format's 1000000).
-  long long MostSteps = 1000000000;
   /// --tolerance's help where it means more than dp45's per-step error (conjugate).
   std::string ToleranceHelp;
 };

@@ -6,6 +6,7 @@
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
+#include "GeodesicTrace.h" // For the integration defaults
 #include "ProgressBar.h"
 
 #include "vtkCellData.h"
@@ -43,11 +44,13 @@ struct ConjugateArguments
   long long Directions = 100;
   std::string ConeAxis = "0,0,1";
   double ConeAngle = 180.0;
-  double Length = 10.0;
-  double Step = 0.01;
+  // The integration defaults are the schema's for curves (IntegrationSchema.h),
+  // but the integrator: the search for conjugate points needs dp45's error control.
+  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
+  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
   double MaximumStep = 0.1;
-  double Tolerance = 1e-8;
-  long long MaximumSteps = 100000;
+  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
+  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
   long long Count = 1;
   std::string Integrator = "dp45";
   std::string Compress = "lz4";

@@ -4,6 +4,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "Distributed.h"
+#include "GeodesicTrace.h" // For the integration defaults
 #include "ProgressBar.h"
 
 #include "vtkNew.h"
@@ -33,12 +34,13 @@ struct ExpmapArguments
   long long Directions = 400;
   std::string ConeAxis = "0,0,1";
   double ConeAngle = 180.0;
-  double Length = 5.0;
+  // The integration defaults are the schema's for curves (IntegrationSchema.h).
+  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
   std::string Radii;
-  std::string Integrator = "rk4";
-  double Step = 0.01;
-  double Tolerance = 1e-8;
-  long long MaximumSteps = 100000;
+  std::string Integrator = riemann::IntegratorName(riemann::GeodesicOptions().Integrator);
+  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
+  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
+  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;

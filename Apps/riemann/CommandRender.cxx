@@ -850,7 +850,6 @@ void RegisterRenderCommand(CLI::App& app)
     &args->Tolerance, &args->MaximumSteps };
   integration.Curve = "ray";
   integration.SceneDefaults = true;
-  integration.MostSteps = 1000000; // the scene format's limit (the GPU loops over them per pixel)
   AddIntegrationOptions(command, integration);
   command
     ->add_option("--frames", args->Frames,

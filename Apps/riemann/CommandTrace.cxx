@@ -47,12 +47,13 @@ struct TraceArguments
   std::string Seed = "0,0,0";
   std::string Direction = "1,0,0";
   std::string SeedsFile;
-  double Length = 10.0;
-  std::string Integrator = "rk4";
+  // The integration defaults are the schema's for curves (IntegrationSchema.h).
+  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
+  std::string Integrator = riemann::IntegratorName(riemann::GeodesicOptions().Integrator);
   std::string Propagation = "forward";
-  double Step = 0.01;
-  double Tolerance = 1e-8;
-  long long MaximumSteps = 100000;
+  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
+  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
+  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
   bool TransverseJacobian = false;
   std::string Compress = "lz4";
   bool Gather = false;

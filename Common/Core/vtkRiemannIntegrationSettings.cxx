@@ -1,12 +1,13 @@
 #include "vtkRiemannIntegrationSettings.h"
 
 #include "GeodesicTrace.h"
+#include "IntegrationSchema.h"
 #include "RungeKutta.h"
 
 #include "vtkObjectFactory.h"
 
-#include <cmath>
 #include <sstream>
+#include <utility>
 
 vtkStandardNewMacro(vtkRiemannIntegrationSettings);
 
@@ -21,21 +22,6 @@ vtkRiemannIntegrationSettings::vtkRiemannIntegrationSettings()
   this->MaximumPropagation = defaults.MaximumLength;
   this->MaximumNumberOfSteps = static_cast<vtkIdType>(defaults.MaximumSteps);
 }
-
-namespace
-{
-/// "" when `value` is finite and > 0, else the sentence naming `name`.
-std::string CheckPositive(const char* name, double value)
-{
-  if (std::isfinite(value) && value > 0.0)
-  {
-    return std::string();
-  }
-  std::ostringstream message;
-  message << name << " is " << value << ": expected a finite number > 0";
-  return message.str();
-}
-} // namespace
 
 bool vtkRiemannIntegrationSettings::SetIntegratorTypeFromName(const char* name)
 {
@@ -55,15 +41,22 @@ const char* vtkRiemannIntegrationSettings::GetIntegratorTypeAsString() const
 
 std::string vtkRiemannIntegrationSettings::CheckSettings() const
 {
-  for (const auto& setting : {
-         std::make_pair("InitialIntegrationStep", this->InitialIntegrationStep),
-         std::make_pair("MinimumIntegrationStep", this->MinimumIntegrationStep),
-         std::make_pair("MaximumIntegrationStep", this->MaximumIntegrationStep),
-         std::make_pair("MaximumError", this->MaximumError),
-         std::make_pair("MaximumPropagation", this->MaximumPropagation),
-       })
+  // Each property in the range of the integration schema (IntegrationSchema.h),
+  // in the schema's order, named as the property.
+  using riemann::IntegrationSettingId;
+  const std::pair<IntegrationSettingId, double> values[] = {
+    { IntegrationSettingId::Integrator, static_cast<double>(this->IntegratorType) },
+    { IntegrationSettingId::Step, this->InitialIntegrationStep },
+    { IntegrationSettingId::MinimumStep, this->MinimumIntegrationStep },
+    { IntegrationSettingId::MaximumStep, this->MaximumIntegrationStep },
+    { IntegrationSettingId::Tolerance, this->MaximumError },
+    { IntegrationSettingId::Length, this->MaximumPropagation },
+    { IntegrationSettingId::MaximumSteps, static_cast<double>(this->MaximumNumberOfSteps) },
+  };
+  for (const auto& value : values)
   {
-    std::string error = CheckPositive(setting.first, setting.second);
+    const riemann::IntegrationSetting& setting = riemann::IntegrationSettingOf(value.first);
+    std::string error = riemann::CheckIntegrationValue(setting, value.second, setting.Property);
     if (!error.empty())
     {
       return error;
@@ -74,12 +67,6 @@ std::string vtkRiemannIntegrationSettings::CheckSettings() const
     std::ostringstream message;
     message << "MinimumIntegrationStep (" << this->MinimumIntegrationStep
             << ") is above MaximumIntegrationStep (" << this->MaximumIntegrationStep << ")";
-    return message.str();
-  }
-  if (this->MaximumNumberOfSteps < 1)
-  {
-    std::ostringstream message;
-    message << "MaximumNumberOfSteps is " << this->MaximumNumberOfSteps << ": expected at least 1";
     return message.str();
   }
   return std::string();

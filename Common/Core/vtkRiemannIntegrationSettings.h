@@ -24,9 +24,12 @@
  * - MaximumPropagation: the arc length at which a geodesic (or a ray) stops.
  * - MaximumNumberOfSteps: the steps after which it stops.
  *
- * Values are stored as given; CheckSettings() names the first one that is
- * not usable (NaN, infinite, not positive, minimum above maximum), and every
- * consumer refuses to run with it (vtkErrorMacro, empty output).
+ * The defaults, ranges, units and help of these properties, and their names
+ * in the command line, the desktop app and scene files, are one table:
+ * riemann::IntegrationSchema (Common/Metric/IntegrationSchema.h). Values
+ * are stored as given; CheckSettings() names the first one outside its
+ * range there (or a minimum step above the maximum), and every consumer
+ * refuses to run with it (vtkErrorMacro, empty output).
  *
  * @code{.py}
  * tracer = riemann.vtkRiemannGeodesicTracer()

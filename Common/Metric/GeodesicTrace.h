@@ -6,6 +6,7 @@
 #ifndef RiemannGeodesicTrace_h
 #define RiemannGeodesicTrace_h
 
+#include "IntegrationSchema.h"
 #include "Integrators.h"
 #include "RiemannCommonMetricExport.h"
 
@@ -34,19 +35,28 @@ enum TerminationReason : int
 /// A short English name for a TerminationReason ("out of length", ...).
 RIEMANNCOMMONMETRIC_EXPORT const char* TerminationReasonName(int reason);
 
+/// The curves' default of an integration setting (IntegrationSchema.h).
+constexpr double CurveDefault(IntegrationSettingId id)
+{
+  return IntegrationSettingOf(id).CurveDefault;
+}
+
+/// How a geodesic is integrated; the defaults are IntegrationSchema.h's for curves.
 struct GeodesicOptions
 {
-  IntegratorType Integrator = IntegratorType::RungeKutta4;
+  IntegratorType Integrator =
+    static_cast<IntegratorType>(static_cast<int>(CurveDefault(IntegrationSettingId::Integrator)));
   /// Step in Riemannian arc length (the initial step for dp45).
-  double Step = 0.01;
+  double Step = CurveDefault(IntegrationSettingId::Step);
   /// Bounds of the adaptive step (dp45 only).
-  double MinimumStep = 1e-7;
-  double MaximumStep = 0.5;
+  double MinimumStep = CurveDefault(IntegrationSettingId::MinimumStep);
+  double MaximumStep = CurveDefault(IntegrationSettingId::MaximumStep);
   /// Mixed absolute/relative error tolerance per step (dp45 only).
-  double Tolerance = 1e-8;
+  double Tolerance = CurveDefault(IntegrationSettingId::Tolerance);
   /// Riemannian arc length at which the geodesic stops.
-  double MaximumLength = 10.0;
-  long long MaximumSteps = 100000;
+  double MaximumLength = CurveDefault(IntegrationSettingId::Length);
+  long long MaximumSteps =
+    static_cast<long long>(CurveDefault(IntegrationSettingId::MaximumSteps));
   /// Stop when leaving [x0,x1]x[y0,y1]x[z0,z1] (only if UseBounds).
   bool UseBounds = false;
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };

@@ -69,10 +69,10 @@ template <class Error>
 }
 
 /// Refuse non-objects and keys outside `allowed` (plus "name" and
-/// "description", free text on every object).
-template <class Error>
-void CheckKeys(
-  const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
+/// "description", free text on every object). `allowed`: any range of
+/// C strings (a braced list, or keys taken from a table).
+template <class Error, class Keys = std::initializer_list<const char*>>
+void CheckKeys(const Json& object, const std::string& path, const Keys& allowed)
 {
   if (!object.is_object())
   {

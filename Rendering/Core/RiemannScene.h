@@ -27,6 +27,7 @@
 #ifndef RiemannScene_h
 #define RiemannScene_h
 
+#include "IntegrationSchema.h"
 #include "Integrators.h"
 #include "Jets.h"
 #include "ObserverCamera.h"
@@ -129,15 +130,24 @@ struct SceneObject
 };
 
 /// How rays are integrated (in Riemannian arc length).
+/// The rays' default of an integration setting (IntegrationSchema.h).
+constexpr double RayDefault(IntegrationSettingId id)
+{
+  return IntegrationSettingOf(id).RayDefault;
+}
+
+/// How the rays of a picture are integrated (a scene's "integrator" block);
+/// the defaults are IntegrationSchema.h's for rays.
 struct RaySettings
 {
   /// Euler, RungeKutta4 or DormandPrince45 ("adaptive").
-  IntegratorType Integrator = IntegratorType::RungeKutta4;
-  double Step = 0.02;
-  int MaximumSteps = 1000;
-  double MaximumLength = 30.0;
+  IntegratorType Integrator =
+    static_cast<IntegratorType>(static_cast<int>(RayDefault(IntegrationSettingId::Integrator)));
+  double Step = RayDefault(IntegrationSettingId::Step);
+  int MaximumSteps = static_cast<int>(RayDefault(IntegrationSettingId::MaximumSteps));
+  double MaximumLength = RayDefault(IntegrationSettingId::Length);
   /// Per-step tolerance of the adaptive integrator.
-  double Tolerance = 1e-4;
+  double Tolerance = RayDefault(IntegrationSettingId::Tolerance);
 };
 
 /**

@@ -45,7 +45,6 @@ constexpr double MaximumLatticeLines = 10000;
 /// step through line indices by 1 (in floats on the GPU, exact to 2^24), and
 /// past 2^53 (2^24) a step no longer moves (the loop never ends).
 constexpr double MaximumLatticeIndex = 1e6;
-constexpr int MaximumIntegratorSteps = 1000000;
 
 double Number(const Json& value, const std::string& path)
 {
@@ -257,55 +256,61 @@ CameraSettings Camera(const Json& object, const std::string& path)
   return camera;
 }
 
+/// The value of one of the integrator block's numbers, in the range the
+/// integration schema (IntegrationSchema.h) gives it.
+double IntegrationNumber(const Json& object, IntegrationSettingId id, const std::string& path)
+{
+  const IntegrationSetting& setting = IntegrationSettingOf(id);
+  const std::string where = path + "." + setting.JsonKey;
+  const Json& value = object.at(setting.JsonKey);
+  if (!value.is_number() || !CheckIntegrationValue(setting, value.get<double>(), where).empty())
+  {
+    Fail(where, "expected " + DescribeIntegrationRange(setting) + ", got " + Describe(value));
+  }
+  return value.get<double>();
+}
+
 RaySettings Integrator(const Json& object, const std::string& path)
 {
-  CheckKeys(object, path, { "method", "step", "max_steps", "max_length", "tolerance" });
+  // The block's keys are the schema's JSON keys, in its order.
+  std::vector<const char*> keys;
+  for (const IntegrationSetting& setting : IntegrationSchema)
+  {
+    if (*setting.JsonKey)
+    {
+      keys.push_back(setting.JsonKey);
+    }
+  }
+  json::CheckKeys<SceneDefinitionError>(object, path, keys);
   RaySettings rays;
-  if (object.contains("method"))
+  const char* methodKey = IntegrationSettingOf(IntegrationSettingId::Integrator).JsonKey;
+  if (object.contains(methodKey))
   {
-    const std::string method = String(object.at("method"), path + ".method");
-    if (method == "euler")
+    const std::string method = String(object.at(methodKey), path + "." + methodKey);
+    if (!ParseIntegratorName(method, rays.Integrator))
     {
-      rays.Integrator = IntegratorType::Euler;
-    }
-    else if (method == "rk4")
-    {
-      rays.Integrator = IntegratorType::RungeKutta4;
-    }
-    else if (method == "adaptive" || method == "dp45")
-    {
-      rays.Integrator = IntegratorType::DormandPrince45;
-    }
-    else
-    {
-      Fail(path + ".method",
-        "unknown method \"" + method + "\"; expected \"euler\", \"rk4\" or \"adaptive\"");
+      Fail(path + "." + methodKey,
+        "unknown method \"" + method + "\"; expected \"euler\", \"rk4\" or \"dp45\"");
     }
   }
-  if (object.contains("step"))
+  const auto has = [&object](IntegrationSettingId id)
+  { return object.contains(IntegrationSettingOf(id).JsonKey); };
+  if (has(IntegrationSettingId::Step))
   {
-    rays.Step = Positive(object.at("step"), path + ".step");
+    rays.Step = IntegrationNumber(object, IntegrationSettingId::Step, path);
   }
-  if (object.contains("max_steps"))
+  if (has(IntegrationSettingId::MaximumSteps))
   {
-    const Json& value = object.at("max_steps");
-    const double steps = value.is_number() ? value.get<double>() : 0.0;
-    if (!value.is_number() || steps != std::floor(steps) || steps < 1 ||
-      steps > MaximumIntegratorSteps)
-    {
-      Fail(path + ".max_steps",
-        "expected an integer in [1, " + std::to_string(MaximumIntegratorSteps) + "], got " +
-          Describe(value));
-    }
-    rays.MaximumSteps = static_cast<int>(steps);
+    rays.MaximumSteps =
+      static_cast<int>(IntegrationNumber(object, IntegrationSettingId::MaximumSteps, path));
   }
-  if (object.contains("max_length"))
+  if (has(IntegrationSettingId::Length))
   {
-    rays.MaximumLength = Positive(object.at("max_length"), path + ".max_length");
+    rays.MaximumLength = IntegrationNumber(object, IntegrationSettingId::Length, path);
   }
-  if (object.contains("tolerance"))
+  if (has(IntegrationSettingId::Tolerance))
   {
-    rays.Tolerance = Positive(object.at("tolerance"), path + ".tolerance");
+    rays.Tolerance = IntegrationNumber(object, IntegrationSettingId::Tolerance, path);
   }
   return rays;
 }

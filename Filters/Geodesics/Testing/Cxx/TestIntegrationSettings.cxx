@@ -11,6 +11,7 @@
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannGeodesicAlgorithm.h"
 #include "vtkRiemannGeodesicTracer.h"
+#include "IntegrationSchema.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
@@ -342,4 +343,53 @@ TEST(IntegrationSettings, IntegratorTypeFromName)
   EXPECT_EQ(settings->GetIntegratorType(), vtkRiemannIntegrationSettings::RUNGE_KUTTA4);
   EXPECT_EQ(settings->GetMTime(), before);
   EXPECT_STREQ(settings->GetIntegratorTypeAsString(), "rk4");
+}
+
+TEST(IntegrationSettings, DefaultsAndRangesAreTheSchemas)
+{
+  // vtkRiemannIntegrationSettings takes its defaults and its checks from the
+  // integration schema (IntegrationSchema.h), as the CLI, the app and scenes do.
+  using riemann::IntegrationSettingId;
+  vtkNew<vtkRiemannIntegrationSettings> settings;
+  struct Property
+  {
+    IntegrationSettingId Id;
+    double (vtkRiemannIntegrationSettings::*Get)();
+    void (vtkRiemannIntegrationSettings::*Set)(double);
+  };
+  const Property properties[] = {
+    { IntegrationSettingId::Step, &vtkRiemannIntegrationSettings::GetInitialIntegrationStep,
+      &vtkRiemannIntegrationSettings::SetInitialIntegrationStep },
+    { IntegrationSettingId::MinimumStep, &vtkRiemannIntegrationSettings::GetMinimumIntegrationStep,
+      &vtkRiemannIntegrationSettings::SetMinimumIntegrationStep },
+    { IntegrationSettingId::MaximumStep, &vtkRiemannIntegrationSettings::GetMaximumIntegrationStep,
+      &vtkRiemannIntegrationSettings::SetMaximumIntegrationStep },
+    { IntegrationSettingId::Tolerance, &vtkRiemannIntegrationSettings::GetMaximumError,
+      &vtkRiemannIntegrationSettings::SetMaximumError },
+    { IntegrationSettingId::Length, &vtkRiemannIntegrationSettings::GetMaximumPropagation,
+      &vtkRiemannIntegrationSettings::SetMaximumPropagation },
+  };
+  EXPECT_EQ(settings->GetIntegratorType(),
+    riemann::IntegrationSettingOf(IntegrationSettingId::Integrator).CurveDefault);
+  EXPECT_EQ(settings->GetMaximumNumberOfSteps(),
+    riemann::IntegrationSettingOf(IntegrationSettingId::MaximumSteps).CurveDefault);
+  ASSERT_EQ(settings->CheckSettings(), "");
+  for (const Property& p : properties)
+  {
+    const riemann::IntegrationSetting& setting = riemann::IntegrationSettingOf(p.Id);
+    SCOPED_TRACE(setting.Property);
+    const double original = (settings.Get()->*p.Get)();
+    EXPECT_EQ(original, setting.CurveDefault);
+    // Just outside the range: refused, naming the property and the range.
+    const double outside = setting.MinimumExclusive ? setting.Minimum : setting.Minimum / 2;
+    (settings.Get()->*p.Set)(p.Id == IntegrationSettingId::MaximumStep ? 2 * setting.Maximum : outside);
+    const std::string error = settings->CheckSettings();
+    EXPECT_EQ(error.rfind(std::string(setting.Property) + " is ", 0), 0u) << error;
+    EXPECT_NE(error.find(riemann::DescribeIntegrationRange(setting)), std::string::npos) << error;
+    (settings.Get()->*p.Set)(original);
+    EXPECT_EQ(settings->CheckSettings(), "");
+  }
+  settings->SetMaximumNumberOfSteps(0);
+  EXPECT_EQ(settings->CheckSettings(),
+    "MaximumNumberOfSteps is 0: expected a whole number from 1 to 1e+09 (steps)");
 }

@@ -805,7 +805,7 @@ TEST(RayBundle, ChecksItsIntegrationSettingsOnlyWhenUsed)
   EXPECT_NE(errors.Messages[0].find("InitialIntegrationStep"), std::string::npos)
     << errors.Messages[0];
   EXPECT_STREQ(bundle->GetLastError(),
-    "Integration settings: InitialIntegrationStep is nan: expected a finite number > 0.");
+    "Integration settings: InitialIntegrationStep is nan: expected a number from 1e-09 to 1e+06 (arc length).");
   EXPECT_EQ(bundle->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(bundle->GetOutput()->GetNumberOfCells(), 0);
 

@@ -487,18 +487,24 @@ TEST(Scene, RefusesBadInput)
     { R"({"camera": {"lookat": [0,0,0]}})", "scene.camera: unknown key \"lookat\"" },
     { R"({"camera": [0,0,5]})", "scene.camera: expected an object, got an array of 3" },
     // Integrator.
+    // Integrator: the ranges of the integration schema (IntegrationSchema.h).
     { R"({"integrator": {"method": "rk45"}})", "scene.integrator.method: unknown method \"rk45\"" },
     { R"({"integrator": {"step": 0}})",
-      "scene.integrator.step: expected a positive number, got 0" },
-    { R"({"integrator": {"step": -0.1}})", "scene.integrator.step: expected a positive number" },
+      "scene.integrator.step: expected a number from 1e-09 to 1e+06 (arc length), got 0" },
+    { R"({"integrator": {"step": -0.1}})", "scene.integrator.step: expected a number from 1e-09" },
+    { R"({"integrator": {"step": "big"}})", "scene.integrator.step: expected a number from 1e-09" },
     { R"({"integrator": {"max_steps": 0}})",
-      "scene.integrator.max_steps: expected an integer in [1, 1000000], got 0" },
-    { R"({"integrator": {"max_steps": 1000001}})",
-      "scene.integrator.max_steps: expected an integer in [1, 1000000]" },
+      "scene.integrator.max_steps: expected a whole number from 1 to 1e+09 (steps), got 0" },
+    { R"({"integrator": {"max_steps": 2e9}})",
+      "scene.integrator.max_steps: expected a whole number from 1 to 1e+09" },
     { R"({"integrator": {"max_steps": 10.5}})",
-      "scene.integrator.max_steps: expected an integer in [1, 1000000]" },
-    { R"({"integrator": {"max_length": 0}})", "scene.integrator.max_length: expected a positive" },
-    { R"({"integrator": {"tolerance": -1}})", "scene.integrator.tolerance: expected a positive" },
+      "scene.integrator.max_steps: expected a whole number from 1 to 1e+09" },
+    { R"({"integrator": {"max_length": 0}})",
+      "scene.integrator.max_length: expected a number above 0 and at most 1e+09 (arc length)" },
+    { R"({"integrator": {"tolerance": -1}})",
+      "scene.integrator.tolerance: expected a number from 1e-15 to 1" },
+    { R"({"integrator": {"tolerance": 2}})",
+      "scene.integrator.tolerance: expected a number from 1e-15 to 1" },
     { R"({"integrator": {"steps": 10}})", "scene.integrator: unknown key \"steps\"" },
     // Background, fog, lighting.
     { R"({"background": [0, 0, 2]})", "scene.background[2]: expected a number in [0, 1], got 2" },
@@ -1054,4 +1060,29 @@ TEST(EnvironmentMapImage, GreyRepeatsAndAnImageWithoutPixelsIsACallersBug)
     EXPECT_THROW(map.SetImage(bad), std::invalid_argument);
     EXPECT_EQ(map.Width, 2);
   }
+}
+
+//------------------------------------------------------------------------------
+TEST(Scene, IntegratorBlockIsTheSchemasRaysColumn)
+{
+  // A scene's "integrator" block: its keys, defaults and ranges are the
+  // integration schema's (IntegrationSchema.h), rays' column.
+  using riemann::IntegrationSettingId;
+  const riemann::RaySettings rays;
+  const auto ray = [](IntegrationSettingId id) { return riemann::IntegrationSettingOf(id).RayDefault; };
+  EXPECT_EQ(static_cast<double>(rays.Integrator), ray(IntegrationSettingId::Integrator));
+  EXPECT_EQ(rays.Step, ray(IntegrationSettingId::Step));
+  EXPECT_EQ(rays.Tolerance, ray(IntegrationSettingId::Tolerance));
+  EXPECT_EQ(rays.MaximumLength, ray(IntegrationSettingId::Length));
+  EXPECT_EQ(rays.MaximumSteps, ray(IntegrationSettingId::MaximumSteps));
+  EXPECT_EQ(riemann::ParseScene("{}").Rays.Step, rays.Step);
+
+  // Every key of the schema is a key of the block, at the edge of its range.
+  const riemann::Scene scene = riemann::ParseScene(R"({"integrator": {"method": "dp45",
+    "step": 1e-9, "tolerance": 1, "max_length": 1e9, "max_steps": 1e9}})");
+  EXPECT_EQ(scene.Rays.Integrator, riemann::IntegratorType::DormandPrince45);
+  EXPECT_EQ(scene.Rays.Step, 1e-9);
+  EXPECT_EQ(scene.Rays.Tolerance, 1.0);
+  EXPECT_EQ(scene.Rays.MaximumLength, 1e9);
+  EXPECT_EQ(scene.Rays.MaximumSteps, 1000000000);
 }
