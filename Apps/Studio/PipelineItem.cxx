@@ -4,6 +4,7 @@
 #include "RungeKutta.h"
 
 #include "ColorMaps.h"
+#include "IntegrationValues.h"
 
 #include "vtkNew.h"
 #include "vtkRiemannIntegrationSettings.h"
@@ -334,21 +335,17 @@ std::string PipelineItem::Text(const char* key) const
 
 void PipelineItem::ApplyIntegration(vtkRiemannIntegrationSettings* settings) const
 {
-  settings->SetIntegratorTypeFromName(this->Text("IntegratorType").c_str());
-  settings->SetInitialIntegrationStep(this->Number("InitialIntegrationStep"));
-  settings->SetMaximumError(this->Number("MaximumError"));
-  settings->SetMaximumPropagation(this->Number("MaximumPropagation"));
-  settings->SetMaximumNumberOfSteps(this->Integer("MaximumNumberOfSteps"));
+  ApplyIntegrationValues(this->Values, settings);
 }
 
 nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrator, double length)
 {
+  // The schema's defaults for curves (vtkRiemannIntegrationSettings's), but
+  // the item's integrator and length.
   vtkNew<vtkRiemannIntegrationSettings> defaults;
-  own["IntegratorType"] = integrator;
-  own["InitialIntegrationStep"] = defaults->GetInitialIntegrationStep();
-  own["MaximumError"] = defaults->GetMaximumError();
-  own["MaximumPropagation"] = length;
-  own["MaximumNumberOfSteps"] = defaults->GetMaximumNumberOfSteps();
+  defaults->SetIntegratorTypeFromName(integrator);
+  defaults->SetMaximumPropagation(length);
+  own.update(IntegrationValues(defaults));
   return own;
 }
 
@@ -394,14 +391,9 @@ std::vector<PropertySpec> IntegrationPropertySpecs()
 
 std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string& var) const
 {
-  const std::string settings = var + ".GetIntegrationSettings()";
-  return {
-    settings + ".SetIntegratorTypeFromName(\"" + this->Text("IntegratorType") + "\")",
-    settings + ".SetInitialIntegrationStep(" + PythonNumber(this->Number("InitialIntegrationStep")) + ")",
-    settings + ".SetMaximumError(" + PythonNumber(this->Number("MaximumError")) + ")",
-    settings + ".SetMaximumPropagation(" + PythonNumber(this->Number("MaximumPropagation")) + ")",
-    settings + ".SetMaximumNumberOfSteps(" + std::to_string(this->Integer("MaximumNumberOfSteps")) + ")",
-  };
+  vtkNew<vtkRiemannIntegrationSettings> settings;
+  this->ApplyIntegration(settings);
+  return IntegrationPython(var + ".GetIntegrationSettings()", settings);
 }
 
 std::vector<PropertySpec> PipelineItem::ObserverConeProperties(int minimumDirections) const

@@ -1,5 +1,7 @@
 #include "ProjectFile.h"
 
+#include "IntegrationValues.h"
+
 #include "RungeKutta.h"
 
 #include "PipelineItems.h"
@@ -25,10 +27,6 @@ namespace studio
 namespace
 {
 using Json = nlohmann::json;
-
-/// Keys of the inside view's integration settings (vtkRiemannIntegrationSettings's names).
-const char* const IntegrationKeys[] = { "IntegratorType", "InitialIntegrationStep", "MaximumError",
-  "MaximumPropagation", "MaximumNumberOfSteps" };
 
 [[noreturn]] void Fail(const std::string& where, const std::string& why)
 {
@@ -209,29 +207,19 @@ void ParseInside(const Json& inside, ProjectData& project)
   }
   if (inside.contains("integration"))
   {
+    // vtkRiemannIntegrationSettings's properties, each in the integration
+    // schema's range (IntegrationValues.h).
     const Json& integration = inside.at("integration");
-    vtkNew<vtkRiemannIntegrationSettings> check;
+    if (!integration.is_object())
+    {
+      Fail("inside.integration", "expected an object");
+    }
     for (const auto& entry : integration.items())
     {
-      const std::string where = "inside.integration." + entry.key();
-      if (entry.key() == "IntegratorType")
+      const std::string problem = CheckIntegrationValue(entry.key(), entry.value());
+      if (!problem.empty())
       {
-        if (!check->SetIntegratorTypeFromName(String(entry.value(), where).c_str()))
-        {
-          Fail(where, "expected \"euler\", \"rk4\" or \"dp45\"");
-        }
-      }
-      else if (std::find(std::begin(IntegrationKeys), std::end(IntegrationKeys), entry.key()) !=
-        std::end(IntegrationKeys))
-      {
-        if (!(Number(entry.value(), where) > 0.0))
-        {
-          Fail(where, "must be > 0");
-        }
-      }
-      else
-      {
-        Fail(where, "unknown setting");
+        Fail("inside.integration." + entry.key(), problem);
       }
     }
     project.Integration = integration;
@@ -303,11 +291,7 @@ ProjectData CaptureProject(const StudioDocument& document)
   project.Observer.From(document.Observer());
   project.UseSceneSettings = document.UseSceneSettings();
   vtkRiemannIntegrationSettings* rays = document.RaySettings();
-  project.Integration = { { "IntegratorType", riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType())) },
-    { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
-    { "MaximumError", rays->GetMaximumError() },
-    { "MaximumPropagation", rays->GetMaximumPropagation() },
-    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() } };
+  project.Integration = IntegrationValues(rays);
   for (const auto& item : document.Items())
   {
     project.Items.push_back(
@@ -454,29 +438,7 @@ QString ApplyProject(const ProjectData& project, StudioDocument& document)
     return QStringLiteral("metric: ") + status.Message;
   }
   vtkRiemannIntegrationSettings* rays = document.RaySettings();
-  for (const auto& entry : project.Integration.items())
-  {
-    if (entry.key() == "IntegratorType")
-    {
-      rays->SetIntegratorTypeFromName(entry.value().get<std::string>().c_str());
-    }
-    else if (entry.key() == "InitialIntegrationStep")
-    {
-      rays->SetInitialIntegrationStep(entry.value().get<double>());
-    }
-    else if (entry.key() == "MaximumError")
-    {
-      rays->SetMaximumError(entry.value().get<double>());
-    }
-    else if (entry.key() == "MaximumPropagation")
-    {
-      rays->SetMaximumPropagation(entry.value().get<double>());
-    }
-    else if (entry.key() == "MaximumNumberOfSteps")
-    {
-      rays->SetMaximumNumberOfSteps(static_cast<vtkIdType>(entry.value().get<double>()));
-    }
-  }
+  ApplyIntegrationValues(project.Integration, rays);
   document.SetUseSceneSettings(project.UseSceneSettings);
   project.Observer.To(document.Observer());
   document.ObserverChanged();

@@ -1,5 +1,7 @@
 #include "PythonTrace.h"
 
+#include "IntegrationValues.h"
+
 #include "RungeKutta.h"
 
 #include "PipelineItem.h"
@@ -150,15 +152,12 @@ void WriteObserver(std::ostream& out, const StudioDocument& document)
       << "camera.SetViewAngle(" << PythonNumber(camera->GetViewAngle()) << ")\n"
       << "width, height = " << document.ViewWidth() << ", " << document.ViewHeight() << "\n"
       << "use_scene_settings = " << (document.UseSceneSettings() ? "True" : "False") << "\n"
-      << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n"
-      << "ray_settings.SetIntegratorTypeFromName(\"" << riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType()))
-      << "\")\n"
-      << "ray_settings.SetInitialIntegrationStep(" << PythonNumber(rays->GetInitialIntegrationStep())
-      << ")\n"
-      << "ray_settings.SetMaximumError(" << PythonNumber(rays->GetMaximumError()) << ")\n"
-      << "ray_settings.SetMaximumPropagation(" << PythonNumber(rays->GetMaximumPropagation())
-      << ")\n"
-      << "ray_settings.SetMaximumNumberOfSteps(" << rays->GetMaximumNumberOfSteps() << ")\n\n";
+      << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n";
+  for (const std::string& line : IntegrationPython("ray_settings", rays))
+  {
+    out << line << "\n";
+  }
+  out << "\n";
 }
 }
 

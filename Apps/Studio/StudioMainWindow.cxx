@@ -1,5 +1,7 @@
 #include "StudioMainWindow.h"
 
+#include "IntegrationValues.h"
+
 #include "GeodesicTrace.h"
 #include "RungeKutta.h"
 
@@ -492,25 +494,10 @@ void StudioMainWindow::ShowInsideViewSettings()
         {
           this->Doc->SetUseSceneSettings(value.get<bool>());
         }
-        else if (key == "IntegratorType")
+        else
         {
-          settings->SetIntegratorTypeFromName(value.get<std::string>().c_str());
-        }
-        else if (key == "InitialIntegrationStep")
-        {
-          settings->SetInitialIntegrationStep(value.get<double>());
-        }
-        else if (key == "MaximumError")
-        {
-          settings->SetMaximumError(value.get<double>());
-        }
-        else if (key == "MaximumPropagation")
-        {
-          settings->SetMaximumPropagation(value.get<double>());
-        }
-        else if (key == "MaximumNumberOfSteps")
-        {
-          settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(value.get<double>()));
+          // One of the integration settings (IntegrationValues.h).
+          ApplyIntegrationValues(nlohmann::json{ { key, value } }, settings);
         }
       }
       this->InsideWidget->RenderNow();

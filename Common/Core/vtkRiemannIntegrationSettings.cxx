@@ -72,6 +72,58 @@ std::string vtkRiemannIntegrationSettings::CheckSettings() const
   return std::string();
 }
 
+double vtkRiemannIntegrationSettings::GetValue(riemann::IntegrationSettingId id)
+{
+  using riemann::IntegrationSettingId;
+  switch (id)
+  {
+    case IntegrationSettingId::Integrator:
+      return this->IntegratorType;
+    case IntegrationSettingId::Step:
+      return this->InitialIntegrationStep;
+    case IntegrationSettingId::MinimumStep:
+      return this->MinimumIntegrationStep;
+    case IntegrationSettingId::MaximumStep:
+      return this->MaximumIntegrationStep;
+    case IntegrationSettingId::Tolerance:
+      return this->MaximumError;
+    case IntegrationSettingId::Length:
+      return this->MaximumPropagation;
+    case IntegrationSettingId::MaximumSteps:
+      return static_cast<double>(this->MaximumNumberOfSteps);
+  }
+  return 0.0;
+}
+
+void vtkRiemannIntegrationSettings::SetValue(riemann::IntegrationSettingId id, double value)
+{
+  using riemann::IntegrationSettingId;
+  switch (id)
+  {
+    case IntegrationSettingId::Integrator:
+      this->SetIntegratorType(static_cast<int>(value));
+      break;
+    case IntegrationSettingId::Step:
+      this->SetInitialIntegrationStep(value);
+      break;
+    case IntegrationSettingId::MinimumStep:
+      this->SetMinimumIntegrationStep(value);
+      break;
+    case IntegrationSettingId::MaximumStep:
+      this->SetMaximumIntegrationStep(value);
+      break;
+    case IntegrationSettingId::Tolerance:
+      this->SetMaximumError(value);
+      break;
+    case IntegrationSettingId::Length:
+      this->SetMaximumPropagation(value);
+      break;
+    case IntegrationSettingId::MaximumSteps:
+      this->SetMaximumNumberOfSteps(static_cast<vtkIdType>(value));
+      break;
+  }
+}
+
 void vtkRiemannIntegrationSettings::DeepCopy(vtkRiemannIntegrationSettings* other)
 {
   if (!other || other == this)

@@ -50,6 +50,7 @@
 namespace riemann
 {
 struct GeodesicOptions;
+enum class IntegrationSettingId;
 }
 
 class RIEMANNCOMMONCORE_EXPORT vtkRiemannIntegrationSettings : public vtkObject
@@ -130,6 +131,17 @@ public:
 
   /// The settings as the core's geodesic options (the other options keep their values).
   VTK_WRAPEXCLUDE void ApplyTo(riemann::GeodesicOptions& options) const;
+
+  ///@{
+  /**
+   * A property by its id in the integration schema (IntegrationSchema.h),
+   * the integrator as its number: what lets the app's items and projects,
+   * and the Python they export, go through the schema's table instead of
+   * naming each property.
+   */
+  VTK_WRAPEXCLUDE double GetValue(riemann::IntegrationSettingId id);
+  VTK_WRAPEXCLUDE void SetValue(riemann::IntegrationSettingId id, double value);
+  ///@}
 
   /**
    * For the consumers' SetIntegrationSettings(): `slot` (owned by `owner`,

@@ -6,7 +6,9 @@
 #include "OutsideView.h"
 #include "ParameterPanel.h"
 #include "PipelineBrowser.h"
+#include "IntegrationValues.h"
 #include "PipelineItems.h"
+#include "ProjectFile.h"
 #include "PropertiesPanel.h"
 #include "StudioDocument.h"
 #include "StudioMainWindow.h"
@@ -199,6 +201,7 @@ private Q_SLOTS:
   void ProjectRoundTrip();
   void CancelledJobLeavesAppResponsive();
   void BadProjectIsRefusedWithDialog();
+  void ProjectIntegrationFollowsTheSchema();
   void PropertiesRefuseBadValues();
   void PythonTraceRebuildsPipeline();
   void CommandLineScreenshot();
@@ -507,6 +510,54 @@ void TestStudio::CancelledJobLeavesAppResponsive()
   QVERIFY(window->Document()->Jobs()->IsRunning(field));
   window->Document()->RemoveItem(field); // cancels its job
   QVERIFY(WaitForJobs(*window, 20000));
+}
+
+void TestStudio::ProjectIntegrationFollowsTheSchema()
+{
+  // A project's inside.integration is vtkRiemannIntegrationSettings's
+  // properties, read and checked through the integration schema
+  // (IntegrationSchema.h): its ranges, its words; written back the same.
+  const auto parse = [](const std::string& integration)
+  {
+    return riemann::studio::ParseProject(R"({"riemann-studio": 1,
+ "metric": {"text": "{\"type\": \"euclidean\"}"},
+ "observer": {"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 30},
+ "inside": {"integration": )" + integration + "}}");
+  };
+  const auto error = [&parse](const std::string& integration) -> std::string
+  {
+    try
+    {
+      parse(integration);
+    }
+    catch (const riemann::studio::ProjectError& e)
+    {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  QCOMPARE(error(R"({"InitialIntegrationStep": 0})"),
+    std::string("inside.integration.InitialIntegrationStep: expected a number from 1e-09 to "
+                "1e+06 (arc length), got 0"));
+  QCOMPARE(error(R"({"MaximumNumberOfSteps": 2.5})"),
+    std::string("inside.integration.MaximumNumberOfSteps: expected a whole number from 1 to "
+                "1e+09 (steps), got 2.5"));
+  QCOMPARE(error(R"({"IntegratorType": "rk5"})"),
+    std::string("inside.integration.IntegratorType: expected \"euler\", \"rk4\" or \"dp45\""));
+  QCOMPARE(error(R"({"Step": 0.1})"), std::string("inside.integration.Step: unknown setting"));
+
+  // Every setting the app shows, round trip through the settings object.
+  const riemann::studio::ProjectData project = parse(R"({"IntegratorType": "dp45",
+    "InitialIntegrationStep": 0.05, "MaximumError": 1e-6, "MaximumPropagation": 12,
+    "MaximumNumberOfSteps": 1234})");
+  vtkNew<vtkRiemannIntegrationSettings> settings;
+  riemann::studio::ApplyIntegrationValues(project.Integration, settings);
+  QCOMPARE(settings->GetIntegratorType(), static_cast<int>(vtkRiemannIntegrationSettings::DORMAND_PRINCE45));
+  QCOMPARE(settings->GetInitialIntegrationStep(), 0.05);
+  QCOMPARE(settings->GetMaximumError(), 1e-6);
+  QCOMPARE(settings->GetMaximumPropagation(), 12.0);
+  QCOMPARE(settings->GetMaximumNumberOfSteps(), static_cast<vtkIdType>(1234));
+  QCOMPARE(riemann::studio::IntegrationValues(settings), project.Integration);
 }
 
 void TestStudio::BadProjectIsRefusedWithDialog()
