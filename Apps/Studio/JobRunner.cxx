@@ -1,5 +1,7 @@
 #include "JobRunner.h"
 
+#include "RiemannJobStop.h"
+
 #include "RiemannVtkMessages.h"
 
 #include "vtkAlgorithm.h"
@@ -26,7 +28,9 @@ struct JobRunner::Job
   vtkSmartPointer<vtkAlgorithm> Algorithm;
   QString Label;
   Finished WhenFinished;
-  std::atomic<bool> Cancelled{ false };
+  /// Cancel: the command line's mechanism for SIGINT (RiemannJobStop.h). The
+  /// request sticks, so a job cancelled before its thread starts stops at once.
+  riemann::JobStop Stop;
   /// Errors the filter raised (vtkErrorMacro), collected on the worker.
   std::mutex ErrorLock;
   std::string Errors;
@@ -70,14 +74,14 @@ void JobRunner::Start(
 {
   auto job = std::make_shared<Job>();
   job->Algorithm = std::move(algorithm);
+  job->Stop.Watch(job->Algorithm);
   job->Label = label;
   job->WhenFinished = std::move(finished);
   auto running = this->Running.find(key);
   if (running != this->Running.end())
   {
     // The latest request wins: stop the running job, start this one after.
-    running->second->Cancelled = true;
-    running->second->Algorithm->SetAbortExecute(1);
+    running->second->Stop.Request();
     this->Queued[key] = job;
     return;
   }
@@ -118,7 +122,9 @@ void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
 void JobRunner::Done(const void* key, std::shared_ptr<Job> job)
 {
   this->Running.erase(key);
-  const bool cancelled = job->Cancelled || job->Algorithm->GetAbortExecute();
+  // The job is over: its stop must not stop the next job of this algorithm.
+  job->Stop.Release();
+  const bool cancelled = job->Stop.Requested() || job->Algorithm->GetAbortExecute();
   QString error;
   {
     std::lock_guard<std::mutex> lock(job->ErrorLock);
@@ -150,8 +156,7 @@ void JobRunner::Cancel(const void* key)
   auto running = this->Running.find(key);
   if (running != this->Running.end())
   {
-    running->second->Cancelled = true;
-    running->second->Algorithm->SetAbortExecute(1);
+    running->second->Stop.Request();
   }
 }
 
@@ -160,8 +165,7 @@ void JobRunner::CancelAll()
   this->Queued.clear();
   for (auto& entry : this->Running)
   {
-    entry.second->Cancelled = true;
-    entry.second->Algorithm->SetAbortExecute(1);
+    entry.second->Stop.Request();
   }
 }
 

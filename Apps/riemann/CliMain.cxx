@@ -88,6 +88,10 @@ int RunCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& 
     }
     return 2;
   }
+  catch (const Interrupted&)
+  {
+    // Concluded below: SIGINT or SIGTERM stopped the command (Interrupts.h).
+  }
   catch (const StoppedByAnotherRank&)
   {
     status = 1; // the rank that failed says why
@@ -111,6 +115,12 @@ int RunCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& 
       std::cerr << ErrorPrefix("internal error") << e.what() << "\n";
     }
     status = 1;
+  }
+  if (InterruptHandling::Interrupted())
+  {
+    // Whatever the command was doing (a failure may follow from a stopped
+    // filter's empty output): the interrupt is the answer.
+    return InterruptHandling::Conclude();
   }
   if (Rank() != 0)
   {

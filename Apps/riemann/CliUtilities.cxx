@@ -3,6 +3,7 @@
 #include "Interrupts.h"
 #include "RiemannVtkMessages.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPolyData.h"
@@ -330,6 +331,12 @@ void WriteAtomically(const std::string& path, const std::function<bool(const std
     std::remove(temporary.c_str());
     throw;
   }
+  if (InterruptHandling::Interrupted())
+  {
+    // Not renamed over an earlier output: what was written may be cut short.
+    std::remove(temporary.c_str());
+    throw Interrupted();
+  }
   if (!written || std::rename(temporary.c_str(), path.c_str()) != 0)
   {
     std::remove(temporary.c_str());
@@ -460,10 +467,18 @@ void ErrorCollector::Execute(vtkObject* caller, unsigned long, void* data)
 void ErrorCollector::Observe(vtkObject* object)
 {
   object->AddObserver(vtkCommand::ErrorEvent, this);
+  // The algorithms a command runs stop at their next check on SIGINT or
+  // SIGTERM (Interrupts.h), as riemann-studio's Cancel stops its jobs.
+  InterruptHandling::Watch(vtkAlgorithm::SafeDownCast(object));
 }
 
 void ErrorCollector::ThrowIfAny(const std::string& context) const
 {
+  // A stopped algorithm's output is empty or partial: nothing after it runs.
+  if (InterruptHandling::Interrupted())
+  {
+    throw Interrupted();
+  }
   if (this->Messages.empty())
   {
     return;

@@ -2,7 +2,11 @@
 
 #include "Distributed.h"
 
+#include "RiemannJobStop.h"
+
+#include <atomic>
 #include <cctype>
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -61,12 +65,26 @@ int RemovePartialFiles()
   return removed;
 }
 
-void WaitForInterrupts(sigset_t signals)
+/// The signal that came (0: none yet).
+std::atomic<int> ReceivedSignal{ 0 };
+
+/// The stop every watched algorithm honours (riemann-studio's Cancel's too).
+JobStop& Stop()
 {
-  int signal = 0;
-  while (sigwait(&signals, &signal) != 0)
-  {
-  }
+  static JobStop stop;
+  return stop;
+}
+
+/// Whoever concludes first (the command at its end, or the waiting thread
+/// after GraceSeconds) does it; the other does nothing.
+std::mutex ConcludeLock;
+bool Concluded = false;
+
+/// Partial files removed, the line printed; the exit status.
+int ConcludeLocked()
+{
+  Concluded = true;
+  const int signal = ReceivedSignal.load();
   const int removed = RemovePartialFiles();
   if (Rank() == 0)
   {
@@ -77,7 +95,36 @@ void WaitForInterrupts(sigset_t signals)
                    (removed == 1 ? " partial file" : " partial files"))
               << " (earlier outputs are kept)" << std::endl;
   }
-  std::_Exit(128 + signal);
+  return 128 + signal;
+}
+
+void WaitForInterrupts(sigset_t signals)
+{
+  int signal = 0;
+  while (sigwait(&signals, &signal) != 0)
+  {
+  }
+  ReceivedSignal.store(signal);
+  Stop().Request();
+  // The command stops at its next check and concludes; wait for that.
+  const auto deadline =
+    std::chrono::steady_clock::now() + std::chrono::seconds(InterruptHandling::GraceSeconds);
+  while (std::chrono::steady_clock::now() < deadline)
+  {
+    {
+      std::lock_guard<std::mutex> guard(ConcludeLock);
+      if (Concluded)
+      {
+        return;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::lock_guard<std::mutex> guard(ConcludeLock);
+  if (!Concluded)
+  {
+    std::_Exit(ConcludeLocked());
+  }
 }
 } // namespace
 
@@ -117,6 +164,22 @@ void InterruptHandling::AddOutput(const std::string& path)
 std::string InterruptHandling::PartialTag()
 {
   return std::to_string(::getpid());
+}
+
+void InterruptHandling::Watch(vtkAlgorithm* algorithm)
+{
+  Stop().Watch(algorithm);
+}
+
+bool InterruptHandling::Interrupted()
+{
+  return ReceivedSignal.load() != 0;
+}
+
+int InterruptHandling::Conclude()
+{
+  std::lock_guard<std::mutex> guard(ConcludeLock);
+  return Concluded ? 128 + ReceivedSignal.load() : ConcludeLocked();
 }
 } // namespace cli
 } // namespace riemann

@@ -3,7 +3,9 @@
 #include "vtkRiemannReportError.h"
 
 #include "DirectionLattice.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDelaunay2D.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
@@ -84,13 +86,36 @@ std::vector<vtkIdType> BoundaryLoop(vtkCellArray* triangles)
 // Build's steps for three directions or more: TriangulateStereographic ->
 // OrientOutward.
 
+/// While the triangulation runs for `owner` (the filter that builds the
+/// grid): its progress is reported as the owner's, so that a stop requested
+/// of the owner (riemann::JobStop sets AbortExecute at a progress report)
+/// reaches vtkDelaunay2D, which checks its own AbortExecute as it inserts
+/// points. A million directions take minutes to triangulate.
+struct TriangulationOwner
+{
+  vtkAlgorithm* Owner;
+  vtkAlgorithm* Triangulation;
+};
+
+void ForwardTriangulationProgress(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* owned = static_cast<TriangulationOwner*>(clientData);
+  // The grid is the prelude of the owner's work: its first thousandth.
+  owned->Owner->UpdateProgress(1e-3 * *static_cast<double*>(callData));
+  if (owned->Owner->GetAbortExecute())
+  {
+    owned->Triangulation->SetAbortExecute(1);
+  }
+}
+
 /// The triangles of the directions' Delaunay triangulation after a
 /// stereographic projection from a pole onto the plane orthogonal to it:
 /// -axis for a cap (outside it); for the whole sphere the last direction
 /// (the one nearest -axis), whose star is added afterwards as the cone over
-/// the boundary of the others' triangulation.
-void TriangulateStereographic(
-  vtkPoints* directions, const Vector& axis, bool wholeSphere, vtkCellArray* triangles)
+/// the boundary of the others' triangulation. Returns false when `owner` was
+/// stopped (the triangles are then partial).
+bool TriangulateStereographic(vtkPoints* directions, const Vector& axis, bool wholeSphere,
+  vtkCellArray* triangles, vtkAlgorithm* owner)
 {
   const int count = static_cast<int>(directions->GetNumberOfPoints());
   Vector pole = { -axis[0], -axis[1], -axis[2] };
@@ -119,7 +144,19 @@ void TriangulateStereographic(
   plane->SetPoints(projected);
   vtkNew<vtkDelaunay2D> delaunay;
   delaunay->SetInputData(plane);
+  TriangulationOwner owned{ owner, delaunay };
+  if (owner)
+  {
+    vtkNew<vtkCallbackCommand> forward;
+    forward->SetCallback(ForwardTriangulationProgress);
+    forward->SetClientData(&owned);
+    delaunay->AddObserver(vtkCommand::ProgressEvent, forward);
+  }
   delaunay->Update();
+  if (owner && owner->GetAbortExecute())
+  {
+    return false;
+  }
   triangles->DeepCopy(delaunay->GetOutput()->GetPolys());
   if (wholeSphere)
   {
@@ -131,6 +168,7 @@ void TriangulateStereographic(
       triangles->InsertNextCell(3, star);
     }
   }
+  return true;
 }
 
 /// Every triangle turned to face outward (normal . centroid > 0).
@@ -161,7 +199,7 @@ void OrientOutward(vtkPoints* directions, vtkCellArray* triangles)
 }
 
 bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[3],
-  double coneAngle, vtkPolyData* grid, std::string& message)
+  double coneAngle, vtkPolyData* grid, std::string& message, vtkAlgorithm* owner)
 {
   grid->Initialize();
   if (numberOfDirections > MaximumNumberOfDirections)
@@ -204,7 +242,11 @@ bool vtkRiemannDirectionGrid::Build(int numberOfDirections, const double axisIn[
   vtkNew<vtkCellArray> triangles;
   if (count >= 3)
   {
-    TriangulateStereographic(directions, axis, wholeSphere, triangles);
+    if (!TriangulateStereographic(directions, axis, wholeSphere, triangles, owner))
+    {
+      message = "stopped";
+      return false;
+    }
     OrientOutward(directions, triangles);
   }
   grid->SetPoints(directions);

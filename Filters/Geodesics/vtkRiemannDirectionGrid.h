@@ -64,10 +64,12 @@ public:
    * The grid's directions and triangles for these settings, or false with a
    * message (a zero or non-finite axis, more than MaximumNumberOfDirections). `grid` receives the points (unit
    * directions), the triangles and DirectionId. Used by the filters that
-   * shoot geodesics over the grid.
+   * shoot geodesics over the grid. With `owner` (the filter building it),
+   * the triangulation reports progress as the owner's and stops when the
+   * owner's AbortExecute is set (riemann::JobStop): false, message "stopped".
    */
   VTK_WRAPEXCLUDE static bool Build(int numberOfDirections, const double axis[3], double coneAngle,
-    vtkPolyData* grid, std::string& message);
+    vtkPolyData* grid, std::string& message, vtkAlgorithm* owner = nullptr);
 
   /**
    * A surface over the grid: for each triangle of `grid` whose three

@@ -67,9 +67,12 @@ bool vtkRiemannGeodesicAlgorithm::BuildDirectionGrid(
   int numberOfDirections, const double coneAxis[3], double coneAngle, vtkPolyData* grid)
 {
   std::string message;
-  if (!vtkRiemannDirectionGrid::Build(numberOfDirections, coneAxis, coneAngle, grid, message))
+  if (!vtkRiemannDirectionGrid::Build(numberOfDirections, coneAxis, coneAngle, grid, message, this))
   {
-    this->ReportError(message + ".");
+    if (!this->GetAbortExecute()) // a requested stop is not an error
+    {
+      this->ReportError(message + ".");
+    }
     return false;
   }
   return true;
