@@ -35,12 +35,6 @@ enum TerminationReason : int
 /// A short English name for a TerminationReason ("out of length", ...).
 RIEMANNCOMMONMETRIC_EXPORT const char* TerminationReasonName(int reason);
 
-/// The curves' default of an integration setting (IntegrationSchema.h).
-constexpr double CurveDefault(IntegrationSettingId id)
-{
-  return IntegrationSettingOf(id).CurveDefault;
-}
-
 /// How a geodesic is integrated; the defaults are IntegrationSchema.h's for curves.
 struct GeodesicOptions
 {

@@ -102,6 +102,16 @@ constexpr const IntegrationSetting& IntegrationSettingOf(IntegrationSettingId id
   return IntegrationSchema[static_cast<std::size_t>(id)];
 }
 
+/// The default of a setting for curves (GeodesicOptions) and for rays (RaySettings).
+constexpr double CurveDefault(IntegrationSettingId id)
+{
+  return IntegrationSettingOf(id).CurveDefault;
+}
+constexpr double RayDefault(IntegrationSettingId id)
+{
+  return IntegrationSettingOf(id).RayDefault;
+}
+
 /**
  * "" when `value` is valid for `setting` (finite, in range, whole for a
  * Count, an integrator index for a Choice); else why not, naming it `name`

@@ -130,12 +130,6 @@ struct SceneObject
 };
 
 /// How rays are integrated (in Riemannian arc length).
-/// The rays' default of an integration setting (IntegrationSchema.h).
-constexpr double RayDefault(IntegrationSettingId id)
-{
-  return IntegrationSettingOf(id).RayDefault;
-}
-
 /// How the rays of a picture are integrated (a scene's "integrator" block);
 /// the defaults are IntegrationSchema.h's for rays.
 struct RaySettings
