@@ -74,7 +74,6 @@ void JobRunner::Start(
 {
   auto job = std::make_shared<Job>();
   job->Algorithm = std::move(algorithm);
-  job->Stop.Watch(job->Algorithm);
   job->Label = label;
   job->WhenFinished = std::move(finished);
   auto running = this->Running.find(key);
@@ -111,6 +110,10 @@ void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
           riemann::PlainVtkMessage(static_cast<const char*>(callData), caller->GetClassName());
       }
     });
+    // Observers are added here, on the job's thread: the algorithm may still
+    // be running the job this one replaces when Start() queues it. A Cancel
+    // requested before this point is kept by JobStop and honoured at once.
+    job->Stop.Watch(job->Algorithm);
     job->Algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
     job->Algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
     job->Algorithm->Update();
