@@ -994,19 +994,35 @@ void TestStudio::HoldingASliderTracesFewerRaysUntilItIsLetGo()
   QCOMPARE(DifferentPixels(captured, inside->grabFramebuffer()), 0.0);
 }
 
+/// From a finished still picture of the inside view, move the parameter
+/// slider "a" and wait for the first picture after it (`drawn` spies on
+/// InsideView::ViewDrawn). False when either does not come.
+bool MoveSliderFromAFinishedPicture(StudioMainWindow& window, QSignalSpy& drawn)
+{
+  InsideView* inside = window.Inside();
+  if (!QTest::qWaitFor([inside]() { return inside->Pass()->GetRefinementComplete(); }, 60000))
+  {
+    return false;
+  }
+  drawn.clear();
+  QSlider* slider = window.Parameters()->Slider("/parameters/a");
+  if (!slider)
+  {
+    return false;
+  }
+  slider->setValue(slider->value() + 40);
+  return QTest::qWaitFor([&drawn]() { return drawn.count() >= 1; }, 5000);
+}
+
 void TestStudio::StillFramesComeInPiecesAndTheWindowAnswers()
 {
   auto window = OpenWindow();
   QVERIFY(window);
   InsideView* inside = window->Inside();
-  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
   QSignalSpy drawn(inside, &InsideView::ViewDrawn);
-  QSlider* slider = window->Parameters()->Slider("/parameters/a");
-  QVERIFY(slider);
   // A slider let go at a new value: the first picture is a coarse lattice
   // (llvmpipe cannot trace the whole view in the 0.1 s a piece may take).
-  slider->setValue(slider->value() + 40);
-  QTRY_VERIFY(drawn.count() >= 1);
+  QVERIFY(MoveSliderFromAFinishedPicture(*window, drawn));
   QVERIFY2(drawn.first().at(0).toDouble() >= 2.0,
     qPrintable(QString("first picture at %1").arg(drawn.first().at(0).toDouble())));
   QVERIFY2(window->FrameTimeText().startsWith("refining: 1 ray per"),
@@ -1039,12 +1055,8 @@ void TestStudio::WindowScreenshotWaitsForTheFinishedPicture()
   auto window = OpenWindow();
   QVERIFY(window);
   InsideView* inside = window->Inside();
-  QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 60000);
   QSignalSpy drawn(inside, &InsideView::ViewDrawn);
-  QSlider* slider = window->Parameters()->Slider("/parameters/a");
-  QVERIFY(slider);
-  slider->setValue(slider->value() + 40);
-  QTRY_VERIFY(drawn.count() >= 1);
+  QVERIFY(MoveSliderFromAFinishedPicture(*window, drawn));
   QVERIFY(!inside->Pass()->GetRefinementComplete());
   QTemporaryDir folder;
   const QString path = folder.filePath("window.png");
