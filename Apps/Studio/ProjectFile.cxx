@@ -1,7 +1,9 @@
 #include "ProjectFile.h"
 
 #include "IntegrationValues.h"
+#include "PictureValues.h"
 
+#include "PictureSchema.h"
 #include "RungeKutta.h"
 
 #include "PipelineItems.h"
@@ -72,31 +74,51 @@ void Vector3(const Json& value, double out[3], const std::string& where)
   }
 }
 
+/// A project's camera object: the picture schema's project keys
+/// (PictureSchema.h), the values vtkCamera's.
+const char* CameraKey(riemann::PictureSettingId id)
+{
+  return riemann::PictureSettingOf(id).ProjectKey;
+}
+
 Json CameraToJson(const CameraState& camera)
 {
-  return { { "position", camera.Position }, { "focal-point", camera.FocalPoint },
-    { "view-up", camera.ViewUp }, { "view-angle", camera.ViewAngle } };
+  using Id = riemann::PictureSettingId;
+  return { { CameraKey(Id::Position), camera.Position },
+    { CameraKey(Id::LookAt), camera.FocalPoint }, { CameraKey(Id::ViewUp), camera.ViewUp },
+    { CameraKey(Id::ViewAngle), camera.ViewAngle } };
+}
+
+/// A point or direction of a camera object, valid for its setting.
+void CameraVector(const Json& object, riemann::PictureSettingId id, double out[3], const std::string& where)
+{
+  const std::string path = where + "." + CameraKey(id);
+  Vector3(Member(object, CameraKey(id), where), out, path);
+  const riemann::PictureSetting& setting = riemann::PictureSettingOf(id);
+  if (!riemann::CheckPictureVector(setting, out, path).empty())
+  {
+    Fail(path, "expected " + riemann::DescribePictureValues(setting));
+  }
 }
 
 CameraState ParseCamera(const Json& value, const std::string& where)
 {
+  using Id = riemann::PictureSettingId;
   CameraState camera;
-  Vector3(Member(value, "position", where), camera.Position, where + ".position");
-  Vector3(Member(value, "focal-point", where), camera.FocalPoint, where + ".focal-point");
-  Vector3(Member(value, "view-up", where), camera.ViewUp, where + ".view-up");
-  camera.ViewAngle = Number(Member(value, "view-angle", where), where + ".view-angle");
-  double d2 = 0.0;
-  for (int i = 0; i < 3; ++i)
+  CameraVector(value, Id::Position, camera.Position, where);
+  CameraVector(value, Id::LookAt, camera.FocalPoint, where);
+  CameraVector(value, Id::ViewUp, camera.ViewUp, where);
+  const riemann::PictureSetting& angle = riemann::PictureSettingOf(Id::ViewAngle);
+  const std::string anglePath = where + "." + angle.ProjectKey;
+  camera.ViewAngle = Number(Member(value, angle.ProjectKey, where), anglePath);
+  if (!riemann::CheckPictureValue(angle, camera.ViewAngle, anglePath).empty())
   {
-    d2 += std::pow(camera.FocalPoint[i] - camera.Position[i], 2);
+    Fail(anglePath, "expected " + riemann::DescribePictureValues(angle));
   }
-  if (!(d2 > 0.0))
+  const std::string why = CheckCameraView(camera.Position, camera.FocalPoint, camera.ViewUp);
+  if (!why.empty())
   {
-    Fail(where, "the camera is at the point it looks at");
-  }
-  if (!(camera.ViewAngle > 0.0 && camera.ViewAngle < 180.0))
-  {
-    Fail(where + ".view-angle", "must be in (0, 180) degrees");
+    Fail(where, why);
   }
   return camera;
 }
@@ -186,17 +208,28 @@ void ParseScene(const Json& scene, const std::string& folder, ProjectData& proje
 
 void ParseInside(const Json& inside, ProjectData& project)
 {
-  project.Backend = inside.contains("backend") ? String(inside.at("backend"), "inside.backend") : "gpu";
-  if (project.Backend != "gpu" && project.Backend != "cpu")
+  // The renderer and its samples: the picture schema's keys, defaults and values.
+  const riemann::PictureSetting& backend =
+    riemann::PictureSettingOf(riemann::PictureSettingId::Backend);
+  const std::string backendPath = std::string("inside.") + backend.ProjectKey;
+  project.Backend = inside.contains(backend.ProjectKey)
+    ? String(inside.at(backend.ProjectKey), backendPath)
+    : riemann::PictureDefaultChoice(backend);
+  if (riemann::PictureChoiceIndex(backend, project.Backend) < 0)
   {
-    Fail("inside.backend", "expected \"gpu\" or \"cpu\"");
+    Fail(backendPath, "expected " + riemann::DescribePictureValues(backend));
   }
-  const double samples = inside.contains("samples") ? Number(inside.at("samples"), "inside.samples") : 1;
-  if (samples < 1 || samples > 4096 || samples != std::floor(samples))
+  const riemann::PictureSetting& samples =
+    riemann::PictureSettingOf(riemann::PictureSettingId::Samples);
+  const std::string samplesPath = std::string("inside.") + samples.ProjectKey;
+  const double count = inside.contains(samples.ProjectKey)
+    ? Number(inside.at(samples.ProjectKey), samplesPath)
+    : samples.Default[0];
+  if (!riemann::CheckPictureValue(samples, count, samplesPath).empty())
   {
-    Fail("inside.samples", "expected a whole number in [1, 4096]");
+    Fail(samplesPath, "expected " + riemann::DescribePictureValues(samples));
   }
-  project.Samples = static_cast<int>(samples);
+  project.Samples = static_cast<int>(count);
   if (inside.contains("use-scene-settings"))
   {
     if (!inside.at("use-scene-settings").is_boolean())
@@ -263,6 +296,18 @@ void ParseItems(const Json& items, ProjectData& project)
 }
 }
 
+CameraState::CameraState()
+{
+  using Id = riemann::PictureSettingId;
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Position[i] = riemann::PictureSettingOf(Id::Position).Default[i];
+    this->FocalPoint[i] = riemann::PictureSettingOf(Id::LookAt).Default[i];
+    this->ViewUp[i] = riemann::PictureSettingOf(Id::ViewUp).Default[i];
+  }
+  this->ViewAngle = riemann::PictureSettingOf(Id::ViewAngle).Default[0];
+}
+
 void CameraState::From(vtkCamera* camera)
 {
   camera->GetPosition(this->Position);
@@ -322,7 +367,10 @@ nlohmann::json ProjectToJson(const ProjectData& project)
   return { { "riemann-studio", 1 }, { "metric", metric },
     { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
     { "observer", CameraToJson(project.Observer) },
-    { "inside", { { "backend", project.Backend }, { "samples", project.Samples },
+    { "inside", { { riemann::PictureSettingOf(riemann::PictureSettingId::Backend).ProjectKey,
+                    project.Backend },
+                  { riemann::PictureSettingOf(riemann::PictureSettingId::Samples).ProjectKey,
+                    project.Samples },
                   { "use-scene-settings", project.UseSceneSettings },
                   { "integration", project.Integration } } },
     { "items", items }, { "layout", layout } };

@@ -44,10 +44,12 @@ class StudioDocument;
 
 struct CameraState
 {
-  double Position[3] = { 0, 0, 1 };
-  double FocalPoint[3] = { 0, 0, 0 };
-  double ViewUp[3] = { 0, 1, 0 };
-  double ViewAngle = 30.0;
+  /// The picture schema's defaults (PictureSchema.h), as a scene's camera.
+  CameraState();
+  double Position[3];
+  double FocalPoint[3];
+  double ViewUp[3];
+  double ViewAngle;
   void From(vtkCamera* camera);
   void To(vtkCamera* camera) const;
 };

@@ -224,11 +224,11 @@ void StudioDocument::ResetScene()
 
 void StudioDocument::ResetObserver()
 {
-  // Without a camera of its own, the scene answers with the default scene's.
-  vtkNew<vtkRiemannScene> fallback;
+  // Without a camera of its own, the observer's defaults (the picture
+  // schema's, as `riemann render` and a scene's camera block take them).
   if (!this->CurrentScene->ApplyCamera(this->ObserverCamera))
   {
-    fallback->ApplyCamera(this->ObserverCamera);
+    vtkRiemannScene::ApplyDefaultCamera(this->ObserverCamera);
   }
   this->ObserverChanged();
 }

@@ -1,8 +1,10 @@
 #include "StudioMainWindow.h"
 
 #include "IntegrationValues.h"
+#include "PictureValues.h"
 
 #include "GeodesicTrace.h"
+#include "PictureSchema.h"
 #include "RungeKutta.h"
 
 #include "InsideView.h"
@@ -442,64 +444,75 @@ void StudioMainWindow::ShowSelection()
 
 void StudioMainWindow::ShowInsideViewSettings()
 {
-  PropertySpec backend;
-  backend.Key = "Backend";
-  backend.Label = "Renderer";
-  backend.Type = PropertySpec::Choice;
-  backend.Choices = QStringList{ "gpu", "cpu" };
-  backend.Help = "gpu: vtkRiemannRayTracePass (GLSL); cpu: vtkRiemannCPURayTracer (Embree, samples)";
-  PropertySpec samples;
-  samples.Key = "SamplesPerPixel";
-  samples.Label = "Samples (CPU)";
-  samples.Type = PropertySpec::Integer;
-  samples.Minimum = 1;
-  samples.Maximum = 4096;
+  // The observer's camera, the samples and the renderer (the picture
+  // schema's fields: PictureValues.h), the choice of the scene's integrator,
+  // then the integration settings of the rays (the integration schema's).
+  std::vector<PropertySpec> specs = PicturePropertySpecs();
   PropertySpec sceneSettings;
   sceneSettings.Key = "UseSceneSettings";
   sceneSettings.Label = "Scene's integrator";
   sceneSettings.Type = PropertySpec::Boolean;
   sceneSettings.Help = "Use the scene's \"integrator\" block (else the settings below)";
-  // The integration settings of the rays, with the items' checks.
-  std::vector<PropertySpec> specs{ backend, samples, sceneSettings };
+  specs.push_back(sceneSettings);
   for (const PropertySpec& spec : IntegrationPropertySpecs())
   {
     specs.push_back(spec);
   }
-  vtkRiemannIntegrationSettings* rays = this->Doc->RaySettings();
-  const nlohmann::json values = { { "Backend", this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu" },
-    { "SamplesPerPixel", this->InsideWidget->GetSamplesPerPixel() },
-    { "UseSceneSettings", this->Doc->UseSceneSettings() },
-    { "IntegratorType",
-      riemann::IntegratorName(static_cast<riemann::IntegratorType>(rays->GetIntegratorType())) },
-    { "InitialIntegrationStep", rays->GetInitialIntegrationStep() },
-    { "MaximumError", rays->GetMaximumError() },
-    { "MaximumPropagation", rays->GetMaximumPropagation() },
-    { "MaximumNumberOfSteps", rays->GetMaximumNumberOfSteps() } };
-  this->PropertiesWidget->Show("<b>Inside view</b> (the scene's rays)", specs, values,
-    [this](const nlohmann::json& changes) {
-      vtkRiemannIntegrationSettings* settings = this->Doc->RaySettings();
+  const char* samplesKey = riemann::PictureSettingOf(riemann::PictureSettingId::Samples).Property;
+  const char* backendKey = riemann::PictureSettingOf(riemann::PictureSettingId::Backend).Property;
+  nlohmann::json values = CameraValues(this->Doc->Observer());
+  values[backendKey] = this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu";
+  values[samplesKey] = this->InsideWidget->GetSamplesPerPixel();
+  values["UseSceneSettings"] = this->Doc->UseSceneSettings();
+  values.update(IntegrationValues(this->Doc->RaySettings()));
+  this->PropertiesWidget->Show("<b>Inside view</b> (the observer and the scene's rays)", specs,
+    values,
+    [this, samplesKey, backendKey](const nlohmann::json& changes)
+    {
+      // The camera first: a camera that defines no view refuses the whole
+      // edit, before anything else is applied.
+      nlohmann::json camera = nlohmann::json::object();
       for (const auto& entry : changes.items())
       {
-        const std::string& key = entry.key();
-        const nlohmann::json& value = entry.value();
-        if (key == "Backend")
+        if (IsCameraValue(entry.key()))
         {
-          this->InsideWidget->SetBackend(value == "cpu" ? InsideView::CPU : InsideView::GPU);
+          camera[entry.key()] = entry.value();
         }
-        else if (key == "SamplesPerPixel")
+      }
+      if (!camera.empty())
+      {
+        const std::string refused = ApplyCameraValues(camera, this->Doc->Observer());
+        if (!refused.empty())
         {
-          this->InsideWidget->SetSamplesPerPixel(value.get<int>());
+          return QString::fromStdString(refused);
         }
-        else if (key == "UseSceneSettings")
+      }
+      nlohmann::json integration = nlohmann::json::object();
+      for (const auto& entry : changes.items())
+      {
+        if (IsCameraValue(entry.key()))
         {
-          this->Doc->SetUseSceneSettings(value.get<bool>());
+          continue;
+        }
+        if (entry.key() == backendKey)
+        {
+          this->InsideWidget->SetBackend(entry.value() == "cpu" ? InsideView::CPU : InsideView::GPU);
+        }
+        else if (entry.key() == samplesKey)
+        {
+          this->InsideWidget->SetSamplesPerPixel(entry.value().get<int>());
+        }
+        else if (entry.key() == "UseSceneSettings")
+        {
+          this->Doc->SetUseSceneSettings(entry.value().get<bool>());
         }
         else
         {
-          // One of the integration settings (IntegrationValues.h).
-          ApplyIntegrationValues(nlohmann::json{ { key, value } }, settings);
+          integration[entry.key()] = entry.value();
         }
       }
+      // The integration settings (IntegrationValues.h).
+      ApplyIntegrationValues(integration, this->Doc->RaySettings());
       this->InsideWidget->RenderNow();
       this->Doc->ObserverChanged(); // ray bundles follow the new settings
       return QString();

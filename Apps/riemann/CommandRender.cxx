@@ -9,6 +9,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "Distributed.h"
+#include "PictureOptions.h"
 #include "ProgressBar.h"
 
 #include "RiemannCPUImage.h"
@@ -61,19 +62,30 @@ namespace
 constexpr const char* DefaultMetric =
   R"({"type": "graph", "gaussians": [{"amplitude": 1.0, "center": [0, 0, 0], "sigma": [0.5, 0.5, 0.5]}]})";
 
+int PictureDefaultCount(riemann::PictureSettingId id)
+{
+  return static_cast<int>(riemann::PictureSettingOf(id).Default[0]);
+}
+
 struct RenderArguments
 {
   std::string Metric;
   std::string Scene;
-  int Width = 640;
-  int Height = 480;
-  std::string Backend = "gpu";
+  // The picture's settings start at the picture schema's defaults; the
+  // camera's are empty (not given: the scene's camera, else the schema's).
+  int Width = PictureDefaultCount(riemann::PictureSettingId::Width);
+  int Height = PictureDefaultCount(riemann::PictureSettingId::Height);
+  std::string Backend =
+    riemann::PictureDefaultChoice(riemann::PictureSettingOf(riemann::PictureSettingId::Backend));
   /// vtkRiemannRayTracePass::GPUPath by name: auto, fragment or compute.
-  std::string GpuPath = "auto";
+  std::string GpuPath =
+    riemann::PictureDefaultChoice(riemann::PictureSettingOf(riemann::PictureSettingId::GPUPath));
   std::string CameraPosition;
   std::string LookAt;
   std::string ViewUp;
   double Fov = 0.0;
+  /// perspective or equirectangular; "" for the scene's.
+  std::string Projection;
   bool Equirectangular = false;
   std::string Integrator;
   double Step = 0.0;
@@ -81,7 +93,7 @@ struct RenderArguments
   double MaximumLength = 0.0;
   double Tolerance = 0.0;
   int Frames = 1;
-  int Samples = 1;
+  int Samples = PictureDefaultCount(riemann::PictureSettingId::Samples);
   bool HitError = false;
   std::string HitErrorImage;
   bool Progress = false;
@@ -436,6 +448,10 @@ void CheckRenderOptions(const RenderArguments& args)
                   "picture on the CPU (the GPU pass draws a whole picture in one process)",
       2);
   }
+  if (args.Equirectangular && args.Projection == "perspective")
+  {
+    throw Failure("--equirectangular and --projection perspective ask for two projections", 2);
+  }
   if (!args.Reference.empty() && args.Frames > 1)
   {
     throw Failure("--reference compares one picture: it cannot be used with --frames", 2);
@@ -478,6 +494,23 @@ vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
   return metric;
 }
 
+/// The projection: --projection (or --equirectangular), else the scene's
+/// camera's, else the picture schema's.
+riemann::Projection ChosenProjection(const RenderArguments& args, const riemann::Scene& scene)
+{
+  using riemann::PictureSettingId;
+  const riemann::PictureSetting& setting = riemann::PictureSettingOf(PictureSettingId::Projection);
+  if (args.Equirectangular)
+  {
+    return riemann::Projection::Equirectangular;
+  }
+  if (!args.Projection.empty())
+  {
+    return static_cast<riemann::Projection>(riemann::PictureChoiceIndex(setting, args.Projection));
+  }
+  return scene.HasCamera ? scene.Camera.Mode : riemann::CameraSettings().Mode;
+}
+
 /// The scene's integration, with what the options give in its place.
 void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetup& rays)
 {
@@ -492,9 +525,9 @@ void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetu
   settings->SetMaximumPropagation(
     args.MaximumLength > 0 ? args.MaximumLength : scene.Rays.MaximumLength);
   settings->SetMaximumError(args.Tolerance > 0 ? args.Tolerance : scene.Rays.Tolerance);
-  rays.UseSceneSettings = !overrides && !args.Equirectangular;
-  rays.Projection = args.Equirectangular ||
-      (scene.HasCamera && scene.Camera.Mode == riemann::Projection::Equirectangular)
+  const bool projectionGiven = !args.Projection.empty() || args.Equirectangular;
+  rays.UseSceneSettings = !overrides && !projectionGiven;
+  rays.Projection = ChosenProjection(args, scene) == riemann::Projection::Equirectangular
     ? vtkRiemannRayTracePass::EQUIRECTANGULAR
     : vtkRiemannRayTracePass::PERSPECTIVE;
 }
@@ -749,8 +782,13 @@ void RunRender(const RenderArguments& args)
   const vtkSmartPointer<vtkRiemannMetric> metric = LoadSceneAndMetric(args, scene);
   RaySetup rays;
   SetUpRays(args, scene->GetScene(), rays);
+  // The scene's camera, else the picture schema's (not vtkCamera's own
+  // defaults), then what the options change.
   vtkNew<vtkCamera> camera;
-  scene->ApplyCamera(camera);
+  if (!scene->ApplyCamera(camera))
+  {
+    vtkRiemannScene::ApplyDefaultCamera(camera);
+  }
   ApplyCameraOptions(camera, args);
   CheckCamera(camera, args);
 
@@ -807,24 +845,21 @@ void RegisterRenderCommand(CLI::App& app)
     ->add_option(
       "--scene,-s", args->Scene, "Scene (JSON file, see Data/scenes); default: the paper's grid")
     ->check(CLI::ExistingFile);
-  command->add_option("--width", args->Width, "Image width in pixels (default 640)")
-    ->check(WholeNumber(1, 16384));
-  command->add_option("--height", args->Height, "Image height in pixels (default 480)")
-    ->check(WholeNumber(1, 16384));
-  command
-    ->add_option("--backend", args->Backend,
-      "gpu (default: GLSL; every scene object, meshes included) or cpu (Embree, double precision; "
-      "anti-aliasing, EXR with AOVs)")
-    ->check(CLI::IsMember({ "gpu", "cpu" }));
-  command
-    ->add_option("--gpu-path", args->GpuPath,
-      "The GPU pass's shader path: auto (default: compute where the OpenGL context has 4.3 "
-      "compute shaders, else fragment), fragment or compute; the same picture either way")
-    ->check(CLI::IsMember({ "auto", "fragment", "compute" }));
-  command
-    ->add_option("--samples", args->Samples,
-      "Rays per pixel, stratified (anti-aliasing; --backend cpu; default 1)")
-    ->check(WholeNumber(1, 4096));
+  // The picture's and the camera's options are the picture schema's
+  // (PictureSchema.h), the integration's the integration schema's.
+  PictureOptions picture;
+  picture.Position = &args->CameraPosition;
+  picture.LookAt = &args->LookAt;
+  picture.ViewUp = &args->ViewUp;
+  picture.ViewAngle = &args->Fov;
+  picture.Projection = &args->Projection;
+  picture.Equirectangular = &args->Equirectangular;
+  picture.Width = &args->Width;
+  picture.Height = &args->Height;
+  picture.Samples = &args->Samples;
+  picture.Backend = &args->Backend;
+  picture.GPUPath = &args->GpuPath;
+  AddPictureOutputOptions(command, picture);
   command->add_flag("--hit-error", args->HitError,
     "Diffeomorphism metrics, --backend cpu: compare each pixel's hit with the exact geodesic "
     "(a HitError EXR channel, max and median on stderr)");
@@ -832,20 +867,7 @@ void RegisterRenderCommand(CLI::App& app)
     "Also write a picture of the hit error (log scale; red: only one of the rays hits)");
   command->add_flag("--progress", args->Progress, "Show a progress bar on stderr (--backend cpu)");
   command->add_flag("--quiet", args->Quiet, "Never show a progress bar");
-  command
-    ->add_option(
-      "--camera-position", args->CameraPosition, "Observer X,Y,Z (default: the scene's camera)")
-    ->check(Point3());
-  command->add_option("--look-at", args->LookAt, "Focal point X,Y,Z")->check(Point3());
-  command->add_option("--view-up", args->ViewUp, "View up X,Y,Z (not along the view)")
-    ->check(Direction3());
-  // VTK's camera clamps its view angle to 179 degrees: refuse more, not clamp.
-  command
-    ->add_option("--fov", args->Fov,
-      "Vertical field of view in degrees, above 0 and at most 179 (perspective; default: the "
-      "scene's)")
-    ->check(PositiveNumber(179.0));
-  command->add_flag("--equirectangular", args->Equirectangular, "360-degree equirectangular view");
+  AddCameraOptions(command, picture);
   IntegrationOptions integration{ &args->Integrator, &args->Step, &args->MaximumLength,
     &args->Tolerance, &args->MaximumSteps };
   integration.Curve = "ray";

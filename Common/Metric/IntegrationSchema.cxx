@@ -1,17 +1,15 @@
 #include "IntegrationSchema.h"
 
-#include <cmath>
-#include <sstream>
+#include "SettingRange.h"
 
 namespace riemann
 {
 namespace
 {
-std::string Number(double value)
+SettingRange RangeOf(const IntegrationSetting& setting)
 {
-  std::ostringstream s;
-  s << value;
-  return s.str();
+  return { setting.Minimum, setting.MinimumExclusive, setting.Maximum,
+    setting.Type == IntegrationSetting::Count, setting.Unit };
 }
 } // namespace
 
@@ -21,13 +19,7 @@ std::string DescribeIntegrationRange(const IntegrationSetting& setting)
   {
     return "euler, rk4 or dp45";
   }
-  const std::string kind = setting.Type == IntegrationSetting::Count ? "a whole number" : "a number";
-  const std::string lower = setting.MinimumExclusive ? "above " + Number(setting.Minimum)
-                                                     : "from " + Number(setting.Minimum);
-  const std::string upper =
-    (setting.MinimumExclusive ? " and at most " : " to ") + Number(setting.Maximum);
-  const std::string unit = *setting.Unit ? std::string(" (") + setting.Unit + ")" : std::string();
-  return kind + " " + lower + upper + unit;
+  return DescribeSettingRange(RangeOf(setting));
 }
 
 std::string IntegrationInterval(const IntegrationSetting& setting)
@@ -36,21 +28,21 @@ std::string IntegrationInterval(const IntegrationSetting& setting)
   {
     return "euler|rk4|dp45";
   }
-  return (setting.MinimumExclusive ? "(" : "[") + Number(setting.Minimum) + ", " +
-    Number(setting.Maximum) + "]";
+  return SettingInterval(RangeOf(setting));
 }
 
 std::string CheckIntegrationValue(
   const IntegrationSetting& setting, double value, const std::string& name)
 {
-  const bool inRange = std::isfinite(value) &&
-    (setting.MinimumExclusive ? value > setting.Minimum : value >= setting.Minimum) &&
-    value <= setting.Maximum;
-  const bool whole = setting.Type == IntegrationSetting::Number || value == std::floor(value);
-  if (inRange && whole)
+  // A choice is checked as the index of an integrator (0, 1 or 2).
+  SettingRange range = RangeOf(setting);
+  range.Whole = range.Whole || setting.Type == IntegrationSetting::Choice;
+  const std::string why = CheckSettingValue(range, value, name);
+  if (why.empty() || setting.Type != IntegrationSetting::Choice)
   {
-    return std::string();
+    return why;
   }
-  return name + " is " + Number(value) + ": expected " + DescribeIntegrationRange(setting);
+  // Its words name the integrators, not the indices.
+  return why.substr(0, why.find(": expected ")) + ": expected " + DescribeIntegrationRange(setting);
 }
 } // namespace riemann

@@ -15,6 +15,7 @@
 #define RiemannObserverCamera_h
 
 #include "Metric.h"
+#include "PictureSchema.h"
 #include "RiemannCommonMetricExport.h"
 
 namespace riemann
@@ -26,14 +27,23 @@ enum class Projection : int
   Equirectangular = 1
 };
 
+/// The default of a Point or Direction setting of the picture schema.
+inline Vec3 PictureDefaultVector(PictureSettingId id)
+{
+  const std::array<double, 3>& v = PictureSettingOf(id).Default;
+  return Vec3(v[0], v[1], v[2]);
+}
+
+/// The observer's camera; the defaults and valid values are PictureSchema.h's.
 struct CameraSettings
 {
-  Vec3 Position = Vec3(0, 0, 5);
-  Vec3 LookAt = Vec3(0, 0, 0);
-  Vec3 ViewUp = Vec3(0, 1, 0);
+  Vec3 Position = PictureDefaultVector(PictureSettingId::Position);
+  Vec3 LookAt = PictureDefaultVector(PictureSettingId::LookAt);
+  Vec3 ViewUp = PictureDefaultVector(PictureSettingId::ViewUp);
   /// Vertical field of view in degrees (perspective only).
-  double ViewAngle = 60.0;
-  Projection Mode = Projection::Perspective;
+  double ViewAngle = PictureSettingOf(PictureSettingId::ViewAngle).Default[0];
+  Projection Mode =
+    static_cast<Projection>(static_cast<int>(PictureSettingOf(PictureSettingId::Projection).Default[0]));
 };
 
 class RIEMANNCOMMONMETRIC_EXPORT ObserverCamera

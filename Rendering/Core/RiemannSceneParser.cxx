@@ -3,6 +3,7 @@
 #include "JsonValidation.h"
 #include "InputFiles.h"
 #include "MetricDefinition.h"
+#include "PictureSchema.h"
 
 #include <Eigen/Geometry> // cross
 
@@ -197,56 +198,75 @@ std::string MetricText(const Json& value, const std::string& path, const std::st
   return text;
 }
 
+/// A point or direction of the camera block, valid for its setting of the
+/// picture schema (PictureSchema.h).
+Vec3 CameraVector(const Json& object, PictureSettingId id, const std::string& path)
+{
+  const PictureSetting& setting = PictureSettingOf(id);
+  const std::string where = path + "." + setting.SceneKey;
+  const Vec3 v = Vector(object.at(setting.SceneKey), where);
+  const double xyz[3] = { v[0], v[1], v[2] };
+  if (!CheckPictureVector(setting, xyz, where).empty())
+  {
+    Fail(where, "expected " + DescribePictureValues(setting));
+  }
+  return v;
+}
+
 CameraSettings Camera(const Json& object, const std::string& path)
 {
-  CheckKeys(object, path, { "position", "look_at", "view_up", "fov", "projection" });
+  // The block's keys are the picture schema's scene keys, in its order.
+  std::vector<const char*> keys;
+  for (const PictureSetting& setting : PictureSchema)
+  {
+    if (*setting.SceneKey)
+    {
+      keys.push_back(setting.SceneKey);
+    }
+  }
+  json::CheckKeys<SceneDefinitionError>(object, path, keys);
+  const auto key = [](PictureSettingId id) { return PictureSettingOf(id).SceneKey; };
   CameraSettings camera;
-  if (object.contains("position"))
+  if (object.contains(key(PictureSettingId::Position)))
   {
-    camera.Position = Vector(object.at("position"), path + ".position");
+    camera.Position = CameraVector(object, PictureSettingId::Position, path);
   }
-  if (object.contains("look_at"))
+  if (object.contains(key(PictureSettingId::LookAt)))
   {
-    camera.LookAt = Vector(object.at("look_at"), path + ".look_at");
+    camera.LookAt = CameraVector(object, PictureSettingId::LookAt, path);
   }
-  if (object.contains("view_up"))
+  if (object.contains(key(PictureSettingId::ViewUp)))
   {
-    camera.ViewUp = Vector(object.at("view_up"), path + ".view_up");
+    camera.ViewUp = CameraVector(object, PictureSettingId::ViewUp, path);
   }
-  if (object.contains("fov"))
+  const PictureSetting& angle = PictureSettingOf(PictureSettingId::ViewAngle);
+  if (object.contains(angle.SceneKey))
   {
-    camera.ViewAngle = Number(object.at("fov"), path + ".fov");
-    if (!(camera.ViewAngle > 0 && camera.ViewAngle < 180))
+    const std::string where = path + "." + angle.SceneKey;
+    const Json& value = object.at(angle.SceneKey);
+    if (!value.is_number() || !CheckPictureValue(angle, value.get<double>(), where).empty())
     {
-      Fail(
-        path + ".fov", "expected a view angle in (0, 180) degrees, got " + object.at("fov").dump());
+      Fail(where, "expected " + DescribePictureValues(angle) + ", got " + Describe(value));
     }
+    camera.ViewAngle = value.get<double>();
   }
-  if (object.contains("projection"))
+  const PictureSetting& projection = PictureSettingOf(PictureSettingId::Projection);
+  if (object.contains(projection.SceneKey))
   {
-    const std::string mode = String(object.at("projection"), path + ".projection");
-    if (mode == "perspective")
+    const std::string where = path + "." + projection.SceneKey;
+    const std::string mode = String(object.at(projection.SceneKey), where);
+    const int index = PictureChoiceIndex(projection, mode);
+    if (index < 0)
     {
-      camera.Mode = Projection::Perspective;
+      Fail(where,
+        "unknown projection \"" + mode + "\"; expected " + DescribePictureValues(projection));
     }
-    else if (mode == "equirectangular")
-    {
-      camera.Mode = Projection::Equirectangular;
-    }
-    else
-    {
-      Fail(path + ".projection",
-        "unknown projection \"" + mode + "\"; expected \"perspective\" or \"equirectangular\"");
-    }
+    camera.Mode = static_cast<Projection>(index);
   }
   const Vec3 forward = camera.LookAt - camera.Position;
   if (forward.squaredNorm() == 0)
   {
     Fail(path, "position and look_at are the same point; the view direction is undefined");
-  }
-  if (camera.ViewUp.squaredNorm() == 0)
-  {
-    Fail(path + ".view_up", "expected a non-zero vector");
   }
   // Gram-Schmidt (in any g) fails exactly when up is parallel to forward.
   if (forward.cross(camera.ViewUp).norm() <= 1e-9 * forward.norm() * camera.ViewUp.norm())

@@ -138,6 +138,18 @@ bool vtkRiemannScene::HasCamera() const
   return this->GetScene().HasCamera;
 }
 
+namespace
+{
+void CopyCamera(const riemann::CameraSettings& c, vtkCamera* camera)
+{
+  camera->SetPosition(c.Position.x(), c.Position.y(), c.Position.z());
+  camera->SetFocalPoint(c.LookAt.x(), c.LookAt.y(), c.LookAt.z());
+  camera->SetViewUp(c.ViewUp.x(), c.ViewUp.y(), c.ViewUp.z());
+  camera->SetUseHorizontalViewAngle(false);
+  camera->SetViewAngle(c.ViewAngle);
+}
+} // namespace
+
 bool vtkRiemannScene::ApplyCamera(vtkCamera* camera) const
 {
   const riemann::Scene& scene = this->GetScene();
@@ -145,13 +157,16 @@ bool vtkRiemannScene::ApplyCamera(vtkCamera* camera) const
   {
     return false;
   }
-  const riemann::CameraSettings& c = scene.Camera;
-  camera->SetPosition(c.Position.x(), c.Position.y(), c.Position.z());
-  camera->SetFocalPoint(c.LookAt.x(), c.LookAt.y(), c.LookAt.z());
-  camera->SetViewUp(c.ViewUp.x(), c.ViewUp.y(), c.ViewUp.z());
-  camera->SetUseHorizontalViewAngle(false);
-  camera->SetViewAngle(c.ViewAngle);
+  CopyCamera(scene.Camera, camera);
   return true;
+}
+
+void vtkRiemannScene::ApplyDefaultCamera(vtkCamera* camera)
+{
+  if (camera)
+  {
+    CopyCamera(riemann::CameraSettings(), camera);
+  }
 }
 
 void vtkRiemannScene::PrintSelf(ostream& os, vtkIndent indent)

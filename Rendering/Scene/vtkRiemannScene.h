@@ -109,6 +109,13 @@ public:
   bool ApplyCamera(vtkCamera* camera) const;
 
   /**
+   * Give `camera` the observer's defaults (those of a scene camera block
+   * that sets nothing: the picture schema's, Common/Metric/PictureSchema.h),
+   * in place of vtkCamera's own (which look from (0, 0, 1) with 30 degrees).
+   */
+  static void ApplyDefaultCamera(vtkCamera* camera);
+
+  /**
    * The current scene, immutable; riemann::DefaultScene() when no
    * definition is set. The reference stays valid until the next successful
    * SetDefinition/SetDefinitionFile; hold GetSceneSnapshot() to keep a scene

@@ -608,6 +608,110 @@ class IntegrationOptionTests(unittest.TestCase):
         self.assertTrue(os.path.exists(out))
 
 
+class PictureOptionTests(unittest.TestCase):
+    """The camera and picture options of render are the picture schema's
+    (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words
+    as a scene's "camera" block."""
+
+    OPTIONS = {
+        "--width": "INT:in [1, 16384]",
+        "--height": "INT:in [1, 16384]",
+        "--samples": "INT:in [1, 4096]",
+        "--backend": "TEXT:gpu|cpu",
+        "--gpu-path": "TEXT:auto|fragment|compute",
+        "--camera-position": "TEXT:X,Y,Z",
+        "--look-at": "TEXT:X,Y,Z",
+        "--view-up": "TEXT:X,Y,Z",
+        "--fov": "FLOAT:in (0, 179]",
+        "--projection": "TEXT:perspective|equirectangular",
+    }
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def scene(self, camera):
+        import json
+        path = os.path.join(self.dir, "scene-%d.json" % len(os.listdir(self.dir)))
+        scene = {"objects": [{"type": "grid", "extent": [-3, 3, -3, 3, -3, 3], "spacing": 1,
+                              "thickness": 0.05, "material": {"type": "position"}}]}
+        if camera is not None:
+            scene["camera"] = camera
+        with open(path, "w") as f:
+            json.dump(scene, f)
+        return path
+
+    def test_help_lists_them_with_the_schemas_values(self):
+        import re
+        status, out, err = run("render", "--help")
+        self.assertEqual(status, 0, err)
+        for option, kind in self.OPTIONS.items():
+            line = re.search(r"^\s+%s (.*)$" % re.escape(option), out, re.MULTILINE)
+            self.assertIsNotNone(line, "render --help lacks %s:\n%s" % (option, out))
+            self.assertTrue(line.group(1).startswith(kind), (option, line.group(0)))
+
+    def test_the_option_and_the_scene_refuse_alike(self):
+        # One range, one sentence: 179.5 degrees is refused by --fov (exit 2,
+        # before any work) and by a scene's camera.fov (exit 1, bad scene).
+        words = "expected a number above 0 and at most 179 (degrees)"
+        out = os.path.join(self.dir, "o.png")
+        status, _, err = run("render", "--fov", "179.5", "-o", out)
+        self.assertEqual(status, 2, err)
+        self.assertIn(words, err)
+        status, _, err = run("render", "-s", self.scene({"fov": 179.5}), "-o", out)
+        self.assertEqual(status, 1, err)
+        self.assertIn("scene.camera.fov: " + words, err)
+        status, _, err = run("render", "--projection", "fisheye", "-o", out)
+        self.assertEqual(status, 2, err)
+        self.assertIn("expected perspective or equirectangular", err)
+        status, _, err = run("render", "-s", self.scene({"projection": "fisheye"}), "-o", out)
+        self.assertEqual(status, 1, err)
+        self.assertIn("expected perspective or equirectangular", err)
+        status, _, err = run("render", "--projection", "perspective", "--equirectangular", "-o", out)
+        self.assertEqual(status, 2, err)
+        self.assertIn("two projections", err)
+        self.assertFalse(os.path.exists(out))
+
+    def test_a_scene_without_camera_takes_the_schemas(self):
+        # Not vtkCamera's own defaults (from 0,0,1 with 30 degrees): the
+        # picture of the schema's camera given as options, pixel for pixel.
+        bare = self.scene(None)
+        common = ["--backend", "cpu", "--width", "48", "--height", "36", "-s", bare]
+        implicit = os.path.join(self.dir, "implicit.png")
+        explicit = os.path.join(self.dir, "explicit.png")
+        vtk_default = os.path.join(self.dir, "vtk.png")
+        self.assertEqual(run("render", *common, "-o", implicit)[0], 0)
+        self.assertEqual(run("render", *common, "--camera-position", "0,0,5", "--look-at", "0,0,0",
+                             "--view-up", "0,1,0", "--fov", "60", "-o", explicit)[0], 0)
+        self.assertEqual(run("render", *common, "--camera-position", "0,0,1", "--fov", "30",
+                             "-o", vtk_default)[0], 0)
+        a, b, c = (png_size_and_pixels(p)[2] for p in (implicit, explicit, vtk_default))
+        self.assertEqual(abs(a.astype(int) - b.astype(int)).max(), 0)
+        self.assertGreater(abs(a.astype(float) - c.astype(float)).mean(), 5)
+
+    def test_projection_is_the_long_form_of_equirectangular(self):
+        pictures = []
+        for flags in (["--projection", "equirectangular"], ["--equirectangular"]):
+            out = os.path.join(self.dir, "e%d.png" % len(pictures))
+            status, _, err = run("render", "--backend", "cpu", "--width", "48", "--height", "24",
+                                 *flags, "-o", out)
+            self.assertEqual(status, 0, err)
+            pictures.append(png_size_and_pixels(out)[2])
+        self.assertEqual(abs(pictures[0].astype(int) - pictures[1].astype(int)).max(), 0)
+        # and a scene's equirectangular camera is overridden by --projection perspective
+        scene = self.scene({"position": [0, 0, 5], "projection": "equirectangular"})
+        perspective = os.path.join(self.dir, "p.png")
+        equirect = os.path.join(self.dir, "q.png")
+        base = ["--backend", "cpu", "--width", "48", "--height", "24", "-s", scene]
+        self.assertEqual(run("render", *base, "--projection", "perspective", "-o", perspective)[0], 0)
+        self.assertEqual(run("render", *base, "-o", equirect)[0], 0)
+        p, q = (png_size_and_pixels(x)[2] for x in (perspective, equirect))
+        self.assertGreater(abs(p.astype(float) - q.astype(float)).mean(), 5)
+
+
 class CpuRenderTests(unittest.TestCase):
     """riemann render --backend cpu (the Embree tracer)."""
 
@@ -1158,17 +1262,17 @@ NUMERIC_OPTIONS = [
     ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
     ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
     ("render", ["--step", "nan"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
-    ("render", ["--fov", "nan"], '--fov: expected a finite positive number at most 179, got "nan"'),
-    ("render", ["--fov", "180"], '--fov: expected a finite positive number at most 179, got "180"'),
-    ("render", ["--fov", "0"], '--fov: expected a finite positive number at most 179, got "0"'),
+    ("render", ["--fov", "nan"], '--fov: expected a number above 0 and at most 179 (degrees), got "nan"'),
+    ("render", ["--fov", "180"], '--fov: expected a number above 0 and at most 179 (degrees), got "180"'),
+    ("render", ["--fov", "0"], '--fov: expected a number above 0 and at most 179 (degrees), got "0"'),
     ("render", ["--max-length", "nan"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
     ("render", ["--length", "inf"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
     ("render", ["--tolerance", "0"], '--tolerance: expected a number from 1e-15 to 1, got "0"'),
     ("expmap", ["--max-steps", "0"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "0"'),
     ("conjugate", ["--max-steps", "1e10"], '--max-steps: expected a whole number from 1 to 1e+09 (steps)'),
     ("render", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
-    ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384, got "nan"'),
-    ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384, got "0"'),
+    ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384 (pixels), got "nan"'),
+    ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384 (pixels), got "0"'),
     ("render", ["--samples", "inf"], '--samples: expected a whole number from 1 to 4096, got "inf"'),
     ("render", ["--frames", "nan"], '--frames: expected a whole number from 1 to 100000, got "nan"'),
     ("render", ["--bundle", "0"], '--bundle: expected a whole number from 1 to 256, got "0"'),

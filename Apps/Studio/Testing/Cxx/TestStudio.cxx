@@ -40,6 +40,7 @@
 
 #include <QAction>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -202,6 +203,7 @@ private Q_SLOTS:
   void CancelledJobLeavesAppResponsive();
   void BadProjectIsRefusedWithDialog();
   void ProjectIntegrationFollowsTheSchema();
+  void InsideViewFormFollowsThePictureSchema();
   void PropertiesRefuseBadValues();
   void PythonTraceRebuildsPipeline();
   void CommandLineScreenshot();
@@ -558,6 +560,88 @@ void TestStudio::ProjectIntegrationFollowsTheSchema()
   QCOMPARE(settings->GetMaximumPropagation(), 12.0);
   QCOMPARE(settings->GetMaximumNumberOfSteps(), static_cast<vtkIdType>(1234));
   QCOMPARE(riemann::studio::IntegrationValues(settings), project.Integration);
+}
+
+void TestStudio::InsideViewFormFollowsThePictureSchema()
+{
+  // The inside view's form: the observer's camera, samples and renderer as
+  // the picture schema (PictureSchema.h) describes them, its ranges and the
+  // refusal of a camera that defines no view; a project's observer and
+  // inside objects in the schema's keys and words.
+  auto window = OpenWindow();
+  QVERIFY(window);
+  window->Browser()->SelectScene();
+  PropertiesPanel* panel = window->Properties();
+  for (const char* key : { "Position", "FocalPoint", "ViewUp", "ViewAngle", "SamplesPerPixel", "Backend" })
+  {
+    QVERIFY2(panel->Field(key), key);
+  }
+  vtkCamera* observer = window->Document()->Observer();
+  auto* angle = qobject_cast<QLineEdit*>(panel->Field("ViewAngle"));
+  QVERIFY(angle);
+  angle->selectAll();
+  QTest::keyClicks(angle, "179.5");
+  QVERIFY2(panel->FieldError("ViewAngle").contains("179"), qPrintable(panel->FieldError("ViewAngle")));
+  QVERIFY(!panel->Apply());
+  angle->selectAll();
+  QTest::keyClicks(angle, "45");
+  QVERIFY(panel->Apply());
+  QCOMPARE(observer->GetViewAngle(), 45.0);
+  // Looking at the point it stands on: refused whole, the camera kept.
+  const double* eye = observer->GetPosition();
+  const double position[3] = { eye[0], eye[1], eye[2] };
+  const double focal[3] = { observer->GetFocalPoint()[0], observer->GetFocalPoint()[1],
+    observer->GetFocalPoint()[2] };
+  for (int i = 0; i < 3; ++i)
+  {
+    auto* lookAt = qobject_cast<QLineEdit*>(panel->Field("FocalPoint", i));
+    QVERIFY(lookAt);
+    lookAt->selectAll();
+    QTest::keyClicks(lookAt, QString::number(position[i]));
+    QVERIFY2(panel->FieldError("FocalPoint").isEmpty(), qPrintable(panel->FieldError("FocalPoint")));
+  }
+  angle->selectAll();
+  QTest::keyClicks(angle, "30");
+  QVERIFY(!panel->Apply());
+  const QString status = panel->findChild<QLabel*>("PropertiesStatus")->text();
+  QVERIFY2(status.contains("the camera is at the point it looks at"), qPrintable(status));
+  QCOMPARE(observer->GetViewAngle(), 45.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    QCOMPARE(observer->GetFocalPoint()[i], focal[i]);
+  }
+  auto* samples = qobject_cast<QLineEdit*>(panel->Field("SamplesPerPixel"));
+  QVERIFY(samples);
+  samples->selectAll();
+  QTest::keyClicks(samples, "4097");
+  QVERIFY(!panel->FieldError("SamplesPerPixel").isEmpty());
+
+  const auto error = [](const std::string& observer, const std::string& inside) -> std::string
+  {
+    try
+    {
+      riemann::studio::ParseProject(R"({"riemann-studio": 1,
+ "metric": {"text": "{\"type\": \"euclidean\"}"}, "observer": )" + observer +
+        R"(, "inside": )" + inside + "}");
+    }
+    catch (const riemann::studio::ProjectError& e)
+    {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  const std::string fine =
+    R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 30})";
+  QCOMPARE(error(fine, "{}"), std::string("(accepted)"));
+  QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 180})", "{}"),
+    std::string("observer.view-angle: expected a number above 0 and at most 179 (degrees)"));
+  QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 0], "view-angle": 30})", "{}"),
+    std::string("observer.view-up: expected three finite numbers X,Y,Z, not all 0"));
+  QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 3], "view-angle": 30})", "{}"),
+    std::string("observer: the view up is along the view direction"));
+  QCOMPARE(error(fine, R"({"samples": 5000})"),
+    std::string("inside.samples: expected a whole number from 1 to 4096"));
+  QCOMPARE(error(fine, R"({"backend": "vulkan"})"), std::string("inside.backend: expected gpu or cpu"));
 }
 
 void TestStudio::BadProjectIsRefusedWithDialog()
