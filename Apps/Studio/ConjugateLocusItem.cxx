@@ -1,6 +1,8 @@
 // Conjugate points and caustic sheets of a point (vtkRiemannConjugateLocus).
 #include "PipelineItems.h"
 
+#include "IntegrationSchema.h"
+
 #include "ColorMaps.h"
 
 #include "vtkRiemannConjugateLocus.h"
@@ -63,8 +65,12 @@ std::vector<PropertySpec> ConjugateLocusItem::Properties() const
   PropertySpec largestStep;
   largestStep.Key = "MaximumIntegrationStep";
   largestStep.Label = "Largest step";
-  largestStep.Minimum = 1e-6;
-  largestStep.Maximum = 100.0;
+  // The integration schema's range of the setting, as everywhere else.
+  const riemann::IntegrationSetting& maximumStep =
+    riemann::IntegrationSettingOf(riemann::IntegrationSettingId::MaximumStep);
+  largestStep.Minimum = maximumStep.Minimum;
+  largestStep.MinimumExclusive = maximumStep.MinimumExclusive;
+  largestStep.Maximum = maximumStep.Maximum;
   largestStep.Help = "Largest step of dp45 (conjugate points are counted, so no step can jump "
                      "over one)";
   specs.push_back(largestStep);
