@@ -17,6 +17,7 @@ void RegisterComputeCommands(CLI::App& app)
   RegisterFieldsCommand(app);
   RegisterConjugateCommand(app);
   RegisterExpmapCommand(app);
+  RegisterConnectCommand(app);
 }
 } // namespace cli
 } // namespace riemann

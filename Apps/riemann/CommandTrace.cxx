@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
+#include "GeodesicCsv.h"
 #include "GeodesicTrace.h"
 #include "InputFiles.h"
 
@@ -167,50 +168,6 @@ vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
   return seeds;
 }
 
-bool WriteCsv(vtkPolyData* lines, const std::string& path)
-{
-  std::ofstream out(path);
-  if (!out)
-  {
-    return false;
-  }
-  vtkDataArray* determinant = lines->GetPointData()->GetArray("TransverseJacobian");
-  vtkDataArray* singular = lines->GetPointData()->GetArray("TransverseJacobianSingularValues");
-  // The transverse Jacobian's columns come after the fixed ones, when asked.
-  out << "seed_id,step,t,x,y,z,vx,vy,vz"
-      << (determinant ? ",TransverseJacobian,SingularValue0,SingularValue1" : "") << "\n";
-  CsvWriter csv(out);
-  vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
-  vtkDataArray* velocity = lines->GetPointData()->GetArray("Velocity");
-  vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  auto iterator = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
-  vtkIdType cell = 0;
-  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
-       iterator->GoToNextCell(), ++cell)
-  {
-    iterator->GetCurrentCell(count, ids);
-    const long long seed = static_cast<long long>(seedIds->GetTuple1(cell));
-    for (vtkIdType k = 0; k < count; ++k)
-    {
-      double p[3], v[3];
-      lines->GetPoint(ids[k], p);
-      velocity->GetTuple(ids[k], v);
-      csv.Add(seed).Add(static_cast<long long>(k)).Add(arcLength->GetTuple1(ids[k]));
-      csv.Add(p[0]).Add(p[1]).Add(p[2]).Add(v[0]).Add(v[1]).Add(v[2]);
-      if (determinant && singular)
-      {
-        csv.Add(determinant->GetTuple1(ids[k]))
-          .Add(singular->GetComponent(ids[k], 0))
-          .Add(singular->GetComponent(ids[k], 1));
-      }
-      csv.EndRow();
-    }
-  }
-  return csv.Finish();
-}
-
 /// The most points a trace writes (about 10 GB as .vtp with its arrays, more as CSV).
 constexpr double MaximumOutputPoints = 2e8;
 
@@ -309,7 +266,7 @@ void RunTrace(const TraceArguments& args)
   WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
     [&](vtkPolyData* all, const std::string& temporary)
     {
-      return extension == "csv" ? WriteCsv(all, temporary)
+      return extension == "csv" ? WriteGeodesicCsv(all, temporary)
                                 : WritePolyDataFile(all, temporary, args.Compress);
     });
   if (Rank() != 0)

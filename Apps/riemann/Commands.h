@@ -19,6 +19,7 @@ void RegisterRenderCommand(CLI::App& app);
 void RegisterFieldsCommand(CLI::App& app);
 void RegisterConjugateCommand(CLI::App& app);
 void RegisterExpmapCommand(CLI::App& app);
+void RegisterConnectCommand(CLI::App& app);
 
 /**
  * Every subcommand of `riemann` and `riemann-mpi` (CommandList.cxx): all but

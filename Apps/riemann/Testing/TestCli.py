@@ -587,7 +587,7 @@ class IntegrationOptionTests(unittest.TestCase):
 
     def test_every_integrating_command_lists_them(self):
         import re
-        for command in ("trace", "expmap", "conjugate", "render"):
+        for command in ("trace", "expmap", "conjugate", "connect", "render"):
             with self.subTest(command=command):
                 status, out, err = run(command, "--help")
                 self.assertEqual(status, 0, err)
@@ -606,6 +606,85 @@ class IntegrationOptionTests(unittest.TestCase):
                              "--tolerance", "1e-5", "--max-steps", "400", "-o", out)
         self.assertEqual(status, 0, err)
         self.assertTrue(os.path.exists(out))
+
+
+class ConnectTests(unittest.TestCase):
+    """riemann connect: every geodesic from p to q, against the round sphere's
+    great circles and the twist's straight lines."""
+
+    SPHERE = os.path.join(METRICS, "round-sphere.json")
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    @staticmethod
+    def on_sphere(x):
+        r2 = sum(c * c for c in x)
+        return [2 * c / (1 + r2) for c in x] + [(1 - r2) / (1 + r2)]
+
+    def connect(self, *args):
+        out = os.path.join(self.dir, "c.csv")
+        status, stdout, err = run("connect", *args, "-o", out)
+        self.assertEqual(status, 0, err)
+        table = list(csv.DictReader(stdout.splitlines()))
+        with open(out) as f:
+            rows = list(csv.DictReader(f))
+        return table, rows
+
+    def test_both_arcs_of_the_great_circle(self):
+        p, q = (0.4, 0.1, -0.2), (-0.3, 0.5, 0.6)
+        d = math.acos(sum(a * b for a, b in zip(self.on_sphere(p), self.on_sphere(q))))
+        table, rows = self.connect("-m", self.SPHERE, "--from", "0.4,0.1,-0.2",
+                                   "--to", "-0.3,0.5,0.6", "--length", "7")
+        self.assertEqual(len(table), 2)
+        self.assertAlmostEqual(float(table[0]["length"]), d, delta=1e-8)
+        self.assertAlmostEqual(float(table[1]["length"]), 2 * math.pi - d, delta=1e-8)
+        self.assertEqual([t["morse_index"] for t in table], ["0", "2"])
+        self.assertEqual([t["shortest"] for t in table], ["1", "0"])
+        self.assertLessEqual(max(float(t["miss"]) for t in table), 1e-9)
+        # The CSV is trace's: one seed_id per geodesic, from p to q.
+        self.assertEqual(sorted({r["seed_id"] for r in rows}), ["0", "1"])
+        for seed in ("0", "1"):
+            line = [r for r in rows if r["seed_id"] == seed]
+            self.assertEqual(tuple(float(line[0][k]) for k in "xyz"), p)
+            for k, v in zip("xyz", q):
+                self.assertAlmostEqual(float(line[-1][k]), v, delta=1e-8)
+
+    def test_the_antipode_is_conjugate_along_every_geodesic(self):
+        # (0.5, 0, 0) and (-2, 0, 0) are antipodes on the sphere.
+        table, _ = self.connect("-m", self.SPHERE, "--from", "0.5,0,0", "--to", "-2,0,0",
+                                "--length", "4", "-n", "60")
+        self.assertGreaterEqual(len(table), 57)
+        for t in table:
+            self.assertAlmostEqual(float(t["length"]), math.pi, delta=1e-8)
+            self.assertEqual(t["conjugate_multiplicity"], "2")
+
+    def test_the_twist_has_one_geodesic(self):
+        p, q = (0.2, -0.4, 0.3), (1.0, 0.7, 1.6)
+        table, _ = self.connect("-m", os.path.join(METRICS, "twist.json"), "--from", "0.2,-0.4,0.3",
+                                "--to", "1.0,0.7,1.6", "-n", "300")
+        phi = lambda x: (math.cos(x[2]) * x[0] - math.sin(x[2]) * x[1],
+                         math.sin(x[2]) * x[0] + math.cos(x[2]) * x[1], x[2])
+        self.assertEqual(len(table), 1)
+        self.assertAlmostEqual(float(table[0]["length"]), math.dist(phi(p), phi(q)), delta=1e-8)
+
+    def test_bad_input_is_refused_before_any_work(self):
+        out = os.path.join(self.dir, "c.csv")
+        for args, words in ((["--to", "0.5,0,0"], "the same point"),
+                            (["--to", "1,1,1", "--tolerance", "0.5"], "--tolerance 0.5: expected a number from 1e-13 to 0.01"),
+                            (["--to", "1,1,1", "-o", os.path.join(self.dir, "c.png")], "must end in .vtp or .csv")):
+            with self.subTest(args=args):
+                line = ["connect", "-m", self.SPHERE, "--from", "0.5,0,0", *args]
+                if "-o" not in args:
+                    line += ["-o", out]
+                status, _, err = run(*line)
+                self.assertEqual(status, 2, err)
+                self.assertIn(words, err)
+                self.assertEqual(os.listdir(self.dir), [])
 
 
 class PictureOptionTests(unittest.TestCase):
