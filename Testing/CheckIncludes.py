@@ -23,12 +23,13 @@ import sys
 
 # Library folder -> the library folders its files may include from.
 CORE = ["Common/Packets", "Common/Metric", "Common/Expressions", "Common/Jacobi",
-        "Common/MetricFormat"]
+        "Common/Distance", "Common/MetricFormat"]
 LAYERS = {
     "Common/Packets": [],
     "Common/Metric": ["Common/Packets"],
     "Common/Expressions": ["Common/Metric", "Common/Packets"],
     "Common/Jacobi": ["Common/Metric", "Common/Packets"],
+    "Common/Distance": ["Common/Metric", "Common/Packets"],
     "Common/MetricFormat": ["Common/Expressions", "Common/Metric", "Common/Packets"],
     "Rendering/Core": CORE,
     "Rendering/Meshes": ["Rendering/Core"] + CORE,

@@ -24,16 +24,18 @@ VTK = re.compile(r"^libvtk")
 
 # Riemann library -> (third-party soname prefixes, Riemann libraries, may it need VTK)
 CORE = ["RiemannCommonMetricFormat", "RiemannCommonExpressions", "RiemannCommonJacobi",
-        "RiemannCommonMetric", "RiemannCommonPackets"]
+        "RiemannCommonDistance", "RiemannCommonMetric", "RiemannCommonPackets"]
 ALLOWED = {
     # The VTK-free core, bottom up: the packet engine (Highway), the metric
     # core (nothing but the engine), typed expressions (GiNaC; Highway for
-    # their packet interpreter), Jacobi fields, the JSON metric format.
+    # their packet interpreter), Jacobi fields, distance fields, the JSON
+    # metric format.
     "RiemannCommonPackets": (["libhwy"], [], False),
     "RiemannCommonMetric": ([], ["RiemannCommonPackets"], False),
     "RiemannCommonExpressions": (["libginac", "libcln", "libhwy"],
                                  ["RiemannCommonMetric", "RiemannCommonPackets"], False),
     "RiemannCommonJacobi": ([], ["RiemannCommonMetric", "RiemannCommonPackets"], False),
+    "RiemannCommonDistance": ([], ["RiemannCommonMetric", "RiemannCommonPackets"], False),
     "RiemannCommonMetricFormat": ([], ["RiemannCommonExpressions", "RiemannCommonMetric",
                                        "RiemannCommonPackets"], False),
     "RiemannRenderingCore": ([], CORE, False),

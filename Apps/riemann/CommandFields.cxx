@@ -5,6 +5,7 @@
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
+#include "GridOptions.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -45,80 +46,6 @@ struct FieldsArguments
   bool Gather = false;
   std::string Output;
 };
-
-constexpr long long MaximumPerAxis = 512;
-/// Points one process holds at most (about 4 GB of arrays): the whole grid
-/// in one process or gathered on rank 0; under mpirun each rank's piece, so
-/// that N ranks may sample N times as many (512^3 on 7 ranks).
-constexpr long long MaximumPointsPerProcess = 20000000;
-
-/// What is wrong with `text` as a grid box, or "" (then `bounds` holds it).
-std::string CheckBounds(const std::string& text, double bounds[6])
-{
-  std::vector<double> b;
-  const std::string problem = CheckNumberList(text, 6, "X0,X1,Y0,Y1,Z0,Z1", b);
-  if (!problem.empty())
-  {
-    return problem;
-  }
-  const char* axes = "xyz";
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(b[2 * a] < b[2 * a + 1]))
-    {
-      std::ostringstream message;
-      message << "the " << axes[a] << " range needs " << axes[a] << "0 < " << axes[a] << "1, got "
-              << b[2 * a] << " >= " << b[2 * a + 1];
-      return message.str();
-    }
-    bounds[2 * a] = b[2 * a];
-    bounds[2 * a + 1] = b[2 * a + 1];
-  }
-  return {};
-}
-
-/// What is wrong with `text` as point counts per axis, or "" (then `dims` holds them).
-std::string CheckDimensions(const std::string& text, int dims[3])
-{
-  std::vector<double> d;
-  const std::string problem = CheckNumberList(text, 3, "NX,NY,NZ", d);
-  if (!problem.empty())
-  {
-    return problem;
-  }
-  double total = 1.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (d[a] != std::floor(d[a]))
-    {
-      return "\"" + text + "\": point counts must be whole numbers";
-    }
-    if (d[a] < 1 || d[a] > MaximumPerAxis)
-    {
-      std::ostringstream message;
-      message << d[a] << " points on an axis; each must be between 1 and " << MaximumPerAxis;
-      return message.str();
-    }
-    dims[a] = static_cast<int>(d[a]);
-    total *= d[a];
-  }
-  const long long maximum = MaximumPointsPerProcess * NumberOfRanks();
-  if (total > maximum)
-  {
-    std::ostringstream message;
-    message << static_cast<long long>(total) << " grid points; at most " << maximum;
-    if (maximum == MaximumPointsPerProcess)
-    {
-      message << " in one process (under mpirun, " << MaximumPointsPerProcess << " per rank)";
-    }
-    else
-    {
-      message << " on " << NumberOfRanks() << " ranks (" << MaximumPointsPerProcess << " per rank)";
-    }
-    return message.str();
-  }
-  return {};
-}
 
 bool WriteCsv(vtkImageData* image, const std::string& path)
 {
@@ -179,16 +106,7 @@ void RunFields(const FieldsArguments& args)
   // Checked while parsing (the validators below); parsed here.
   double bounds[6];
   int dims[3];
-  std::string problem = CheckBounds(args.Bounds, bounds);
-  if (!problem.empty())
-  {
-    throw Failure("--bounds: " + problem, 2);
-  }
-  problem = CheckDimensions(args.Dimensions, dims);
-  if (!problem.empty())
-  {
-    throw Failure("--dims: " + problem, 2);
-  }
+  ParseGridOptions(args.Bounds, args.Dimensions, bounds, dims);
   if (layout == OutputLayout::Gathered &&
     static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumPointsPerProcess)
   {
@@ -297,26 +215,7 @@ void RegisterFieldsCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command
-    ->add_option("--bounds", args->Bounds, "Grid box X0,X1,Y0,Y1,Z0,Z1 (default -2,2,-2,2,-2,2)")
-    ->check(Checked(
-      [](const std::string& text)
-      {
-        double bounds[6];
-        return CheckBounds(text, bounds);
-      },
-      "X0,X1,Y0,Y1,Z0,Z1"));
-  command
-    ->add_option("--dims", args->Dimensions,
-      "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, and 2e7 in all per "
-      "process: under mpirun, per rank)")
-    ->check(Checked(
-      [](const std::string& text)
-      {
-        int dims[3];
-        return CheckDimensions(text, dims);
-      },
-      "NX,NY,NZ"));
+  AddGridOptions(command, args->Bounds, args->Dimensions);
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command

@@ -18,6 +18,7 @@ void RegisterComputeCommands(CLI::App& app)
   RegisterConjugateCommand(app);
   RegisterExpmapCommand(app);
   RegisterConnectCommand(app);
+  RegisterDistanceCommand(app);
 }
 } // namespace cli
 } // namespace riemann

@@ -2,6 +2,7 @@
 // as .vtp (VTK XML polylines) or .csv (seed_id,step,t,x,y,z,vx,vy,vz).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "CsvColumns.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
 #include "GeodesicCsv.h"
@@ -64,104 +65,27 @@ struct TraceArguments
 /// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
 vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
 {
-  // A regular file of at most 1 GiB (some 20 million seeds): a FIFO would
-  // block, a device read without end.
-  const std::string notAFile = InputFileProblem(path, "the seeds file", std::uint64_t(1) << 30);
-  if (!notAFile.empty())
-  {
-    throw Failure(notAFile);
-  }
-  std::ifstream file(path);
-  if (!file)
-  {
-    throw Failure(path + ": cannot open the seeds file");
-  }
-  std::string line;
-  if (!std::getline(file, line))
-  {
-    throw Failure(path + ": empty seeds file (expected a header x,y,z,dx,dy,dz)");
-  }
-  std::map<std::string, int> columns;
-  {
-    std::stringstream header(line);
-    std::string name;
-    for (int c = 0; std::getline(header, name, ','); ++c)
-    {
-      name.erase(0, name.find_first_not_of(" \t\r"));
-      name.erase(name.find_last_not_of(" \t\r") + 1);
-      columns[name] = c;
-    }
-  }
-  const char* required[6] = { "x", "y", "z", "dx", "dy", "dz" };
-  int index[6];
-  for (int k = 0; k < 6; ++k)
-  {
-    auto it = columns.find(required[k]);
-    if (it == columns.end())
-    {
-      throw Failure(path + ": line 1: the header lacks column \"" + required[k] +
-        "\" (expected x,y,z,dx,dy,dz)");
-    }
-    index[k] = it->second;
-  }
+  std::vector<long long> lines;
+  const std::vector<std::vector<double>> rows =
+    ReadCsvColumns(path, { "x", "y", "z", "dx", "dy", "dz" }, "seeds", 10000000, &lines);
   auto seeds = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> directions;
   directions->SetName("Direction");
   directions->SetNumberOfComponents(3);
-  constexpr long long maximumSeeds = 10000000;
-  for (long long lineNumber = 2; std::getline(file, line); ++lineNumber)
+  for (std::size_t r = 0; r < rows.size(); ++r)
   {
-    if (line.find_first_not_of(" \t\r") == std::string::npos)
-    {
-      continue;
-    }
-    std::vector<double> values;
-    std::stringstream row(line);
-    std::string cell;
-    while (std::getline(row, cell, ','))
-    {
-      char* end = nullptr;
-      const double value = std::strtod(cell.c_str(), &end);
-      while (end && (*end == ' ' || *end == '\t' || *end == '\r'))
-      {
-        ++end;
-      }
-      if (end == cell.c_str() || *end != '\0' || !std::isfinite(value))
-      {
-        throw Failure(path + ": line " + std::to_string(lineNumber) + ": \"" + cell +
-          "\" is not a finite number");
-      }
-      values.push_back(value);
-    }
-    double d[6];
-    for (int k = 0; k < 6; ++k)
-    {
-      if (index[k] >= static_cast<int>(values.size()))
-      {
-        throw Failure(path + ": line " + std::to_string(lineNumber) + ": missing column \"" +
-          required[k] + "\"");
-      }
-      d[k] = values[index[k]];
-    }
-    if (points->GetNumberOfPoints() >= maximumSeeds)
-    {
-      throw Failure(path + ": more than " + std::to_string(maximumSeeds) + " seeds");
-    }
+    const double* d = rows[r].data();
     std::ostringstream direction;
     direction << d[3] << ',' << d[4] << ',' << d[5];
     const std::string degenerate = CheckDirection(d + 3, direction.str());
     if (!degenerate.empty())
     {
-      throw Failure(path + ": line " + std::to_string(lineNumber) + ": dx,dy,dz " + degenerate);
+      throw Failure(path + ": line " + std::to_string(lines[r]) + ": dx,dy,dz " + degenerate);
     }
     points->InsertNextPoint(d);
     directions->InsertNextTuple(d + 3);
-  }
-  if (points->GetNumberOfPoints() == 0)
-  {
-    throw Failure(path + ": no seeds after the header");
   }
   seeds->SetPoints(points);
   seeds->GetPointData()->AddArray(directions);

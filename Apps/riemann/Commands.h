@@ -20,6 +20,7 @@ void RegisterFieldsCommand(CLI::App& app);
 void RegisterConjugateCommand(CLI::App& app);
 void RegisterExpmapCommand(CLI::App& app);
 void RegisterConnectCommand(CLI::App& app);
+void RegisterDistanceCommand(CLI::App& app);
 
 /**
  * Every subcommand of `riemann` and `riemann-mpi` (CommandList.cxx): all but

@@ -687,6 +687,68 @@ class ConnectTests(unittest.TestCase):
                 self.assertEqual(os.listdir(self.dir), [])
 
 
+class DistanceTests(unittest.TestCase):
+    """riemann distance: the twist's exact distance |Phi(x) - Phi(p)|, seeds'
+    Voronoi regions, the cut locus file, and bad input refused before work."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    @staticmethod
+    def read(path):
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        import numpy as np
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(path)
+        reader.Update()
+        image = reader.GetOutput()
+        points = np.array([image.GetPoint(i) for i in range(image.GetNumberOfPoints())])
+        pd = image.GetPointData()
+        return points, vtk_to_numpy(pd.GetArray("Distance")), vtk_to_numpy(pd.GetArray("SeedId"))
+
+    def test_the_twist_and_two_seeds(self):
+        import numpy as np
+        out = os.path.join(self.dir, "d.vti")
+        cut = os.path.join(self.dir, "cut.vtp")
+        seeds = os.path.join(self.dir, "seeds.csv")
+        with open(seeds, "w") as f:
+            f.write("x,y,z\n0.5,0.1,0.2\n")
+        status, _, err = run("distance", "-m", os.path.join(METRICS, "twist.json"), "--seed", "-0.5,0,-0.1",
+                             "--seeds", seeds, "--bounds", "-1,1,-1,1,-1,1", "--dims", "25,25,25",
+                             "-o", out, "--cut-locus", cut)
+        self.assertEqual(status, 0, err)
+        self.assertIn("2 seed(s)", err)
+        points, distance, seed_id = self.read(out)
+        phi = lambda x: np.stack([np.cos(x[:, 2]) * x[:, 0] - np.sin(x[:, 2]) * x[:, 1],
+                                  np.sin(x[:, 2]) * x[:, 0] + np.cos(x[:, 2]) * x[:, 1], x[:, 2]], 1)
+        exact = np.stack([np.linalg.norm(phi(points) - phi(np.array([s])), axis=1)
+                          for s in ([-0.5, 0, -0.1], [0.5, 0.1, 0.2])])
+        # First order at h = 1/12 (measured 0.051 at most).
+        self.assertLess(np.abs(distance - exact.min(axis=0)).max(), 0.06)
+        clear = np.abs(exact[0] - exact[1]) > 0.2
+        self.assertTrue((seed_id[clear] == exact.argmin(axis=0)[clear]).all())
+        self.assertTrue(os.path.getsize(cut) > 0)
+
+    def test_bad_input_is_refused_before_any_work(self):
+        out = os.path.join(self.dir, "d.vti")
+        twist = os.path.join(METRICS, "twist.json")
+        for args, words in (([], "no seed"),
+                            (["--seed", "3,0,0"], "outside --bounds"),
+                            (["--seed", "0,0,0", "--dims", "2,2,1"], "--dims 2,2,1: the distance needs at least 2 points"),
+                            (["--seed", "0,0,0", "--seed-radius", "50"], "--seed-radius"),
+                            (["--seed", "0,0,0", "--cut-locus", os.path.join(self.dir, "c.vti")], "must be a .vtp")):
+            with self.subTest(args=args):
+                status, _, err = run("distance", "-m", twist, *args, "-o", out)
+                self.assertEqual(status, 2, err)
+                self.assertIn(words, err)
+                self.assertEqual(os.listdir(self.dir), [])
+
+
 class PictureOptionTests(unittest.TestCase):
     """The camera and picture options of render are the picture schema's
     (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words

@@ -1,0 +1,250 @@
+// riemann distance: the geodesic distance from one or several seeds on a
+// grid (vtkRiemannDistanceField), written as .vti with point data Distance,
+// ArrivalDirection and SeedId; with --cut-locus, where the minimal geodesics
+// stop being unique (vtkRiemannCutLocus) as .vtp.
+#include "CliUtilities.h"
+#include "Commands.h"
+#include "CsvColumns.h"
+#include "Distributed.h"
+#include "GridOptions.h"
+#include "ProgressBar.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannCutLocus.h"
+#include "vtkRiemannDistanceField.h"
+#include "vtkRiemannMetric.h"
+#include "vtkXMLImageDataWriter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+struct DistanceArguments
+{
+  std::string Metric;
+  std::vector<std::string> Seeds;
+  std::string SeedsFile;
+  std::string Bounds = "-2,2,-2,2,-2,2";
+  std::string Dimensions = "33,33,33";
+  double SeedRadius = 2.5; // vtkRiemannDistanceField's default
+  std::string CutLocus;
+  double MinimumAngle = 20.0; // vtkRiemannCutLocus's default
+  std::string Compress = "lz4";
+  std::string Output;
+};
+
+/// The most seeds a run takes (each is a point of the grid's box).
+constexpr long long MaximumSeeds = 1000000;
+
+/// --seed points, then the --seeds file's, as one list of x,y,z.
+std::vector<double> ReadSeedPoints(const DistanceArguments& args)
+{
+  std::vector<double> seeds;
+  for (const std::string& text : args.Seeds)
+  {
+    double p[3];
+    ParseVector3(text, "--seed", p);
+    seeds.insert(seeds.end(), p, p + 3);
+  }
+  if (!args.SeedsFile.empty())
+  {
+    for (const std::vector<double>& row :
+      ReadCsvColumns(args.SeedsFile, { "x", "y", "z" }, "seeds", MaximumSeeds))
+    {
+      seeds.insert(seeds.end(), row.begin(), row.end());
+    }
+  }
+  if (seeds.empty())
+  {
+    throw Failure("no seed: give --seed X,Y,Z (one or more) or --seeds FILE.csv", 2);
+  }
+  return seeds;
+}
+
+/// Refuses, before any work, a seed outside the grid's box.
+void CheckSeedsInBox(const std::vector<double>& seeds, const double box[6])
+{
+  for (std::size_t s = 0; s + 2 < seeds.size(); s += 3)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = seeds[s + static_cast<std::size_t>(a)];
+      if (x < box[2 * a] || x > box[2 * a + 1])
+      {
+        throw Failure("seed " + std::to_string(s / 3) + " (" + FormatNumber(seeds[s]) + "," +
+            FormatNumber(seeds[s + 1]) + "," + FormatNumber(seeds[s + 2]) +
+            ") is outside --bounds: the distance is computed on the grid, from seeds in it",
+          2);
+      }
+    }
+  }
+}
+
+/// "from 0 to 3.2 (12 points unreached)".
+std::string DescribeRange(vtkImageData* field)
+{
+  vtkDataArray* distance = field->GetPointData()->GetArray("Distance");
+  double lowest = INFINITY, highest = -INFINITY;
+  long long unreached = 0;
+  for (vtkIdType n = 0; distance && n < distance->GetNumberOfTuples(); ++n)
+  {
+    const double u = distance->GetTuple1(n);
+    if (std::isnan(u))
+    {
+      ++unreached;
+      continue;
+    }
+    lowest = std::min(lowest, u);
+    highest = std::max(highest, u);
+  }
+  std::string text = "distance from " + FormatNumber(lowest) + " to " + FormatNumber(highest);
+  if (unreached > 0)
+  {
+    text += " (" + std::to_string(unreached) + " points unreached: the metric fails there)";
+  }
+  return text;
+}
+
+void RunDistance(const DistanceArguments& args)
+{
+  CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile } },
+    { { "-o", args.Output }, { "--cut-locus", args.CutLocus } });
+  if (Extension(args.Output) != "vti")
+  {
+    throw Failure("-o " + args.Output + ": the output must end in .vti", 2);
+  }
+  if (!args.CutLocus.empty() && Extension(args.CutLocus) != "vtp")
+  {
+    throw Failure("--cut-locus " + args.CutLocus + ": the cut locus must be a .vtp file", 2);
+  }
+  if (IsDistributed())
+  {
+    throw Failure("distance runs in one process (it uses every core): run it without mpirun "
+                  "(a point's distance depends on the whole grid between it and its seed, so "
+                  "the grid is not split into pieces)",
+      2);
+  }
+  double box[6];
+  int dims[3];
+  ParseGridOptions(args.Bounds, args.Dimensions, box, dims, false);
+  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
+  {
+    throw Failure("--dims " + args.Dimensions +
+        ": the distance needs at least 2 points along each axis (geodesics leave any plane)",
+      2);
+  }
+  const std::vector<double> seeds = ReadSeedPoints(args);
+  CheckSeedsInBox(seeds, box);
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<vtkRiemannDistanceField> field;
+  vtkNew<ErrorCollector> errors;
+  errors->Observe(field);
+  field->SetMetric(metric);
+  field->SetBounds(box);
+  field->SetDimensions(dims);
+  field->SetSeedRadius(args.SeedRadius);
+  for (std::size_t s = 0; s + 2 < seeds.size(); s += 3)
+  {
+    field->AddSeed(seeds.data() + s);
+  }
+  vtkNew<ProgressBar> progress;
+  progress->Observe(field, "riemann distance", ProgressBar::StderrIsTerminal());
+  const auto start = std::chrono::steady_clock::now();
+  field->Update();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress->Finish();
+  errors->ThrowIfAny("the distance field failed:");
+  vtkImageData* image = vtkImageData::SafeDownCast(field->GetOutput());
+
+  vtkNew<vtkRiemannCutLocus> cut;
+  if (!args.CutLocus.empty())
+  {
+    errors->Observe(cut);
+    cut->SetMetric(metric);
+    cut->SetMinimumAngle(args.MinimumAngle);
+    cut->SetInputData(image);
+    cut->Update();
+    errors->ThrowIfAny("the cut locus failed:");
+  }
+  WriteAtomically(args.Output,
+    [&](const std::string& temporary)
+    {
+      vtkNew<vtkXMLImageDataWriter> writer;
+      writer->SetInputData(image);
+      writer->SetFileName(temporary.c_str());
+      SetCompressor(writer, args.Compress);
+      return writer->Write() == 1;
+    });
+  if (!args.CutLocus.empty())
+  {
+    WritePolyDataAtomically(cut->GetOutput(), args.CutLocus, args.Compress);
+  }
+  std::cerr << "riemann distance: " << dims[0] << "x" << dims[1] << "x" << dims[2] << " grid, "
+            << seeds.size() / 3 << " seed(s): " << DescribeRange(image) << "; "
+            << field->GetNumberOfRounds() << " rounds, " << field->GetNumberOfUpdates()
+            << " point updates in " << FormatNumber(std::round(seconds * 100) / 100) << " s -> "
+            << args.Output;
+  if (!args.CutLocus.empty())
+  {
+    std::cerr << "; cut locus " << cut->GetOutput()->GetNumberOfPolys() << " squares -> "
+              << args.CutLocus;
+  }
+  std::cerr << "\n";
+}
+} // namespace
+
+void RegisterDistanceCommand(CLI::App& app)
+{
+  auto args = std::make_shared<DistanceArguments>();
+  CLI::App* command = app.add_subcommand("distance",
+    "The geodesic distance from seeds on a grid (anisotropic eikonal solver), with arrival "
+    "directions, Voronoi regions and the cut locus.");
+  command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
+    ->required()
+    ->check(CLI::ExistingFile);
+  command
+    ->add_option("--seed", args->Seeds,
+      "A seed X,Y,Z the distance is measured from; repeat it for several (SeedId numbers them "
+      "in order, then the --seeds file's)")
+    ->check(Point3());
+  command->add_option("--seeds", args->SeedsFile, "CSV of seeds with a header x,y,z")
+    ->check(CLI::ExistingFile);
+  AddGridOptions(command, args->Bounds, args->Dimensions, false);
+  command
+    ->add_option("--seed-radius", args->SeedRadius,
+      "Points within this many grid spacings of a seed take the local distance (default 2.5)")
+    ->check(FiniteNumber(1.0, 20.0));
+  command->add_option("--cut-locus", args->CutLocus,
+    "Also write the cut locus (.vtp squares; cell data Angle, Kind: 1 two minimal geodesics "
+    "from one seed meet, 2 the closest seed changes; Distance)");
+  command
+    ->add_option("--min-angle", args->MinimumAngle,
+      "Smallest turn of the arrival direction, in degrees, that the cut locus counts as a jump "
+      "(default 20)")
+    ->check(FiniteNumber(0.0, 180.0, true, true));
+  AddCompressOption(command, args->Compress);
+  command
+    ->add_option("--output,-o", args->Output,
+      "Output file: .vti (point data Distance, ArrivalDirection, SeedId)")
+    ->required();
+  command->callback([args]() { RunDistance(*args); });
+}
+} // namespace cli
+} // namespace riemann

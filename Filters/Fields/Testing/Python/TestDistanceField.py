@@ -1,0 +1,128 @@
+"""vtkRiemannDistanceField and vtkRiemannCutLocus from Python, checked
+against exact distances and against vtkRiemannGeodesicConnector.
+
+- The twist (a flat metric pulled back by Phi): the distance from p is
+  |Phi(x) - Phi(p)|; the field's error is first order (up to the point
+  source's logarithm): under 0.03 on a 33^3 grid of [-1, 1]^3.
+- Two bumps (a graph metric): the wavefronts from a seed before the first
+  bump fold behind it; the cut locus is there. At sampled points of it,
+  `connect` finds two distinct geodesics from the seed whose lengths agree
+  within the field's error: two minimal geodesics meet there.
+
+Run by ctest with /usr/bin/python3 and PYTHONPATH set to the build's package
+folder; exits non-zero on failure.
+"""
+import math
+import os
+import unittest
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+import riemann
+
+TWIST = '{"type": "diffeo", "preset": "twist"}'
+DATA = os.environ.get("RIEMANN_DATA_DIR", os.path.join(os.path.dirname(__file__), "../../../../Data"))
+
+
+def metric(text):
+    m = riemann.vtkRiemannMetric()
+    assert m.SetDefinition(text), m.GetLastError()
+    return m
+
+
+def twist(x):
+    c, s = np.cos(x[..., 2]), np.sin(x[..., 2])
+    return np.stack([c * x[..., 0] - s * x[..., 1], s * x[..., 0] + c * x[..., 1], x[..., 2]], -1)
+
+
+class DistanceFieldTests(unittest.TestCase):
+    def test_twist_is_the_mapped_distance(self):
+        field = riemann.vtkRiemannDistanceField()
+        field.SetMetric(metric(TWIST))
+        field.SetBounds(-1, 1, -1, 1, -1, 1)
+        field.SetDimensions(33, 33, 33)
+        seed = np.array([0.2, -0.1, 0.3])
+        field.AddSeed(*seed)
+        field.Update()
+        self.assertEqual(field.GetLastError(), "")
+        image = field.GetOutput()
+        points = np.array([image.GetPoint(i) for i in range(image.GetNumberOfPoints())])
+        exact = np.linalg.norm(twist(points) - twist(seed), axis=1)
+        distance = vtk_to_numpy(image.GetPointData().GetArray("Distance"))
+        self.assertLess(np.abs(distance - exact).max(), 0.04)  # measured 0.035
+        self.assertTrue((vtk_to_numpy(image.GetPointData().GetArray("SeedId")) == 0).all())
+
+    def test_cut_locus_points_have_two_minimal_geodesics(self):
+        with open(os.path.join(DATA, "metrics", "two-bumps.json")) as f:
+            bumps = metric(f.read())
+        seed = (-1.5, 0.0, 0.0)
+        field = riemann.vtkRiemannDistanceField()
+        field.SetMetric(bumps)
+        field.SetBounds(-2, 2, -2, 2, -2, 2)
+        field.SetDimensions(49, 49, 49)
+        field.AddSeed(*seed)
+        cut = riemann.vtkRiemannCutLocus()
+        cut.SetMetric(bumps)
+        cut.SetInputConnection(field.GetOutputPort())
+        cut.Update()
+        self.assertEqual(cut.GetLastError(), "")
+        squares = cut.GetOutput()
+        kinds = vtk_to_numpy(squares.GetCellData().GetArray("Kind"))
+        self.assertGreater(squares.GetNumberOfPolys(), 20)
+        self.assertTrue((kinds == 1).all())  # one seed: only direction jumps
+        # The squares of the largest jumps (the discrete field smears a jump
+        # over a cell or two beside it), checked by connect.
+        distances = vtk_to_numpy(squares.GetCellData().GetArray("Distance"))
+        angles = vtk_to_numpy(squares.GetCellData().GetArray("Angle"))
+        cut_points = vtk_to_numpy(squares.GetCellData().GetArray("CutPoint"))
+        checked = 0
+        for s in np.argsort(-angles)[:6]:
+            centre = cut_points[s]
+            connector = riemann.vtkRiemannGeodesicConnector()
+            connector.SetMetric(bumps)
+            connector.SetStartPosition(*seed)
+            connector.SetEndPosition(*centre)
+            connector.SetNumberOfDirections(3000)
+            connector.GetIntegrationSettings().SetMaximumPropagation(1.3 * distances[s] + 0.2)
+            connector.Update()
+            cd = connector.GetOutput().GetCellData()
+            lengths = vtk_to_numpy(cd.GetArray("Length"))  # sorted by length
+            leaving = vtk_to_numpy(cd.GetArray("InitialDirection"))
+            with self.subTest(square=s, centre=centre):
+                self.assertGreaterEqual(len(lengths), 2, lengths)
+                # Two different geodesics: they leave the seed apart.
+                cosine = leaving[0] @ leaving[1] / np.linalg.norm(leaving[0]) / np.linalg.norm(leaving[1])
+                self.assertLess(cosine, math.cos(math.radians(5)), (lengths, leaving[:2]))
+                print("cut point %s: u %.4f, geodesics %.4f and %.4f, %.1f degrees apart"
+                      % (np.round(centre, 3), distances[s], lengths[0], lengths[1],
+                         math.degrees(math.acos(min(1, cosine)))))
+                # The two shortest agree within the field's error (h = 1/12),
+                # and the field's distance is theirs within it too.
+                self.assertLess(lengths[1] - lengths[0], 0.05, lengths)
+                self.assertLess(abs(lengths[0] - distances[s]), 0.08, (lengths, distances[s]))
+            checked += 1
+        self.assertGreaterEqual(checked, 5)
+
+    def test_errors_leave_an_empty_output(self):
+        field = riemann.vtkRiemannDistanceField()
+        field.SetMetric(metric(TWIST))
+        field.Update()
+        self.assertIn("no seed", field.GetLastError())
+        field.AddSeed(5, 0, 0)
+        field.Update()
+        self.assertIn("not inside the grid", field.GetLastError())
+        self.assertEqual(field.GetOutput().GetNumberOfPoints(), 0)
+        cut = riemann.vtkRiemannCutLocus()
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        empty = vtkImageData()
+        empty.SetDimensions(3, 3, 3)
+        cut.SetInputData(empty)
+        cut.Update()
+        self.assertIn("must be a distance field", cut.GetLastError())
+
+
+if __name__ == "__main__":
+    from vtkmodules.vtkCommonCore import vtkObject
+    vtkObject.GlobalWarningDisplayOff()  # the errors of the last test are expected
+    unittest.main()

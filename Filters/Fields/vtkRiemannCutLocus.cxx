@@ -1,0 +1,165 @@
+#include "vtkRiemannCutLocus.h"
+
+#include "CutLocus.h"
+#include "EuclideanMetric.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRiemannMetric.h"
+#include "vtkRiemannReportError.h"
+
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkRiemannCutLocus);
+vtkCxxSetObjectMacro(vtkRiemannCutLocus, Metric, vtkRiemannMetric);
+
+vtkRiemannCutLocus::vtkRiemannCutLocus() = default;
+
+vtkRiemannCutLocus::~vtkRiemannCutLocus()
+{
+  this->SetMetric(nullptr);
+}
+
+vtkMTimeType vtkRiemannCutLocus::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Metric)
+  {
+    time = std::max(time, this->Metric->GetMTime());
+  }
+  return time;
+}
+
+int vtkRiemannCutLocus::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+namespace
+{
+/// The core's field from the image's arrays (NaN distances: unreached).
+bool FieldOf(vtkImageData* image, riemann::DistanceGrid& grid, riemann::DistanceFieldResult& field)
+{
+  vtkPointData* pd = image->GetPointData();
+  vtkDataArray* distance = pd->GetArray("Distance");
+  vtkDataArray* direction = pd->GetArray("ArrivalDirection");
+  vtkDataArray* seed = pd->GetArray("SeedId");
+  if (!distance || !direction || !seed || direction->GetNumberOfComponents() != 3)
+  {
+    return false;
+  }
+  double origin[3], spacing[3];
+  int dims[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  image->GetDimensions(dims);
+  const int* extent = image->GetExtent();
+  for (int a = 0; a < 3; ++a)
+  {
+    grid.Origin[a] = origin[a] + extent[2 * a] * spacing[a];
+    grid.Spacing[a] = spacing[a];
+    grid.Dimensions[static_cast<std::size_t>(a)] = dims[a];
+  }
+  const vtkIdType count = image->GetNumberOfPoints();
+  field.Distance.resize(static_cast<std::size_t>(count));
+  field.ArrivalDirection.resize(3 * static_cast<std::size_t>(count));
+  field.SeedId.resize(static_cast<std::size_t>(count));
+  for (vtkIdType n = 0; n < count; ++n)
+  {
+    const double u = distance->GetTuple1(n);
+    field.Distance[static_cast<std::size_t>(n)] =
+      std::isfinite(u) ? u : std::numeric_limits<double>::infinity();
+    direction->GetTuple(n, field.ArrivalDirection.data() + 3 * n);
+    field.SeedId[static_cast<std::size_t>(n)] = static_cast<int>(seed->GetTuple1(n));
+  }
+  return true;
+}
+} // namespace
+
+// RequestData as named steps: FieldOf -> ExtractCutLocus -> the squares.
+int vtkRiemannCutLocus::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  this->LastError.clear();
+  if (!(this->MinimumAngle > 0 && this->MinimumAngle < 180) || !(this->SmoothFactor >= 1) ||
+    !std::isfinite(this->SmoothFactor))
+  {
+    vtkRiemannReportErrorMacro(this->LastError,
+      << "MinimumAngle must be in (0, 180) degrees and SmoothFactor at least 1 (they are "
+      << this->MinimumAngle << " and " << this->SmoothFactor << ").");
+    return 1;
+  }
+  riemann::DistanceGrid grid;
+  riemann::DistanceFieldResult field;
+  if (!input || !FieldOf(input, grid, field))
+  {
+    vtkRiemannReportErrorMacro(this->LastError,
+      << "The input must be a distance field: point arrays Distance, ArrivalDirection (3 "
+         "components) and SeedId, as vtkRiemannDistanceField makes them.");
+    return 1;
+  }
+  const riemann::EuclideanMetric flat;
+  std::shared_ptr<const riemann::Metric> metric = this->Metric ? this->Metric->GetMetric() : nullptr;
+  riemann::CutLocusOptions options;
+  options.MinimumAngle = vtkMath::RadiansFromDegrees(this->MinimumAngle);
+  options.SmoothFactor = this->SmoothFactor;
+  const riemann::CutLocusSurface cut =
+    riemann::ExtractCutLocus(metric ? *metric : flat, grid, field, options);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(cut.Points.size()));
+  for (std::size_t p = 0; p < cut.Points.size(); ++p)
+  {
+    points->SetPoint(static_cast<vtkIdType>(p), cut.Points[p].data());
+  }
+  vtkNew<vtkCellArray> squares;
+  vtkNew<vtkDoubleArray> angle, distance, crossing;
+  angle->SetName("Angle");
+  distance->SetName("Distance");
+  crossing->SetName("CutPoint");
+  crossing->SetNumberOfComponents(3);
+  vtkNew<vtkIntArray> kind;
+  kind->SetName("Kind");
+  for (std::size_t s = 0; s < cut.Quads.size(); ++s)
+  {
+    const vtkIdType ids[4] = { cut.Quads[s][0], cut.Quads[s][1], cut.Quads[s][2], cut.Quads[s][3] };
+    squares->InsertNextCell(4, ids);
+    angle->InsertNextValue(vtkMath::DegreesFromRadians(cut.Angle[s]));
+    kind->InsertNextValue(cut.Kind[s]);
+    distance->InsertNextValue(cut.Distance[s]);
+    crossing->InsertNextTuple(cut.Centres[s].data());
+  }
+  output->SetPoints(points);
+  output->SetPolys(squares);
+  output->GetCellData()->AddArray(angle);
+  output->GetCellData()->AddArray(kind);
+  output->GetCellData()->AddArray(distance);
+  output->GetCellData()->AddArray(crossing);
+  output->GetCellData()->AddArray(crossing);
+  return 1;
+}
+
+void vtkRiemannCutLocus::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
+  os << indent << "SmoothFactor: " << this->SmoothFactor << "\n";
+}
