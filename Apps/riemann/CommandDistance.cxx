@@ -1,10 +1,13 @@
 // riemann distance: the geodesic distance from one or several seeds on a
 // grid (vtkRiemannDistanceField), written as .vti with point data Distance,
 // ArrivalDirection and SeedId; with --cut-locus, where the minimal geodesics
-// stop being unique (vtkRiemannCutLocus) as .vtp.
+// stop being unique (vtkRiemannCutLocus) as .vtp; with --to and --geodesics,
+// the minimal geodesic from each of those points back to its seed
+// (vtkRiemannMinimalGeodesics), written as trace writes geodesics.
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvColumns.h"
+#include "GeodesicCsv.h"
 #include "Distributed.h"
 #include "GridOptions.h"
 #include "ProgressBar.h"
@@ -17,6 +20,7 @@
 #include "vtkRiemannCutLocus.h"
 #include "vtkRiemannDistanceField.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannMinimalGeodesics.h"
 #include "vtkXMLImageDataWriter.h"
 
 #include <CLI/CLI.hpp>
@@ -44,6 +48,8 @@ struct DistanceArguments
   double SeedRadius = 2.5; // vtkRiemannDistanceField's default
   std::string CutLocus;
   double MinimumAngle = 20.0; // vtkRiemannCutLocus's default
+  std::vector<std::string> Targets;
+  std::string Geodesics;
   std::string Compress = "lz4";
   std::string Output;
 };
@@ -123,7 +129,7 @@ std::string DescribeRange(vtkImageData* field)
 void RunDistance(const DistanceArguments& args)
 {
   CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile } },
-    { { "-o", args.Output }, { "--cut-locus", args.CutLocus } });
+    { { "-o", args.Output }, { "--cut-locus", args.CutLocus }, { "--geodesics", args.Geodesics } });
   if (Extension(args.Output) != "vti")
   {
     throw Failure("-o " + args.Output + ": the output must end in .vti", 2);
@@ -131,6 +137,17 @@ void RunDistance(const DistanceArguments& args)
   if (!args.CutLocus.empty() && Extension(args.CutLocus) != "vtp")
   {
     throw Failure("--cut-locus " + args.CutLocus + ": the cut locus must be a .vtp file", 2);
+  }
+  if (args.Targets.empty() != args.Geodesics.empty())
+  {
+    throw Failure("--to and --geodesics go together: the points whose minimal geodesics are "
+                  "wanted, and the file they go to",
+      2);
+  }
+  const std::string geodesicsExtension = Extension(args.Geodesics);
+  if (!args.Geodesics.empty() && geodesicsExtension != "vtp" && geodesicsExtension != "csv")
+  {
+    throw Failure("--geodesics " + args.Geodesics + ": the geodesics go to a .vtp or .csv file", 2);
   }
   if (IsDistributed())
   {
@@ -183,6 +200,21 @@ void RunDistance(const DistanceArguments& args)
     cut->Update();
     errors->ThrowIfAny("the cut locus failed:");
   }
+  vtkNew<vtkRiemannMinimalGeodesics> minimal;
+  if (!args.Geodesics.empty())
+  {
+    errors->Observe(minimal);
+    minimal->SetMetric(metric);
+    minimal->SetInputData(image);
+    for (const std::string& text : args.Targets)
+    {
+      double p[3];
+      ParseVector3(text, "--to", p);
+      minimal->AddTarget(p);
+    }
+    minimal->Update();
+    errors->ThrowIfAny("the minimal geodesics failed:");
+  }
   WriteAtomically(args.Output,
     [&](const std::string& temporary)
     {
@@ -196,6 +228,16 @@ void RunDistance(const DistanceArguments& args)
   {
     WritePolyDataAtomically(cut->GetOutput(), args.CutLocus, args.Compress);
   }
+  if (!args.Geodesics.empty())
+  {
+    vtkPolyData* lines = minimal->GetOutput();
+    WriteAtomically(args.Geodesics,
+      [&](const std::string& temporary)
+      {
+        return geodesicsExtension == "csv" ? WriteGeodesicCsv(lines, temporary)
+                                           : WritePolyDataFile(lines, temporary, args.Compress);
+      });
+  }
   std::cerr << "riemann distance: " << dims[0] << "x" << dims[1] << "x" << dims[2] << " grid, "
             << seeds.size() / 3 << " seed(s): " << DescribeRange(image) << "; "
             << field->GetNumberOfRounds() << " rounds, " << field->GetNumberOfUpdates()
@@ -205,6 +247,17 @@ void RunDistance(const DistanceArguments& args)
   {
     std::cerr << "; cut locus " << cut->GetOutput()->GetNumberOfPolys() << " squares -> "
               << args.CutLocus;
+  }
+  if (!args.Geodesics.empty())
+  {
+    std::cerr << "; " << minimal->GetOutput()->GetNumberOfLines() << " of " << args.Targets.size()
+              << " minimal geodesic(s)";
+    if (minimal->GetNumberOfUnrefined() > 0)
+    {
+      std::cerr << " (" << minimal->GetNumberOfUnrefined()
+                << " not refined by Newton: the descent path instead)";
+    }
+    std::cerr << " -> " << args.Geodesics;
   }
   std::cerr << "\n";
 }
@@ -239,6 +292,14 @@ void RegisterDistanceCommand(CLI::App& app)
       "Smallest turn of the arrival direction, in degrees, that the cut locus counts as a jump "
       "(default 20)")
     ->check(FiniteNumber(0.0, 180.0, true, true));
+  command
+    ->add_option("--to", args->Targets,
+      "A point X,Y,Z whose minimal geodesic back to its closest seed is wanted (with "
+      "--geodesics); repeat it for several")
+    ->check(Point3());
+  command->add_option("--geodesics", args->Geodesics,
+    "Write the minimal geodesics from the seeds to the --to points (.vtp or .csv as trace writes "
+    "them: the descent along the field, refined by Newton with the Jacobi fields)");
   AddCompressOption(command, args->Compress);
   command
     ->add_option("--output,-o", args->Output,

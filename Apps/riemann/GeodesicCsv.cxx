@@ -32,6 +32,10 @@ bool WriteGeodesicCsv(vtkPolyData* lines, const std::string& path)
   vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
   vtkDataArray* velocity = lines->GetPointData()->GetArray("Velocity");
   vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
+  if (!arcLength || !velocity)
+  {
+    return false; // not geodesics as the filters make them: a bug of the caller
+  }
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
   auto iterator = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
@@ -40,7 +44,8 @@ bool WriteGeodesicCsv(vtkPolyData* lines, const std::string& path)
        iterator->GoToNextCell(), ++cell)
   {
     iterator->GetCurrentCell(count, ids);
-    const long long seed = static_cast<long long>(seedIds->GetTuple1(cell));
+    // Lines without SeedIds (vtkRiemannMinimalGeodesics') are numbered in order.
+    const long long seed = seedIds ? static_cast<long long>(seedIds->GetTuple1(cell)) : cell;
     for (vtkIdType k = 0; k < count; ++k)
     {
       double p[3], v[3];

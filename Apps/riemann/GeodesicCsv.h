@@ -16,8 +16,9 @@ namespace riemann
 {
 namespace cli
 {
-/// Write `lines` (cell data SeedIds, point data ArcLength and Velocity) to
-/// `path`; false when the file cannot be written whole.
+/// Write `lines` (point data ArcLength and Velocity; cell data SeedIds gives
+/// seed_id, else the line's number) to `path`; false when the file cannot be
+/// written whole or a point array is missing.
 bool WriteGeodesicCsv(vtkPolyData* lines, const std::string& path);
 } // namespace cli
 } // namespace riemann

@@ -17,6 +17,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannMetric.h"
+#include "vtkRiemannDistanceImage.h"
 #include "vtkRiemannReportError.h"
 
 #include <cmath>
@@ -48,48 +49,9 @@ int vtkRiemannCutLocus::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-namespace
-{
-/// The core's field from the image's arrays (NaN distances: unreached).
-bool FieldOf(vtkImageData* image, riemann::DistanceGrid& grid, riemann::DistanceFieldResult& field)
-{
-  vtkPointData* pd = image->GetPointData();
-  vtkDataArray* distance = pd->GetArray("Distance");
-  vtkDataArray* direction = pd->GetArray("ArrivalDirection");
-  vtkDataArray* seed = pd->GetArray("SeedId");
-  if (!distance || !direction || !seed || direction->GetNumberOfComponents() != 3)
-  {
-    return false;
-  }
-  double origin[3], spacing[3];
-  int dims[3];
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  image->GetDimensions(dims);
-  const int* extent = image->GetExtent();
-  for (int a = 0; a < 3; ++a)
-  {
-    grid.Origin[a] = origin[a] + extent[2 * a] * spacing[a];
-    grid.Spacing[a] = spacing[a];
-    grid.Dimensions[static_cast<std::size_t>(a)] = dims[a];
-  }
-  const vtkIdType count = image->GetNumberOfPoints();
-  field.Distance.resize(static_cast<std::size_t>(count));
-  field.ArrivalDirection.resize(3 * static_cast<std::size_t>(count));
-  field.SeedId.resize(static_cast<std::size_t>(count));
-  for (vtkIdType n = 0; n < count; ++n)
-  {
-    const double u = distance->GetTuple1(n);
-    field.Distance[static_cast<std::size_t>(n)] =
-      std::isfinite(u) ? u : std::numeric_limits<double>::infinity();
-    direction->GetTuple(n, field.ArrivalDirection.data() + 3 * n);
-    field.SeedId[static_cast<std::size_t>(n)] = static_cast<int>(seed->GetTuple1(n));
-  }
-  return true;
-}
-} // namespace
 
-// RequestData as named steps: FieldOf -> ExtractCutLocus -> the squares.
+// RequestData as named steps: vtkRiemannReadDistanceImage -> ExtractCutLocus ->
+// the squares.
 int vtkRiemannCutLocus::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -107,7 +69,7 @@ int vtkRiemannCutLocus::RequestData(
   }
   riemann::DistanceGrid grid;
   riemann::DistanceFieldResult field;
-  if (!input || !FieldOf(input, grid, field))
+  if (!input || !vtkRiemannReadDistanceImage(input, grid, field))
   {
     vtkRiemannReportErrorMacro(this->LastError,
       << "The input must be a distance field: point arrays Distance, ArrivalDirection (3 "

@@ -3,6 +3,7 @@
 #include "DistanceField.h"
 #include "Metric.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -158,6 +159,13 @@ bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDa
     direction->SetTuple(n, result.ArrivalDirection.data() + 3 * n);
     seedId->SetValue(n, result.SeedId[static_cast<std::size_t>(n)]);
   }
+  // The seeds, for those who walk back to them (vtkRiemannMinimalGeodesics).
+  vtkSmartPointer<vtkDoubleArray> seedPoints = NewPointArray("Seeds", 3, this->GetNumberOfSeeds());
+  for (int s = 0; s < this->GetNumberOfSeeds(); ++s)
+  {
+    seedPoints->SetTuple(s, this->Seeds.data() + 3 * s);
+  }
+  image->GetFieldData()->AddArray(seedPoints);
   vtkPointData* pd = image->GetPointData();
   pd->AddArray(distance);
   pd->AddArray(direction);

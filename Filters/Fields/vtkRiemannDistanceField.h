@@ -16,8 +16,10 @@
  *   (pointing away from the seed): the direction the wavefront moves;
  * - `SeedId`: which seed is closest (0, 1, ... in AddSeed's order; -1 where
  *   unreached): the seeds' Voronoi regions in g.
- * Its level sets are the true wavefronts of the metric; vtkRiemannCutLocus
- * extracts where ArrivalDirection jumps (the cut locus of the seeds).
+ * Field data `Seeds` holds the seeds (3 components, in SeedId's order). Its
+ * level sets are the true wavefronts of the metric; vtkRiemannCutLocus
+ * extracts where ArrivalDirection jumps (the cut locus of the seeds), and
+ * vtkRiemannMinimalGeodesics walks back from any point to its seed.
  *
  * Unlike the other field filters it is computed on the whole grid at once
  * (a point's distance depends on the whole grid between it and its seed): it

@@ -718,9 +718,11 @@ class DistanceTests(unittest.TestCase):
         seeds = os.path.join(self.dir, "seeds.csv")
         with open(seeds, "w") as f:
             f.write("x,y,z\n0.5,0.1,0.2\n")
+        lines = os.path.join(self.dir, "g.csv")
         status, _, err = run("distance", "-m", os.path.join(METRICS, "twist.json"), "--seed", "-0.5,0,-0.1",
                              "--seeds", seeds, "--bounds", "-1,1,-1,1,-1,1", "--dims", "25,25,25",
-                             "-o", out, "--cut-locus", cut)
+                             "-o", out, "--cut-locus", cut, "--to", "0.9,0.8,0.7", "--to", "-0.9,0.2,-0.3",
+                             "--geodesics", lines)
         self.assertEqual(status, 0, err)
         self.assertIn("2 seed(s)", err)
         points, distance, seed_id = self.read(out)
@@ -733,6 +735,18 @@ class DistanceTests(unittest.TestCase):
         clear = np.abs(exact[0] - exact[1]) > 0.2
         self.assertTrue((seed_id[clear] == exact.argmin(axis=0)[clear]).all())
         self.assertTrue(os.path.getsize(cut) > 0)
+        # The minimal geodesics: one per --to point, from its closer seed to it.
+        with open(lines) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(sorted({r["seed_id"] for r in rows}), ["0", "1"])
+        for seed_id, target, seed in (("0", (0.9, 0.8, 0.7), (0.5, 0.1, 0.2)),
+                                      ("1", (-0.9, 0.2, -0.3), (-0.5, 0, -0.1))):
+            line = [r for r in rows if r["seed_id"] == seed_id]
+            self.assertEqual(tuple(float(line[0][k]) for k in "xyz"), seed)
+            for k, v in zip("xyz", target):
+                self.assertAlmostEqual(float(line[-1][k]), v, delta=1e-8)
+            exact = float(np.linalg.norm(phi(np.array([target])) - phi(np.array([seed]))))
+            self.assertAlmostEqual(float(line[-1]["t"]), exact, delta=1e-8)
 
     def test_bad_input_is_refused_before_any_work(self):
         out = os.path.join(self.dir, "d.vti")
@@ -741,7 +755,8 @@ class DistanceTests(unittest.TestCase):
                             (["--seed", "3,0,0"], "outside --bounds"),
                             (["--seed", "0,0,0", "--dims", "2,2,1"], "--dims 2,2,1: the distance needs at least 2 points"),
                             (["--seed", "0,0,0", "--seed-radius", "50"], "--seed-radius"),
-                            (["--seed", "0,0,0", "--cut-locus", os.path.join(self.dir, "c.vti")], "must be a .vtp")):
+                            (["--seed", "0,0,0", "--cut-locus", os.path.join(self.dir, "c.vti")], "must be a .vtp"),
+                            (["--seed", "0,0,0", "--to", "1,1,1"], "--to and --geodesics go together")):
             with self.subTest(args=args):
                 status, _, err = run("distance", "-m", twist, *args, "-o", out)
                 self.assertEqual(status, 2, err)

@@ -104,6 +104,43 @@ class DistanceFieldTests(unittest.TestCase):
             checked += 1
         self.assertGreaterEqual(checked, 5)
 
+    def test_minimal_geodesics_are_the_twists_straight_lines(self):
+        # Two seeds; each target's geodesic comes from its closer seed (in
+        # the twist's flat geometry) and, refined by Newton, has exactly the
+        # mapped length; the field's distance there is within its error.
+        seeds = np.array([[-0.6, 0.1, -0.2], [0.6, -0.1, 0.3]])
+        targets = np.array([[-0.2, 0.7, 0.5], [0.9, 0.8, -0.7], [0.1, -0.9, 0.8], [-0.9, -0.8, -0.9]])
+        field = riemann.vtkRiemannDistanceField()
+        twist_metric = metric(TWIST)
+        field.SetMetric(twist_metric)
+        field.SetBounds(-1, 1, -1, 1, -1, 1)
+        field.SetDimensions(33, 33, 33)
+        for seed in seeds:
+            field.AddSeed(*seed)
+        minimal = riemann.vtkRiemannMinimalGeodesics()
+        minimal.SetMetric(twist_metric)
+        minimal.SetInputConnection(field.GetOutputPort())
+        for target in targets:
+            minimal.AddTarget(*target)
+        minimal.Update()
+        self.assertEqual(minimal.GetLastError(), "")
+        lines = minimal.GetOutput()
+        self.assertEqual(lines.GetNumberOfLines(), len(targets))
+        cd = lines.GetCellData()
+        exact = np.linalg.norm(twist(targets)[:, None] - twist(seeds)[None], axis=2)
+        self.assertEqual(list(vtk_to_numpy(cd.GetArray("SeedId"))), list(exact.argmin(axis=1)))
+        self.assertTrue((vtk_to_numpy(cd.GetArray("Refined")) == 1).all())
+        np.testing.assert_allclose(vtk_to_numpy(cd.GetArray("Length")), exact.min(axis=1), atol=1e-8)
+        np.testing.assert_allclose(vtk_to_numpy(cd.GetArray("Distance")), exact.min(axis=1), atol=0.04)
+        # Each line runs from its seed to its target.
+        ids = vtk_to_numpy(lines.GetLines().GetConnectivityArray())
+        offsets = vtk_to_numpy(lines.GetLines().GetOffsetsArray())
+        points = vtk_to_numpy(lines.GetPoints().GetData())
+        for line, target in enumerate(targets):
+            first, last = ids[offsets[line]], ids[offsets[line + 1] - 1]
+            np.testing.assert_allclose(points[first], seeds[exact[line].argmin()], atol=1e-15)
+            np.testing.assert_allclose(points[last], target, atol=1e-8)
+
     def test_errors_leave_an_empty_output(self):
         field = riemann.vtkRiemannDistanceField()
         field.SetMetric(metric(TWIST))
@@ -120,6 +157,12 @@ class DistanceFieldTests(unittest.TestCase):
         cut.SetInputData(empty)
         cut.Update()
         self.assertIn("must be a distance field", cut.GetLastError())
+        minimal = riemann.vtkRiemannMinimalGeodesics()
+        minimal.SetMetric(metric(TWIST))
+        minimal.SetInputData(empty)
+        minimal.AddTarget(0, 0, 0)
+        minimal.Update()
+        self.assertIn("must be a distance field", minimal.GetLastError())
 
 
 if __name__ == "__main__":

@@ -1,0 +1,79 @@
+/**
+ * @class   vtkRiemannMinimalGeodesics
+ * @brief   The minimal geodesic from each target point back to its closest
+ *          seed, from a distance field.
+ *
+ * Input: the image of vtkRiemannDistanceField (point data Distance,
+ * ArrivalDirection, SeedId; field data Seeds). For each target (AddTarget)
+ * the filter walks back along the arrival directions to the target's
+ * closest seed (riemann::DescendToSeed, DistanceDescent.h: the steepest
+ * descent of the distance, within the field's first-order error), then
+ * refines that path into a geodesic by Newton's method on its initial
+ * direction and length at the seed (riemann::RefineConnection,
+ * GeodesicConnector.h: the Jacobi fields give the exact derivative), to
+ * |end - target| <= Tolerance.
+ *
+ * Output: one polyline per target reached, from its seed to the target,
+ * with point data `ArcLength` and `Velocity` (as vtkRiemannGeodesicTracer's),
+ * and cell data `TargetIds` (AddTarget's
+ * order), `SeedId` (its closest seed, as the field's array), `Length` (the geodesic's arc length, or the
+ * field's distance where Newton failed), `Distance` (the field's value at
+ * the target: Length - Distance is the field's error there) and `Refined`
+ * (1: a geodesic to the tolerance; 0: Newton failed and the line is the
+ * descent path). The integration settings are the connector's (adaptive,
+ * steps of at most 0.1). Targets outside the grid or unreached give no
+ * line. Without a metric or a distance field it reports an error
+ * (GetLastError) and produces empty output; progress and AbortExecute are
+ * honoured between batches of targets.
+ */
+#ifndef vtkRiemannMinimalGeodesics_h
+#define vtkRiemannMinimalGeodesics_h
+
+#include "RiemannFiltersGeodesicsModule.h" // For export macro
+#include "vtkRiemannGeodesicAlgorithm.h"
+
+
+#include <vector> // For the targets
+
+class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannMinimalGeodesics : public vtkRiemannGeodesicAlgorithm
+{
+public:
+  static vtkRiemannMinimalGeodesics* New();
+  vtkTypeMacro(vtkRiemannMinimalGeodesics, vtkRiemannGeodesicAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The points whose minimal geodesics are wanted (TargetIds numbers them).
+  void AddTarget(double x, double y, double z);
+  void AddTarget(const double point[3]) { this->AddTarget(point[0], point[1], point[2]); }
+  void RemoveAllTargets();
+  int GetNumberOfTargets() const { return static_cast<int>(this->Targets.size() / 3); }
+  ///@}
+
+  ///@{
+  /// |end - target| each refined geodesic reaches, in [1e-13, 1e-2]. Default 1e-9.
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  /// Targets whose descent Newton could not refine, in the last execution.
+  vtkGetMacro(NumberOfUnrefined, int);
+
+protected:
+  vtkRiemannMinimalGeodesics();
+  ~vtkRiemannMinimalGeodesics() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  std::vector<double> Targets;
+  double Tolerance = 1e-9;
+  int NumberOfUnrefined = 0;
+
+private:
+  vtkRiemannMinimalGeodesics(const vtkRiemannMinimalGeodesics&) = delete;
+  void operator=(const vtkRiemannMinimalGeodesics&) = delete;
+};
+
+#endif
