@@ -70,6 +70,9 @@ struct MinimalGeodesic
   double Length = 0.0;
   double Distance = 0.0;
   bool Refined = false;
+  /// Found by shooting (ConnectPoints), Newton from the descent having
+  /// found a longer geodesic or none.
+  bool Shot = false;
 };
 
 /// The descent from `target`, then Newton from its start at the seed.
@@ -105,7 +108,32 @@ MinimalGeodesic FindOne(const riemann::Metric& metric, const riemann::DistanceGr
   riemann::ConnectingGeodesic geodesic;
   riemann::ConnectOptions options = connect;
   options.MaximumLength = 1.5 * descent.Distance + 1.0;
-  if (riemann::RefineConnection(metric, seed, target, candidate, options, geodesic))
+  bool refined = riemann::RefineConnection(metric, seed, target, candidate, options, geodesic);
+  // Newton may find a geodesic that is not minimal: from a point on the cut
+  // locus the descent can run along it (over a bump's top, between the two
+  // minimal ways round). Longer than the field's distance by more than half
+  // a spacing, it is checked against every geodesic shooting finds.
+  const double slack = 0.5 * grid.Spacing.maxCoeff();
+  if (!refined || geodesic.Length > descent.Distance + slack)
+  {
+    options.MaximumLength = 1.2 * descent.Distance + 2.0 * grid.Spacing.maxCoeff();
+    try
+    {
+      const std::vector<riemann::ConnectingGeodesic> all =
+        riemann::ConnectPoints(metric, seed, target, options);
+      if (!all.empty() && (!refined || all.front().Length < geodesic.Length))
+      {
+        geodesic = all.front();
+        refined = true;
+        found.Shot = true;
+      }
+    }
+    catch (const std::invalid_argument&)
+    {
+      // The target is the seed itself: the descent is its answer.
+    }
+  }
+  if (refined)
   {
     riemann::TraceConnection(metric, seed, geodesic, options, found.Path);
     found.Length = geodesic.Length;
@@ -173,7 +201,7 @@ void BuildLines(const std::vector<MinimalGeodesic>& found, vtkPolyData* output)
     seedIds->InsertNextValue(g.Seed);
     length->InsertNextValue(g.Length);
     distance->InsertNextValue(g.Distance);
-    refined->InsertNextValue(g.Refined ? 1 : 0);
+    refined->InsertNextValue(g.Shot ? 2 : g.Refined ? 1 : 0);
   }
   output->SetPoints(points);
   output->SetLines(lines);

@@ -14,17 +14,22 @@
  * |end - target| <= Tolerance.
  *
  * Output: one polyline per target reached, from its seed to the target,
- * with point data `ArcLength` and `Velocity` (as vtkRiemannGeodesicTracer's),
- * and cell data `TargetIds` (AddTarget's
- * order), `SeedId` (its closest seed, as the field's array), `Length` (the geodesic's arc length, or the
- * field's distance where Newton failed), `Distance` (the field's value at
+ * with point data `ArcLength` and `Velocity` (as vtkRiemannGeodesicTracer's)
+ * and cell data `TargetIds` (AddTarget's order), `SeedId` (its closest seed,
+ * as the field's array), `Length` (the geodesic's arc length, or the field's
+ * distance where no geodesic was found), `Distance` (the field's value at
  * the target: Length - Distance is the field's error there) and `Refined`
- * (1: a geodesic to the tolerance; 0: Newton failed and the line is the
- * descent path). The integration settings are the connector's (adaptive,
- * steps of at most 0.1). Targets outside the grid or unreached give no
- * line. Without a metric or a distance field it reports an error
- * (GetLastError) and produces empty output; progress and AbortExecute are
- * honoured between batches of targets.
+ * (1: Newton from the descent, to the tolerance; 2: found by shooting; 0:
+ * no geodesic, the line is the descent path). When Newton's geodesic is
+ * longer than the field's distance by more than half a grid spacing, or
+ * Newton fails, the target is also joined by shooting (riemann::ConnectPoints,
+ * as vtkRiemannGeodesicConnector) and the shortest geodesic kept: from a
+ * point on the cut locus the descent can run along it, between the minimal
+ * ways, to a longer geodesic (over a bump's top). The integration settings
+ * are the connector's (adaptive, steps of at most 0.1). Targets outside the
+ * grid or unreached give no line. Without a metric or a distance field it
+ * reports an error (GetLastError) and produces empty output; progress and
+ * AbortExecute are honoured between batches of targets.
  */
 #ifndef vtkRiemannMinimalGeodesics_h
 #define vtkRiemannMinimalGeodesics_h
