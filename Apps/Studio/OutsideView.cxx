@@ -10,6 +10,7 @@
 #include "vtkAssembly.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellPicker.h"
 #include "vtkCellArray.h"
 #include "vtkHandleWidget.h"
 #include "vtkInteractorStyleTrackballCamera.h"
@@ -116,6 +117,22 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
   this->RayEndActor->VisibilityOff();
   this->SceneRenderer->AddActor(this->RayActor);
   this->SceneRenderer->AddActor(this->RayEndActor);
+
+  // Ctrl+click picks a point; any other click goes on to the camera.
+  this->PickCommand->SetClientData(this);
+  this->PickCommand->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
+    auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+    if (!interactor->GetControlKey())
+    {
+      return;
+    }
+    auto* self = static_cast<OutsideView*>(clientData);
+    const int* position = interactor->GetEventPosition();
+    self->PickPoint(position[0], position[1]);
+    // Taken: the interactor style (a lower priority) does not rotate the camera.
+    self->PickCommand->SetAbortFlag(1);
+  });
+  this->interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, this->PickCommand, 1.0);
 
   for (const auto& item : document->Items())
   {
@@ -326,6 +343,35 @@ void OutsideView::ShowPickedRay(vtkPolyData* ray)
 vtkPolyData* OutsideView::PickedRay() const
 {
   return this->Ray;
+}
+
+void OutsideView::PickPoint(int x, int y)
+{
+  double point[3];
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.002);
+  if (picker->Pick(x, y, 0.0, this->SceneRenderer))
+  {
+    picker->GetPickPosition(point);
+  }
+  else
+  {
+    // Nothing drawn there: the plane through the focal point, facing the camera.
+    double focal[4];
+    this->SceneRenderer->GetActiveCamera()->GetFocalPoint(focal);
+    focal[3] = 1.0;
+    this->SceneRenderer->SetWorldPoint(focal);
+    this->SceneRenderer->WorldToDisplay();
+    const double depth = this->SceneRenderer->GetDisplayPoint()[2];
+    this->SceneRenderer->SetDisplayPoint(x, y, depth);
+    this->SceneRenderer->DisplayToWorld();
+    const double* world = this->SceneRenderer->GetWorldPoint();
+    for (int a = 0; a < 3; ++a)
+    {
+      point[a] = world[a] / world[3];
+    }
+  }
+  Q_EMIT this->PointPicked(point[0], point[1], point[2]);
 }
 
 vtkPolyData* OutsideView::Frustum() const

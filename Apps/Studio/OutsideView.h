@@ -6,13 +6,16 @@
  *
  * The eye is a handle: dragging it moves the observer (position and look-at
  * point together), so the inside view follows; navigating the inside view
- * moves the eye here.
+ * moves the eye here. Ctrl+click picks a point (on what is drawn there, else
+ * on the plane through the camera's focal point): PointPicked, which the
+ * selected item may take (the connector's ends, the distance field's seed).
  */
 #ifndef RiemannStudio_OutsideView_h
 #define RiemannStudio_OutsideView_h
 
 #include "QVTKOpenGLNativeWidget.h"
 
+#include "vtkCallbackCommand.h" // For vtkNew<vtkCallbackCommand>
 #include "vtkNew.h"
 #include "vtkTubeFilter.h" // For vtkNew<vtkTubeFilter>
 
@@ -56,6 +59,16 @@ public:
   /// The observer's frustum as drawn (for tests and inspection).
   vtkPolyData* Frustum() const;
 
+  /**
+   * The point under display position (x, y) (pixels, origin at the bottom
+   * left): on the nearest drawn geometry, else on the plane through the
+   * focal point facing the camera. Emits PointPicked. Ctrl+click calls it.
+   */
+  void PickPoint(int x, int y);
+
+Q_SIGNALS:
+  void PointPicked(double x, double y, double z);
+
 private:
   void AddItem(PipelineItem* item);
   void RemoveItem(PipelineItem* item);
@@ -76,6 +89,7 @@ private:
   vtkNew<vtkActor> RayActor;
   vtkNew<vtkSphereSource> RayEnd;
   vtkNew<vtkActor> RayEndActor;
+  vtkNew<vtkCallbackCommand> PickCommand;
   bool MovingEye = false;
   bool RenderPending = false;
 };

@@ -164,6 +164,17 @@ public:
   /// Names of the result's arrays that colouring may use.
   QStringList ColorArrays() const;
 
+  /**
+   * A point Ctrl+clicked in the outside view while this item is selected.
+   * An item that places points takes it (the connector's ends, the distance
+   * field's seed) and returns true; the others return false.
+   */
+  virtual bool TakePickedPoint(const double point[3])
+  {
+    (void)point;
+    return false;
+  }
+
 Q_SIGNALS:
   /// needsRun: the job's settings changed (not only the display).
   void SettingsChanged(bool needsRun);

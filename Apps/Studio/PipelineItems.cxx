@@ -6,7 +6,8 @@ namespace studio
 {
 std::vector<std::string> PipelineItemKinds()
 {
-  return { "geodesics", "ray-bundle", "exponential-map", "conjugate-locus", "field" };
+  return { "geodesics", "ray-bundle", "exponential-map", "conjugate-locus", "field",
+    "distance-field", "connect" };
 }
 
 QString PipelineItemLabel(const std::string& kind)
@@ -31,7 +32,21 @@ QString PipelineItemLabel(const std::string& kind)
   {
     return QStringLiteral("Field");
   }
+  if (kind == "distance-field")
+  {
+    return QStringLiteral("Distance Field");
+  }
+  if (kind == "connect")
+  {
+    return QStringLiteral("Connection");
+  }
   return QString();
+}
+
+QString PipelineItemAction(const std::string& kind)
+{
+  // The connector is asked for by what it does, as the issue names it.
+  return kind == "connect" ? QStringLiteral("Connect Two Points") : "Add " + PipelineItemLabel(kind);
 }
 
 std::unique_ptr<PipelineItem> MakePipelineItem(const std::string& kind, const QString& name)
@@ -55,6 +70,14 @@ std::unique_ptr<PipelineItem> MakePipelineItem(const std::string& kind, const QS
   if (kind == "field")
   {
     return std::make_unique<FieldItem>(name);
+  }
+  if (kind == "distance-field")
+  {
+    return std::make_unique<DistanceFieldItem>(name);
+  }
+  if (kind == "connect")
+  {
+    return std::make_unique<ConnectItem>(name);
   }
   return nullptr;
 }

@@ -9,6 +9,8 @@
  * | exponential-map   | vtkRiemannExponentialMap                | rays + geodesic spheres (wavefronts) at chosen radii |
  * | conjugate-locus   | vtkRiemannConjugateLocus                | conjugate points + caustic surfaces |
  * | field             | vtkRiemannCurvatureField / VolumeForm / MetricTensorField | slice, isosurface or tensor glyphs |
+ * | distance-field    | vtkRiemannDistanceField (+ vtkRiemannCutLocus) | a slice coloured by distance, its wavefronts, the cut locus |
+ * | connect           | vtkRiemannGeodesicConnector             | every geodesic between two points, as the picked ray |
  */
 #ifndef RiemannStudio_PipelineItems_h
 #define RiemannStudio_PipelineItems_h
@@ -17,6 +19,8 @@
 
 #include "vtkActor.h" // For vtkNew<vtkActor>
 #include "vtkNew.h"
+#include "vtkSphereSource.h" // For vtkNew<vtkSphereSource>
+#include "vtkTubeFilter.h"   // For vtkNew<vtkTubeFilter>
 
 #include <memory>
 
@@ -28,6 +32,8 @@ namespace studio
 /// The kinds, in the Add menu's order, and their menu labels.
 std::vector<std::string> PipelineItemKinds();
 QString PipelineItemLabel(const std::string& kind);
+/// The Pipeline menu's and toolbar's text: "Add Distance Field", "Connect Two Points".
+QString PipelineItemAction(const std::string& kind);
 /// A new item of `kind` with default settings (null for an unknown kind).
 std::unique_ptr<PipelineItem> MakePipelineItem(const std::string& kind, const QString& name);
 
@@ -126,6 +132,55 @@ protected:
 
 private:
   vtkNew<vtkActor> Surface;
+};
+
+class DistanceFieldItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit DistanceFieldItem(const QString& name);
+  std::string Kind() const override { return "distance-field"; }
+  std::string FilterClass() const override { return "vtkRiemannDistanceField"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool IsLongJob() const override { return true; }
+  bool TakePickedPoint(const double point[3]) override;
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkActor> Slice;
+  vtkNew<vtkActor> Wavefronts;
+  vtkNew<vtkActor> CutLocus;
+  vtkNew<vtkActor> SeedBall;
+  vtkNew<vtkSphereSource> Seed;
+};
+
+class ConnectItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit ConnectItem(const QString& name);
+  std::string Kind() const override { return "connect"; }
+  std::string FilterClass() const override { return "vtkRiemannGeodesicConnector"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool IsLongJob() const override { return true; }
+  bool TakePickedPoint(const double point[3]) override;
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkTubeFilter> Tubes;
+  vtkNew<vtkActor> Lines;
+  vtkNew<vtkSphereSource> End;
+  vtkNew<vtkActor> EndBall;
+  /// The next Ctrl+click sets To (else From).
+  bool PickTo = false;
 };
 }
 }

@@ -124,6 +124,8 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   this->BuildStatusBar();
   this->BuildMenus();
 
+  // Ctrl+click in the outside view places the selected item's points.
+  QObject::connect(this->OutsideWidget, &OutsideView::PointPicked, this, &StudioMainWindow::PlacePoint);
   // The link between the views: a picked pixel's ray appears outside.
   QObject::connect(this->InsideWidget, &InsideView::PixelPicked, this, &StudioMainWindow::PickPixel);
   QObject::connect(this->InsideWidget, &InsideView::RenderFailed, this,
@@ -375,7 +377,7 @@ void StudioMainWindow::BuildMenus()
   tools->setObjectName("PipelineToolBar");
   for (const std::string& kind : PipelineItemKinds())
   {
-    QAction* add = pipeline->addAction("Add " + PipelineItemLabel(kind), this,
+    QAction* add = pipeline->addAction(PipelineItemAction(kind), this,
       [this, kind]() { this->Doc->AddItem(kind); });
     add->setObjectName(QString::fromStdString("Add:" + kind));
     tools->addAction(add);
@@ -517,6 +519,26 @@ void StudioMainWindow::ShowInsideViewSettings()
       this->Doc->ObserverChanged(); // ray bundles follow the new settings
       return QString();
     });
+}
+
+void StudioMainWindow::PlacePoint(double x, double y, double z)
+{
+  PipelineItem* item = this->BrowserWidget->SelectedItem();
+  const double point[3] = { x, y, z };
+  if (!item || !item->TakePickedPoint(point))
+  {
+    this->ShowMessage(QStringLiteral("Ctrl+click places the points of a Connection (From, then "
+                                     "To) or a Distance Field (its seed): select one first"),
+      false);
+    return;
+  }
+  this->ShowMessage(QStringLiteral("%1: point (%2, %3, %4)")
+                      .arg(item->Name())
+                      .arg(x, 0, 'g', 4)
+                      .arg(y, 0, 'g', 4)
+                      .arg(z, 0, 'g', 4),
+    false);
+  this->ShowSelection(); // the form shows the new point
 }
 
 void StudioMainWindow::PickPixel(int column, int row)

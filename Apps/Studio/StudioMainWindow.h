@@ -89,6 +89,8 @@ public:
 
   /// Pick pixel (column, row) of the inside view: trace its ray, show it.
   void PickPixel(int column, int row);
+  /// A point Ctrl+clicked in the outside view: the selected item's to place.
+  void PlacePoint(double x, double y, double z);
   /// The last picked ray (vtkRiemannRayBundle's output for that pixel).
   vtkPolyData* PickedRay() const { return this->Picked; }
   /// The status bar's text.

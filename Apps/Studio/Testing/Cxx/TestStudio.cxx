@@ -53,6 +53,7 @@
 #include <QTemporaryDir>
 #include <QtTest/QtTest>
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -204,6 +205,7 @@ private Q_SLOTS:
   void BadProjectIsRefusedWithDialog();
   void ProjectIntegrationFollowsTheSchema();
   void InsideViewFormFollowsThePictureSchema();
+  void DistanceFieldAndConnectionFromPickedPoints();
   void PropertiesRefuseBadValues();
   void PythonTraceRebuildsPipeline();
   void CommandLineScreenshot();
@@ -872,6 +874,76 @@ void TestStudio::ExportsWriteWholeFiles()
   QCOMPARE(window->SaveScreenshot(both, StudioMainWindow::BothShot), QString());
   const QImage shot(both);
   QCOMPARE(shot.width(), window->Inside()->Capture().width() + window->Outside()->Capture().width());
+}
+
+void TestStudio::DistanceFieldAndConnectionFromPickedPoints()
+{
+  // "Add Distance Field" and "Connect Two Points" on the round 3-sphere:
+  // Ctrl+click in the outside view places the distance field's seed and the
+  // connection's ends; the connection finds both arcs of the great circle
+  // (lengths d and 2 pi - d), the field's distance at the far point is d.
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QFile metric(DataFile("metrics/round-sphere.json"));
+  QVERIFY(metric.open(QIODevice::ReadOnly));
+  QCOMPARE(window->Editor()->SetText(QString::fromUtf8(metric.readAll())), QString());
+  QVERIFY(window->findChild<QAction*>("Add:distance-field"));
+  QCOMPARE(window->findChild<QAction*>("Add:connect")->text(), QString("Connect Two Points"));
+
+  PipelineItem* field = window->Document()->AddItem("distance-field");
+  QVERIFY(field->ApplySettings({ { "Dimensions", { 21, 21, 21 } } }).isEmpty());
+  window->Browser()->Select(field);
+  window->PlacePoint(0.4, 0.1, -0.2);
+  QCOMPARE(QString::fromStdString(field->Settings().at("Seed").dump()), QString("[0.4,0.1,-0.2]"));
+  PipelineItem* connection = window->Document()->AddItem("connect");
+  window->Browser()->Select(connection);
+  // From (by a real pick in the outside view: a point on the plane through
+  // its focal point, if nothing is drawn there), then To.
+  const std::string before = connection->Settings().at("StartPosition").dump();
+  window->Outside()->PickPoint(window->Outside()->width() / 2, window->Outside()->height() / 2);
+  QVERIFY(connection->Settings().at("StartPosition").dump() != before);
+  window->PlacePoint(0.0, 0.0, 0.0); // To
+  window->PlacePoint(0.4, 0.1, -0.2); // From again
+  window->PlacePoint(-0.3, 0.5, 0.6); // To again
+  QCOMPARE(QString::fromStdString(connection->Settings().at("StartPosition").dump()),
+    QString("[0.4,0.1,-0.2]"));
+  QCOMPARE(QString::fromStdString(connection->Settings().at("EndPosition").dump()),
+    QString("[-0.3,0.5,0.6]"));
+  QVERIFY(connection->ApplySettings({ { "MaximumPropagation", 7.0 }, { "NumberOfDirections", 500 } })
+            .isEmpty());
+  QVERIFY(WaitForJobs(*window, 120000));
+  // The two arcs.
+  const auto sphere = [](double x, double y, double z) {
+    const double r2 = x * x + y * y + z * z;
+    return std::array<double, 4>{ 2 * x / (1 + r2), 2 * y / (1 + r2), 2 * z / (1 + r2),
+      (1 - r2) / (1 + r2) };
+  };
+  const auto p = sphere(0.4, 0.1, -0.2), q = sphere(-0.3, 0.5, 0.6);
+  const double d = std::acos(p[0] * q[0] + p[1] * q[1] + p[2] * q[2] + p[3] * q[3]);
+  auto* arcs = vtkPolyData::SafeDownCast(connection->Result(0));
+  QVERIFY(arcs);
+  QCOMPARE(arcs->GetNumberOfLines(), vtkIdType(2));
+  vtkDataArray* length = arcs->GetCellData()->GetArray("Length");
+  QVERIFY(std::abs(length->GetTuple1(0) - d) < 1e-8);
+  QVERIFY(std::abs(length->GetTuple1(1) - (2 * 3.14159265358979323846 - d)) < 1e-8);
+  // The field, at the grid point nearest q: the distance d within its error.
+  auto* image = vtkImageData::SafeDownCast(field->Result(0));
+  QVERIFY(image && image->GetPointData()->GetArray("Distance"));
+  const double at[3] = { -0.4, 0.4, 0.6 }; // a grid point of the default bounds (spacing 0.2)
+  const vtkIdType n = image->FindPoint(at[0], at[1], at[2]);
+  const auto a = sphere(at[0], at[1], at[2]);
+  const double exact = std::acos(p[0] * a[0] + p[1] * a[1] + p[2] * a[2] + p[3] * a[3]);
+  const double u = image->GetPointData()->GetArray("Distance")->GetTuple1(n);
+  // First order on this coarse grid (h = 0.2): within h / 2 (measured 0.07).
+  QVERIFY2(std::abs(u - exact) < 0.1, qPrintable(QString("%1 vs %2").arg(u).arg(exact)));
+  // The exported script rebuilds both.
+  QTemporaryDir folder;
+  QString output;
+  QVERIFY2(RunExportedScript(*window, folder, output), qPrintable(output));
+  QVERIFY2(output.contains(QString("%1: vtkPolyData with %2 points")
+                             .arg(connection->Name())
+                             .arg(arcs->GetNumberOfPoints())),
+    qPrintable(output));
 }
 
 void TestStudio::FieldItemShowsCurvature()
