@@ -12,10 +12,8 @@
 #include "vtkActor.h"
 #include "vtkAssembly.h"
 #include "vtkContourFilter.h"
-#include "vtkCutter.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
-#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -75,19 +73,6 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
   dimensions.Help = "Grid points per axis (first order: the error halves with the spacing, up "
                     "to a logarithm)";
 
-  PropertySpec normal;
-  normal.Key = "SliceNormal";
-  normal.Label = "Slice normal";
-  normal.Type = PropertySpec::Choice;
-  normal.Choices = QStringList{ "x", "y", "z" };
-  normal.Display = true;
-
-  PropertySpec offset;
-  offset.Key = "SliceOffset";
-  offset.Label = "Slice offset";
-  offset.Help = "Distance of the slice from the grid's centre along its normal";
-  offset.Display = true;
-
   PropertySpec fronts;
   fronts.Key = "NumberOfWavefronts";
   fronts.Label = "Wavefronts";
@@ -104,7 +89,13 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
   cut.Help = "Where two minimal geodesics from the seed meet (vtkRiemannCutLocus)";
   cut.Display = true;
 
-  std::vector<PropertySpec> specs{ seed, bounds, dimensions, normal, offset, fronts, cut };
+  std::vector<PropertySpec> specs{ seed, bounds, dimensions };
+  for (const PropertySpec& spec : this->SliceProperties())
+  {
+    specs.push_back(spec);
+  }
+  specs.push_back(fronts);
+  specs.push_back(cut);
   for (const PropertySpec& spec : this->DisplayProperties())
   {
     specs.push_back(spec);
@@ -148,21 +139,7 @@ void DistanceFieldItem::UpdateDisplay()
   this->Seed->SetRadius(0.015 * (bounds[1] - bounds[0] + bounds[3] - bounds[2] + bounds[5] - bounds[4]));
 
   // The slice, coloured by the chosen array (Distance by default).
-  const std::string normal = this->Text("SliceNormal");
-  const int axis = normal == "x" ? 0 : normal == "y" ? 1 : 2;
-  double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  origin[axis] += this->Number("SliceOffset");
-  double direction[3] = { 0, 0, 0 };
-  direction[axis] = 1.0;
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(origin);
-  plane->SetNormal(direction);
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(image);
-  cutter->SetCutFunction(plane);
-  cutter->Update();
-  vtkPolyData* slice = cutter->GetOutput();
+  const vtkSmartPointer<vtkPolyData> slice = this->SliceOf(image);
   vtkPolyDataMapper::SafeDownCast(this->Slice->GetMapper())->SetInputData(slice);
   const double white[3] = { 0.9, 0.9, 0.9 };
   ApplyColoring(this->Slice, slice, this->Text("ColorArray"), this->Text("ColorMap"),

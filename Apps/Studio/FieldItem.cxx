@@ -12,11 +12,9 @@
 #include "vtkActor.h"
 #include "vtkAssembly.h"
 #include "vtkContourFilter.h"
-#include "vtkCutter.h"
 #include "vtkDataArray.h"
 #include "vtkExtractVOI.h"
 #include "vtkImageData.h"
-#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -99,27 +97,18 @@ std::vector<PropertySpec> FieldItem::Properties() const
   representation.Help = "glyphs: ellipsoids of the metric tensor (Field metric-tensor)";
   representation.Display = true;
 
-  PropertySpec normal;
-  normal.Key = "SliceNormal";
-  normal.Label = "Slice normal";
-  normal.Type = PropertySpec::Choice;
-  normal.Choices = QStringList{ "x", "y", "z" };
-  normal.Display = true;
-
-  PropertySpec offset;
-  offset.Key = "SliceOffset";
-  offset.Label = "Slice offset";
-  offset.Help = "Distance of the slice from the grid's centre along its normal";
-  offset.Display = true;
-
   PropertySpec contour;
   contour.Key = "ContourValue";
   contour.Label = "Isovalue";
   contour.Help = "Value of the colouring array (or the first scalar) on the isosurface";
   contour.Display = true;
 
-  std::vector<PropertySpec> specs{ field, bounds, dimensions, representation, normal, offset,
-    contour };
+  std::vector<PropertySpec> specs{ field, bounds, dimensions, representation };
+  for (const PropertySpec& spec : this->SliceProperties())
+  {
+    specs.push_back(spec);
+  }
+  specs.push_back(contour);
   for (const PropertySpec& spec : this->DisplayProperties())
   {
     specs.push_back(spec);
@@ -215,23 +204,7 @@ void FieldItem::UpdateDisplay()
   }
   else
   {
-    const std::string normal = this->Text("SliceNormal");
-    const int axis = normal == "x" ? 0 : normal == "y" ? 1 : 2;
-    double bounds[6];
-    image->GetBounds(bounds);
-    double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-      0.5 * (bounds[4] + bounds[5]) };
-    origin[axis] += this->Number("SliceOffset");
-    double direction[3] = { 0, 0, 0 };
-    direction[axis] = 1.0;
-    vtkNew<vtkPlane> plane;
-    plane->SetOrigin(origin);
-    plane->SetNormal(direction);
-    vtkNew<vtkCutter> cutter;
-    cutter->SetInputData(image);
-    cutter->SetCutFunction(plane);
-    cutter->Update();
-    shown = cutter->GetOutput();
+    shown = this->SliceOf(image);
   }
   vtkPolyDataMapper::SafeDownCast(this->Surface->GetMapper())->SetInputData(shown);
   const double white[3] = { 0.9, 0.9, 0.9 };

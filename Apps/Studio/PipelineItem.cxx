@@ -6,6 +6,10 @@
 #include "ColorMaps.h"
 #include "IntegrationValues.h"
 
+#include "vtkCutter.h"
+#include "vtkImageData.h"
+#include "vtkPlane.h"
+#include "vtkPolyData.h"
 #include "vtkNew.h"
 #include "vtkRiemannIntegrationSettings.h"
 
@@ -434,6 +438,44 @@ std::vector<std::string> PipelineItem::ObserverConePythonLines(const std::string
     var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
     var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
   };
+}
+
+std::vector<PropertySpec> PipelineItem::SliceProperties() const
+{
+  PropertySpec normal;
+  normal.Key = "SliceNormal";
+  normal.Label = "Slice normal";
+  normal.Type = PropertySpec::Choice;
+  normal.Choices = QStringList{ "x", "y", "z" };
+  normal.Display = true;
+
+  PropertySpec offset;
+  offset.Key = "SliceOffset";
+  offset.Label = "Slice offset";
+  offset.Help = "Distance of the slice from the grid's centre along its normal";
+  offset.Display = true;
+  return { normal, offset };
+}
+
+vtkSmartPointer<vtkPolyData> PipelineItem::SliceOf(vtkImageData* image) const
+{
+  const std::string normal = this->Text("SliceNormal");
+  const int axis = normal == "x" ? 0 : normal == "y" ? 1 : 2;
+  double bounds[6];
+  image->GetBounds(bounds);
+  double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  origin[axis] += this->Number("SliceOffset");
+  double direction[3] = { 0, 0, 0 };
+  direction[axis] = 1.0;
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(origin);
+  plane->SetNormal(direction);
+  vtkNew<vtkCutter> cutter;
+  cutter->SetInputData(image);
+  cutter->SetCutFunction(plane);
+  cutter->Update();
+  return cutter->GetOutput();
 }
 
 std::vector<PropertySpec> PipelineItem::WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const

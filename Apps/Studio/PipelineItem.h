@@ -33,6 +33,8 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkImageData;
+class vtkPolyData;
 class vtkCamera;
 class vtkDataObject;
 class vtkRiemannIntegrationSettings;
@@ -215,6 +217,10 @@ protected:
     filter->SetNumberOfDirections(this->Integer("NumberOfDirections"));
   }
   std::vector<std::string> ObserverConePythonLines(const std::string& var) const;
+  /// The slice of a grid result ("SliceNormal" x|y|z, "SliceOffset" from the
+  /// grid's centre): the two settings, and the slice of `image` they make.
+  std::vector<PropertySpec> SliceProperties() const;
+  vtkSmartPointer<vtkPolyData> SliceOf(vtkImageData* image) const;
   /// `specs` followed by the integration and display settings.
   std::vector<PropertySpec> WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const;
 

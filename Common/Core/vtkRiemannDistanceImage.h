@@ -21,6 +21,25 @@
 #include <limits>
 #include <vector>
 
+/// The grid of `image` (its extent's first point as the origin), as the core's.
+inline riemann::DistanceGrid vtkRiemannDistanceGridOf(vtkImageData* image)
+{
+  riemann::DistanceGrid grid;
+  double origin[3], spacing[3];
+  int dims[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  image->GetDimensions(dims);
+  const int* extent = image->GetExtent();
+  for (int a = 0; a < 3; ++a)
+  {
+    grid.Origin[a] = origin[a] + extent[2 * a] * spacing[a];
+    grid.Spacing[a] = spacing[a];
+    grid.Dimensions[static_cast<std::size_t>(a)] = dims[a];
+  }
+  return grid;
+}
+
 /**
  * The grid, the point arrays Distance (NaN: unreached), ArrivalDirection and
  * SeedId, and (when `seeds` is given) the field data Seeds of `image`. False
@@ -39,18 +58,7 @@ inline bool vtkRiemannReadDistanceImage(vtkImageData* image, riemann::DistanceGr
   {
     return false;
   }
-  double origin[3], spacing[3];
-  int dims[3];
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  image->GetDimensions(dims);
-  const int* extent = image->GetExtent();
-  for (int a = 0; a < 3; ++a)
-  {
-    grid.Origin[a] = origin[a] + extent[2 * a] * spacing[a];
-    grid.Spacing[a] = spacing[a];
-    grid.Dimensions[static_cast<std::size_t>(a)] = dims[a];
-  }
+  grid = vtkRiemannDistanceGridOf(image);
   const vtkIdType count = image->GetNumberOfPoints();
   field.Distance.resize(static_cast<std::size_t>(count));
   field.ArrivalDirection.resize(3 * static_cast<std::size_t>(count));

@@ -11,6 +11,7 @@
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkRiemannDistanceImage.h"
 #include "vtkRiemannReportError.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -61,30 +62,9 @@ int vtkRiemannDistanceField::RequestInformation(
   return 1;
 }
 
-namespace
-{
-/// The output's grid, as the core's.
-riemann::DistanceGrid GridOf(vtkImageData* image)
-{
-  riemann::DistanceGrid grid;
-  double origin[3], spacing[3];
-  int dims[3];
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  image->GetDimensions(dims);
-  const int* extent = image->GetExtent();
-  for (int a = 0; a < 3; ++a)
-  {
-    grid.Origin[a] = origin[a] + extent[2 * a] * spacing[a];
-    grid.Spacing[a] = spacing[a];
-    grid.Dimensions[static_cast<std::size_t>(a)] = dims[a];
-  }
-  return grid;
-}
-} // namespace
-
-// ComputeFields as named steps: the checks -> GridOf -> ComputeDistanceField
-// (in parallel, progress between rounds) -> the point arrays.
+// ComputeFields as named steps: the checks -> vtkRiemannDistanceGridOf ->
+// ComputeDistanceField (in parallel, progress between rounds) -> the point
+// arrays.
 bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDataSet* output)
 {
   this->NumberOfUpdates = 0;
@@ -122,7 +102,8 @@ bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDa
   bool completed = false;
   try
   {
-    completed = riemann::ComputeDistanceField(metric, GridOf(image), seeds, options, result,
+    completed = riemann::ComputeDistanceField(metric, vtkRiemannDistanceGridOf(image), seeds,
+      options, result,
       [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& work)
       {
         vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&work](vtkIdType first, vtkIdType last)
