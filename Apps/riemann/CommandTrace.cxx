@@ -62,6 +62,25 @@ struct TraceArguments
   std::string Output;
 };
 
+/// "3 seed(s) made no geodesic: 2 left the sampled data, 1 degenerate
+/// metric" from the counts by reason (0..MaximumReason); "" when none.
+std::string DescribeUntraced(const long long* byReason)
+{
+  long long all = 0;
+  std::string reasons;
+  for (int reason = 0; reason <= MaximumReason; ++reason)
+  {
+    if (byReason[reason] > 0)
+    {
+      all += byReason[reason];
+      reasons += (reasons.empty() ? "" : ", ") + std::to_string(byReason[reason]) + " " +
+        TerminationReasonName(reason);
+    }
+  }
+  return all == 0 ? std::string()
+                  : std::to_string(all) + " seed(s) made no geodesic: " + reasons + " at the seed";
+}
+
 /// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
 vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
 {
@@ -181,10 +200,17 @@ void RunTrace(const TraceArguments& args)
       counts[2 + std::min(std::max(reason, 0), MaximumReason)]++;
     }
   }
+  // The seeds that made no geodesic, by why (after the lines' reasons).
+  for (int reason = 0; reason <= MaximumReason; ++reason)
+  {
+    counts.push_back(static_cast<long long>(tracer->GetNumberOfUntracedSeeds(reason)));
+  }
   counts = SumOverRanks(counts);
+  const std::string untraced = DescribeUntraced(counts.data() + 2 + MaximumReason + 1);
   if (counts[0] == 0)
   {
-    throw Failure("no geodesic could be traced from the given seeds");
+    throw Failure("no geodesic could be traced from the given seeds" +
+      (untraced.empty() ? std::string() : ": " + untraced));
   }
 
   WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
@@ -209,6 +235,10 @@ void RunTrace(const TraceArguments& args)
                 << TerminationReasonName(reason);
       first = false;
     }
+  }
+  if (!untraced.empty())
+  {
+    std::cerr << "; " << untraced;
   }
   if (IsDistributed())
   {

@@ -145,12 +145,20 @@ Vec3 SampledTensorField::GridCoordinates(const Vec3& p) const
   return this->WorldToGrid * (p - this->Grid.Origin);
 }
 
+namespace
+{
+/// The samples' extent, faces included: a voxel centre on a face maps to
+/// grid coordinate 0 or n - 1 only up to the rounding of the affine map (a
+/// seed there counted as outside), so this much beyond a face is on it.
+constexpr double FaceTolerance = 1e-9;
+} // namespace
+
 bool SampledTensorField::Inside(const Vec3& p) const
 {
   const Vec3 u = this->GridCoordinates(p);
   for (int a = 0; a < 3; ++a)
   {
-    if (!(u[a] >= 0.0 && u[a] <= this->Grid.Dimensions[a] - 1))
+    if (!(u[a] >= -FaceTolerance && u[a] <= this->Grid.Dimensions[a] - 1 + FaceTolerance))
     {
       return false;
     }
@@ -167,8 +175,11 @@ bool SampledTensorField::EvaluateInGrid(
   bool continued[3] = { false, false, false };
   for (int a = 0; a < 3; ++a)
   {
-    double inBox = u[a];
-    if (!(u[a] >= 0.0 && u[a] <= n[a] - 1))
+    // On a face up to the affine map's rounding: inside (as Inside() says).
+    double inBox = u[a] >= -FaceTolerance && u[a] <= n[a] - 1 + FaceTolerance
+      ? std::clamp(u[a], 0.0, n[a] - 1.0)
+      : u[a];
+    if (!(inBox >= 0.0 && inBox <= n[a] - 1))
     {
       if (!this->StopOutside || std::isnan(u[a]))
       {

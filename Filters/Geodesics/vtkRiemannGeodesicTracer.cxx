@@ -257,32 +257,30 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
   return traces;
 }
 
-/// Step 3: warn about the paths that make no line: none at all (the geodesic
-/// could not start) or a single point (a seed outside DomainBounds, a zero
-/// length or step budget).
-void WarnAboutShortPaths(vtkObject* self, const Traces& traces)
+/// Step 3: count the paths that make no line (fewer than two points) by why
+/// they stopped, and warn once for each reason.
+std::vector<vtkIdType> CountUntracedSeeds(vtkObject* self, const Traces& traces)
 {
-  vtkIdType unstarted = 0;
-  vtkIdType stillborn = 0;
+  std::vector<vtkIdType> untraced(riemann::OutOfData + 1, 0);
   for (vtkIdType i = 0; i < traces.Traced; ++i)
   {
-    const size_t n = traces.Paths[i].Points.size();
-    unstarted += n == 0 ? 1 : 0;
-    stillborn += n == 1 ? 1 : 0;
+    if (traces.Paths[i].Points.size() < 2)
+    {
+      const int reason = std::clamp(traces.Paths[i].Reason, 0, static_cast<int>(riemann::OutOfData));
+      untraced[static_cast<std::size_t>(reason)]++;
+    }
   }
-  if (unstarted > 0)
+  for (std::size_t reason = 0; reason < untraced.size(); ++reason)
   {
-    vtkWarningWithObjectMacro(
-      self, << unstarted << " of " << traces.Traced
-            << " geodesics could not start: zero or non-finite direction, or a "
-               "degenerate metric at the seed.");
+    if (untraced[reason] > 0)
+    {
+      vtkWarningWithObjectMacro(self, << untraced[reason] << " of " << traces.Traced
+                                      << " geodesics made no line: "
+                                      << riemann::TerminationReasonName(static_cast<int>(reason))
+                                      << " at the seed.");
+    }
   }
-  if (stillborn > 0)
-  {
-    vtkWarningWithObjectMacro(
-      self, << stillborn << " of " << traces.Traced
-            << " geodesics made no step: the seed is outside DomainBounds.");
-  }
+  return untraced;
 }
 
 /// Step 4: the polylines of two or more points, in seed order, with their
@@ -392,12 +390,13 @@ int vtkRiemannGeodesicTracer::RequestUpdateExtent(
 }
 
 // RequestData as named steps: GatherSeeds -> PieceShare -> TraceInParallel
-// -> WarnAboutShortPaths -> BuildOutput (each in an anonymous namespace above).
+// -> CountUntracedSeeds -> BuildOutput (each in an anonymous namespace above).
 int vtkRiemannGeodesicTracer::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  this->UntracedSeeds.clear();
   const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
   if (!metric)
   {
@@ -423,9 +422,26 @@ int vtkRiemannGeodesicTracer::RequestData(
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
   const Traces traces =
     TraceInParallel(this, *metric, seeds, options, this->ComputeTransverseJacobian);
-  WarnAboutShortPaths(this, traces);
+  this->UntracedSeeds = CountUntracedSeeds(this, traces);
   BuildOutput(seeds, traces, this->ComputeTransverseJacobian, output);
   return 1;
+}
+
+vtkIdType vtkRiemannGeodesicTracer::GetNumberOfUntracedSeeds() const
+{
+  vtkIdType all = 0;
+  for (vtkIdType n : this->UntracedSeeds)
+  {
+    all += n;
+  }
+  return all;
+}
+
+vtkIdType vtkRiemannGeodesicTracer::GetNumberOfUntracedSeeds(int reason) const
+{
+  return reason >= 0 && reason < static_cast<int>(this->UntracedSeeds.size())
+    ? this->UntracedSeeds[static_cast<std::size_t>(reason)]
+    : 0;
 }
 
 void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)

@@ -60,6 +60,8 @@
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
 
+#include <vector> // For UntracedSeeds
+
 class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicTracer : public vtkRiemannGeodesicAlgorithm
 {
 public:
@@ -133,6 +135,18 @@ public:
   vtkBooleanMacro(ComputeTransverseJacobian, bool);
   ///@}
 
+  ///@{
+  /**
+   * The seed-direction pairs of the last execution that made no line (fewer
+   * than two points), in all and by why they stopped (ReasonForTermination:
+   * NOT_INITIALIZED for a zero or non-finite direction, DEGENERATE_METRIC,
+   * OUT_OF_DATA for a seed outside a sampled metric's volume, OUT_OF_DOMAIN
+   * for one outside DomainBounds, ...). Each also makes one warning.
+   */
+  vtkIdType GetNumberOfUntracedSeeds() const;
+  vtkIdType GetNumberOfUntracedSeeds(int reason) const;
+  ///@}
+
 protected:
   vtkRiemannGeodesicTracer();
   ~vtkRiemannGeodesicTracer() override;
@@ -152,6 +166,8 @@ protected:
   bool UseDomainBounds = false;
   double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
   bool ComputeTransverseJacobian = false;
+  /// Untraced seed-direction pairs by reason (index: the reason's code).
+  std::vector<vtkIdType> UntracedSeeds;
 
 private:
   vtkRiemannGeodesicTracer(const vtkRiemannGeodesicTracer&) = delete;

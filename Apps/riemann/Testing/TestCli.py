@@ -764,6 +764,49 @@ class DistanceTests(unittest.TestCase):
                 self.assertEqual(os.listdir(self.dir), [])
 
 
+class TractographyTests(unittest.TestCase):
+    """Tracing a sampled tensor volume as a tractography user does: seeds on
+    the volume's faces are inside it (up to the rounding of its affine map),
+    and every seed that makes no geodesic is counted, with why."""
+
+    PHANTOM = os.path.join(DATA, "phantom", "fibre-phantom.json")
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_face_seeds_are_inside_and_untraced_seeds_are_counted(self):
+        # The phantom's voxel centres on its x faces, 1e-13 beyond them (as a
+        # NIfTI affine's rounding puts them), pointing inwards; one seed
+        # well outside.
+        origin, spacing = -1.9500000000000002, 0.1
+        seeds = os.path.join(self.dir, "seeds.csv")
+        rows = ["x,y,z,dx,dy,dz"]
+        for j in (0, 13, 26, 39):
+            for k in (0, 11, 23):
+                y, z = origin + j * spacing, -1.1500000000000001 + k * spacing
+                rows.append("%r,%r,%r,-1,0,0" % (origin + 39 * spacing + 1e-13, y, z))
+                rows.append("%r,%r,%r,1,0,0" % (origin - 1e-13, y, z))
+        rows.append("5,0,0,1,0,0")
+        with open(seeds, "w") as f:
+            f.write("\n".join(rows) + "\n")
+        out = os.path.join(self.dir, "t.csv")
+        status, _, err = run("trace", "-m", self.PHANTOM, "--seeds", seeds, "--length", "1", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertIn("riemann trace: 24 geodesic(s)", err)
+        self.assertIn("1 seed(s) made no geodesic: 1 left the sampled data at the seed", err)
+        # No seed at all: the failure says why.
+        with open(seeds, "w") as f:
+            f.write("x,y,z,dx,dy,dz\n5,0,0,1,0,0\n-5,0,0,1,0,0\n")
+        status, _, err = run("trace", "-m", self.PHANTOM, "--seeds", seeds, "-o", out)
+        self.assertEqual(status, 1, err)
+        self.assertIn("no geodesic could be traced from the given seeds: 2 seed(s) made no geodesic: "
+                      "2 left the sampled data at the seed", err)
+
+
 class PictureOptionTests(unittest.TestCase):
     """The camera and picture options of render are the picture schema's
     (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words
