@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 #include <stdexcept>
 
 namespace riemann
@@ -87,6 +88,7 @@ std::string PrepareTensorSamples(
   const long long count = grid.NumberOfPoints();
   // Pass 1: finiteness, definiteness, and the largest eigenvalue (the floor's scale).
   double largest = 0.0;
+  std::vector<double> meanDiffusivities;
   long long firstNonFinite = -1, firstIndefinite = -1;
   double indefiniteEigenvalue = 0.0;
   for (long long point = 0; point < count; ++point)
@@ -101,6 +103,10 @@ std::string PrepareTensorSamples(
     const Vec3 eigenvalues =
       Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues();
     largest = std::max(largest, eigenvalues[2]);
+    if (eigenvalues[0] > 0.0 && options.ScaleToMeanDiffusivity)
+    {
+      meanDiffusivities.push_back(eigenvalues.sum() / 3.0);
+    }
     if (!(eigenvalues[0] > 0.0))
     {
       ++found.NotPositiveDefinite;
@@ -145,6 +151,17 @@ std::string PrepareTensorSamples(
     return message.str();
   }
 
+  // The scale: the option's, times the median mean diffusivity's part.
+  double scale = options.Scale;
+  if (!meanDiffusivities.empty())
+  {
+    auto middle = meanDiffusivities.begin() + static_cast<std::ptrdiff_t>(meanDiffusivities.size() / 2);
+    std::nth_element(meanDiffusivities.begin(), middle, meanDiffusivities.end());
+    found.MedianMeanDiffusivity = *middle;
+    scale *= options.Inverse ? *middle : 1.0 / *middle;
+  }
+  found.AppliedScale = scale;
+
   // Pass 2: clamp (with Repair), invert, scale, through each sample's eigenvectors.
   const double floor = options.RelativeFloor * largest;
   for (long long point = 0; point < count; ++point)
@@ -165,7 +182,7 @@ std::string PrepareTensorSamples(
       }
     }
     found.Repaired += clamped ? 1 : 0;
-    if (!clamped && !options.Inverse && options.Scale == 1.0)
+    if (!clamped && !options.Inverse && scale == 1.0)
     {
       continue; // kept exactly as given
     }
@@ -174,7 +191,7 @@ std::string PrepareTensorSamples(
       eigenvalues = eigenvalues.cwiseInverse();
     }
     const Mat3& v = solver.eigenvectors();
-    StoreAt(grid, point, options.Scale * (v * eigenvalues.asDiagonal() * v.transpose()));
+    StoreAt(grid, point, scale * (v * eigenvalues.asDiagonal() * v.transpose()));
   }
   if (report)
   {

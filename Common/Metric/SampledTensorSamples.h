@@ -33,6 +33,15 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
   bool Inverse = false;
   /// Multiply the metric by this (after the inverse).
   double Scale = 1.0;
+  /**
+   * Also multiply it so that a sample equal to the data's median mean
+   * diffusivity times I becomes I (by that median with Inverse, by its
+   * inverse without): arc length is then Euclidean length where the data
+   * is isotropic, whatever the tensors' units (mm^2/s, um^2/ms), so steps
+   * and lengths are in the units of the voxels' positions (mm). The median
+   * is over the positive definite samples (JSON "scale": "mean-diffusivity").
+   */
+  bool ScaleToMeanDiffusivity = false;
   /// "outside": "stop": geodesics and rays stop where they leave the volume
   /// (else g = I there).
   bool StopOutside = false;
@@ -53,6 +62,10 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorReport
   std::array<int, 3> FirstBad = { -1, -1, -1 };
   /// The smallest eigenvalue found there, NaN when not finite.
   double FirstBadEigenvalue = 0.0;
+  /// The median mean diffusivity (trace / 3) of the positive definite samples.
+  double MedianMeanDiffusivity = 0.0;
+  /// What the metric was multiplied by in all (Scale, and the median's part).
+  double AppliedScale = 1.0;
 };
 
 /**

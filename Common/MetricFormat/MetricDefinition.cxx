@@ -533,7 +533,21 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
     }
     options.Inverse = root.at("inverse").get<bool>();
   }
-  options.Scale = NumberOr(root, "scale", path, 1.0);
+  // "scale": a number, or "mean-diffusivity" (arc length in the voxels' units).
+  if (root.contains("scale") && root.at("scale").is_string())
+  {
+    if (root.at("scale").get<std::string>() != "mean-diffusivity")
+    {
+      Fail(path + ".scale", "expected a positive number or \"mean-diffusivity\" (the metric "
+                            "scaled so that arc length is length where the data is isotropic), "
+                            "got " + Describe(root.at("scale")));
+    }
+    options.ScaleToMeanDiffusivity = true;
+  }
+  else
+  {
+    options.Scale = NumberOr(root, "scale", path, 1.0);
+  }
   options.Repair = ChoiceOr(root, "repair", path,
                      { { "none", "samples that are not positive definite are an error" },
                        { "clamp", "their eigenvalues are raised to a floor" } }) == "clamp";

@@ -807,6 +807,37 @@ class TractographyTests(unittest.TestCase):
                       "2 left the sampled data at the seed", err)
 
 
+    def test_mean_diffusivity_scale(self):
+        # The phantom's volume holds diffusion tensors of mean diffusivity
+        # about 0.8 in its isotropic background; "scale": "mean-diffusivity"
+        # divides them by the median (the background's), so g is I there
+        # (to the background's own anisotropy, below 1%), whatever the units.
+        volume = os.path.abspath(os.path.join(DATA, "phantom", "fibre-phantom.vti"))
+        plain = self.diagonal('')
+        scaled = self.diagonal(', "scale": "mean-diffusivity"')
+        for value in scaled:
+            self.assertAlmostEqual(value, 1.0, delta=0.01)
+        self.assertTrue(all(abs(p - 0.8) < 0.01 for p in plain), plain)
+        metric = os.path.join(self.dir, "bad.json")
+        with open(metric, "w") as f:
+            f.write('{"type": "sampled", "file": "%s", "array": "Tensors", "scale": "mm"}' % volume)
+        status, _, err = run("info", "-m", metric, "--point", "0,0,0")
+        self.assertEqual(status, 1, err)
+        self.assertIn('expected a positive number or "mean-diffusivity"', err)
+
+    def diagonal(self, scale):
+        """The diagonal of g at a background point of the phantom, as info prints it."""
+        import re
+        volume = os.path.abspath(os.path.join(DATA, "phantom", "fibre-phantom.vti"))
+        metric = os.path.join(self.dir, "m.json")
+        with open(metric, "w") as f:
+            f.write('{"type": "sampled", "file": "%s", "array": "Tensors"%s}' % (volume, scale))
+        status, out, err = run("info", "-m", metric, "--point", "0.3,-0.2,0.1")
+        self.assertEqual(status, 0, err)
+        rows = re.findall(r"\[([^\]]*)\]", out.split("g^ij")[0].split("g_ij")[1])
+        return [float(rows[i].split(",")[i]) for i in range(3)]
+
+
 class PictureOptionTests(unittest.TestCase):
     """The camera and picture options of render are the picture schema's
     (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words

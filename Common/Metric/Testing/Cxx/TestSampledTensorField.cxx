@@ -518,6 +518,30 @@ TEST(SampledTensorSamples, InverseAndScaleMakeTheDiffusionTensorsMetric)
   EXPECT_NEAR(fibre.dot(SampleOf(grid, 0) * fibre), 4.0 / 3.0, 1e-12);
 }
 
+TEST(SampledTensorSamples, MeanDiffusivityScaleMakesIsotropicTissueEuclidean)
+{
+  // Diffusion tensors in mm^2/s (about 1e-3): 26 isotropic samples of mean
+  // diffusivity 0.9e-3 and one fibre of 1.2e-3. The median mean diffusivity
+  // is 0.9e-3, so the isotropic samples become I: arc length is length in mm.
+  const double md = 0.9e-3;
+  SampledTensorGrid grid = Uniform(md * Mat3::Identity());
+  SetSample(grid, 13, 1e-3 * Diffusion() * (1.2 / (Diffusion().trace() / 3.0)));
+  riemann::SampledTensorOptions options;
+  options.Inverse = true;
+  options.ScaleToMeanDiffusivity = true;
+  riemann::SampledTensorReport report;
+  ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
+  EXPECT_NEAR(report.MedianMeanDiffusivity, md, 1e-18);
+  EXPECT_NEAR(report.AppliedScale, md, 1e-18);
+  EXPECT_LT((SampleOf(grid, 0) - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+  // Without the inverse, the tensors are divided by it.
+  SampledTensorGrid direct = Uniform(md * Mat3::Identity());
+  options.Inverse = false;
+  ASSERT_EQ(riemann::PrepareTensorSamples(direct, options, &report), "");
+  EXPECT_NEAR(report.AppliedScale, 1.0 / md, 1e-9);
+  EXPECT_LT((SampleOf(direct, 26) - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(SampledTensorSamples, PositiveSamplesWithoutOptionsAreKeptBitwise)
 {
   SampledTensorGrid grid = Uniform(Diffusion());
