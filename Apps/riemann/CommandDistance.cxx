@@ -121,7 +121,8 @@ std::string DescribeRange(vtkImageData* field)
   std::string text = "distance from " + FormatNumber(lowest) + " to " + FormatNumber(highest);
   if (unreached > 0)
   {
-    text += " (" + std::to_string(unreached) + " points unreached: the metric fails there)";
+    text += " (" + std::to_string(unreached) +
+      " points unreached: outside the metric's data, or where it fails)";
   }
   return text;
 }

@@ -154,8 +154,11 @@ public:
       {
         for (std::size_t n = first; n < last; ++n)
         {
+          // Where geodesics stop (outside a sampled metric's volume with
+          // "outside": "stop") no distance is defined either.
           Mat3 g;
-          if (!this->TheMetric.Tensor(this->PointOf(n), g) || !g.allFinite())
+          const Vec3 x = this->PointOf(n);
+          if (!this->TheMetric.InsideData(x) || !this->TheMetric.Tensor(x, g) || !g.allFinite())
           {
             continue;
           }
@@ -556,7 +559,7 @@ private:
   std::vector<unsigned char> Valid;
 };
 
-void CheckArguments(const DistanceGrid& grid, const std::vector<Vec3>& seeds)
+void CheckArguments(const Metric& metric, const DistanceGrid& grid, const std::vector<Vec3>& seeds)
 {
   for (int a = 0; a < 3; ++a)
   {
@@ -584,6 +587,11 @@ void CheckArguments(const DistanceGrid& grid, const std::vector<Vec3>& seeds)
         throw std::invalid_argument("seed " + std::to_string(s) + " is not inside the grid's bounds");
       }
     }
+    if (!metric.InsideData(p))
+    {
+      throw std::invalid_argument("seed " + std::to_string(s) +
+        " is outside the metric's data (geodesics stop there)");
+    }
   }
 }
 } // namespace
@@ -602,7 +610,7 @@ bool ComputeDistanceField(const Metric& metric, const DistanceGrid& grid,
   const std::vector<Vec3>& seeds, const DistanceOptions& options, DistanceFieldResult& result,
   const DistanceParallelFor& parallelFor, const DistanceProgress& progress)
 {
-  CheckArguments(grid, seeds);
+  CheckArguments(metric, grid, seeds);
   result = DistanceFieldResult();
   Solver solver(metric, grid, options);
   solver.SampleMetric(parallelFor);

@@ -104,8 +104,10 @@ RIEMANNCOMMONDISTANCE_EXPORT void SerialFor(
   std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
 
 /**
- * The distance field of `seeds` on `grid`. Throws std::invalid_argument when
- * there is no seed, a seed is not finite or outside the grid's box, or the
+ * The distance field of `seeds` on `grid`. Points outside the metric's data
+ * (Metric::InsideData: a sampled volume with "outside": "stop") or where g
+ * fails are unreached. Throws std::invalid_argument when there is no seed, a
+ * seed is not finite, outside the grid's box or outside the data, or the
  * grid has fewer than 2 points along an axis or a spacing that is not
  * positive and finite. Returns false when `progress` asked to stop (the
  * result is then incomplete).

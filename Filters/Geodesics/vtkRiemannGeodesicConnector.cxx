@@ -229,6 +229,13 @@ int vtkRiemannGeodesicConnector::RequestData(
   options.Tolerance = this->Tolerance;
   options.NumberOfDirections = this->NumberOfDirections;
   options.MaximumIterations = this->MaximumNumberOfIterations;
+  if (!metric->InsideData(p) || !metric->InsideData(q))
+  {
+    this->ReportError(std::string(metric->InsideData(p) ? "EndPosition" : "StartPosition") +
+      " is outside the metric's data: geodesics stop there (a sampled volume with \"outside\": "
+      "\"stop\").");
+    return 1;
+  }
   if ((p - q).norm() <= options.Tolerance)
   {
     this->ReportError("StartPosition and EndPosition are the same point (within the Tolerance).");

@@ -825,6 +825,23 @@ class TractographyTests(unittest.TestCase):
         self.assertEqual(status, 1, err)
         self.assertIn('expected a positive number or "mean-diffusivity"', err)
 
+    def test_distance_and_connect_keep_to_the_volume(self):
+        # With "outside": "stop", geodesics end at the volume's faces: the
+        # distance is not defined beyond them, and no point there is joined.
+        out = os.path.join(self.dir, "d.vti")
+        status, _, err = run("distance", "-m", self.PHANTOM, "--seed", "0,0,0", "--bounds",
+                             "-3,3,-3,3,-2,2", "--dims", "31,31,21", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertIn("16210 points unreached: outside the metric's data", err)
+        status, _, err = run("distance", "-m", self.PHANTOM, "--seed", "2.5,0,0", "--bounds",
+                             "-3,3,-3,3,-2,2", "--dims", "31,31,21", "-o", out)
+        self.assertEqual(status, 1, err)
+        self.assertIn("seed 0 is outside the metric's data", err)
+        status, _, err = run("connect", "-m", self.PHANTOM, "--from", "3,0,0", "--to", "0,0,0",
+                             "-o", os.path.join(self.dir, "c.csv"))
+        self.assertEqual(status, 1, err)
+        self.assertIn("StartPosition is outside the metric's data", err)
+
     def diagonal(self, scale):
         """The diagonal of g at a background point of the phantom, as info prints it."""
         import re
