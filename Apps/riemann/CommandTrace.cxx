@@ -8,12 +8,17 @@
 #include "GeodesicCsv.h"
 #include "GeodesicTrace.h"
 #include "InputFiles.h"
+#include "Metric.h"
+#include "RiemannScalarImages.h"
+
+#include <Eigen/Eigenvalues>
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -32,6 +37,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <random>
 #include <sstream>
 
 namespace riemann
@@ -49,6 +55,12 @@ struct TraceArguments
   std::string Seed = "0,0,0";
   std::string Direction = "1,0,0";
   std::string SeedsFile;
+  std::string SeedMask;
+  long long SeedsPerVoxel = 1;
+  std::string SeedDirection = "e1";
+  long long RandomSeed = 1;
+  /// Whether --propagation was given (with --seed-mask its default is "both").
+  bool PropagationGiven = false;
   // The integration defaults are the schema's for curves (IntegrationSchema.h).
   double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
   std::string Integrator = riemann::IntegratorName(riemann::GeodesicOptions().Integrator);
@@ -79,6 +91,69 @@ std::string DescribeUntraced(const long long* byReason)
   }
   return all == 0 ? std::string()
                   : std::to_string(all) + " seed(s) made no geodesic: " + reasons + " at the seed";
+}
+
+/**
+ * The seeds of --seed-mask: --seeds-per-voxel points in every voxel of the
+ * mask that is not 0 (placed by the file's own affine), each with a
+ * direction: e1, the direction the metric makes cheapest at the point (for
+ * a diffusion tensor's inverse, D^-1, the principal diffusion direction:
+ * the eigenvector of g's smallest eigenvalue), or a random unit vector
+ * (deterministic by --random-seed). A point where g cannot be evaluated
+ * keeps the direction (1, 0, 0) and is counted as untraced by the tracer.
+ */
+vtkSmartPointer<vtkPolyData> SeedsFromMask(const TraceArguments& args, vtkRiemannMetric* metric)
+{
+  vtkSmartPointer<vtkImageData> mask;
+  try
+  {
+    mask = ReadScalarImageFile(args.SeedMask, "the seed mask");
+  }
+  catch (const std::runtime_error& e)
+  {
+    throw Failure(std::string("--seed-mask: ") + e.what());
+  }
+  const std::vector<double> points = MaskSeedPoints(
+    mask, static_cast<int>(args.SeedsPerVoxel), static_cast<unsigned>(args.RandomSeed));
+  if (points.empty())
+  {
+    throw Failure("--seed-mask " + args.SeedMask + ": no voxel of the mask is set (not 0)");
+  }
+  const std::shared_ptr<const Metric> core = metric->GetMetric();
+  std::mt19937 generator(static_cast<unsigned>(args.RandomSeed) + 1u);
+  std::normal_distribution<double> normal;
+  auto seeds = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> positions;
+  positions->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> directions;
+  directions->SetName("Direction");
+  directions->SetNumberOfComponents(3);
+  for (std::size_t p = 0; p + 2 < points.size(); p += 3)
+  {
+    const Vec3 x(points[p], points[p + 1], points[p + 2]);
+    Vec3 direction(1.0, 0.0, 0.0);
+    if (args.SeedDirection == "random")
+    {
+      do
+      {
+        direction = Vec3(normal(generator), normal(generator), normal(generator));
+      } while (!(direction.norm() > 1e-12));
+    }
+    else
+    {
+      Mat3 g;
+      if (core && core->Tensor(x, g) && g.allFinite())
+      {
+        const Eigen::SelfAdjointEigenSolver<Mat3> eigen(g);
+        direction = eigen.eigenvectors().col(0);
+      }
+    }
+    positions->InsertNextPoint(x.data());
+    directions->InsertNextTuple(direction.data());
+  }
+  seeds->SetPoints(positions);
+  seeds->GetPointData()->AddArray(directions);
+  return seeds;
 }
 
 /// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
@@ -140,7 +215,8 @@ void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds)
 
 void RunTrace(const TraceArguments& args)
 {
-  CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile } }, { { "-o", args.Output } });
+  CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile }, { "--seed-mask", args.SeedMask } },
+    { { "-o", args.Output } });
   const std::string extension = Extension(args.Output);
   if (extension != "vtp" && extension != "csv" && extension != "pvtp")
   {
@@ -157,7 +233,11 @@ void RunTrace(const TraceArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(tracer);
   tracer->SetMetric(metric);
-  tracer->SetIntegrationDirection(propagations.at(args.Propagation));
+  // Seeds from a mask go both ways along e1 unless --propagation says otherwise.
+  const std::string propagation =
+    !args.SeedMask.empty() && args.SeedDirection == "e1" && !args.PropagationGiven ? "both"
+                                                                                   : args.Propagation;
+  tracer->SetIntegrationDirection(propagations.at(propagation));
   vtkRiemannIntegrationSettings* settings = tracer->GetIntegrationSettings();
   settings->SetIntegratorType(static_cast<int>(ParseIntegratorOption(args.Integrator)));
   settings->SetInitialIntegrationStep(args.Step);
@@ -166,14 +246,15 @@ void RunTrace(const TraceArguments& args)
   settings->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   vtkIdType numberOfSeeds = 1;
-  if (!args.SeedsFile.empty())
+  if (!args.SeedsFile.empty() || !args.SeedMask.empty())
   {
-    vtkSmartPointer<vtkPolyData> seeds = ReadSeeds(args.SeedsFile);
+    vtkSmartPointer<vtkPolyData> seeds =
+      args.SeedMask.empty() ? ReadSeeds(args.SeedsFile) : SeedsFromMask(args, metric);
     numberOfSeeds = seeds->GetNumberOfPoints();
     tracer->SetInputData(seeds);
   }
   CheckOutputSize(args, numberOfSeeds);
-  if (args.SeedsFile.empty())
+  if (args.SeedsFile.empty() && args.SeedMask.empty())
   {
     double seed[3], direction[3];
     // Checked while parsing (Point3, Direction3); parsed here.
@@ -266,10 +347,35 @@ void RegisterTraceCommand(CLI::App& app)
     ->check(CLI::ExistingFile)
     ->excludes(command->get_option("--seed"))
     ->excludes(command->get_option("--direction"));
+  command
+    ->add_option("--seed-mask", args->SeedMask,
+      "Seeds from a mask or label image (.nii, .nii.gz, .nrrd, .nhdr, .vti, .vtk, placed by its "
+      "own affine): every voxel that is not 0 (replaces --seed/--seeds)")
+    ->check(CLI::ExistingFile)
+    ->excludes(command->get_option("--seed"))
+    ->excludes(command->get_option("--direction"))
+    ->excludes(command->get_option("--seeds"));
+  command
+    ->add_option("--seeds-per-voxel", args->SeedsPerVoxel,
+      "Seeds in each voxel of --seed-mask: 1 (default) at its centre, more spread uniformly over "
+      "it (deterministic by --random-seed)")
+    ->check(WholeNumber(1, 1000));
+  command
+    ->add_option("--seed-direction", args->SeedDirection,
+      "Direction of the --seed-mask seeds: e1 (default: the direction g makes cheapest, a "
+      "diffusion tensor's principal direction for D^-1; traced both ways unless --propagation "
+      "says otherwise) or random (unit vectors, deterministic by --random-seed)")
+    ->check(CLI::IsMember({ "e1", "random" }));
+  command
+    ->add_option("--random-seed", args->RandomSeed,
+      "Seed of the random numbers of --seeds-per-voxel and --seed-direction random (default 1)")
+    ->check(WholeNumber(0, 4294967295LL));
   AddIntegrationOptions(command,
     { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
-  command->add_option("--propagation", args->Propagation, "forward (default), backward or both")
-    ->check(CLI::IsMember({ "forward", "backward", "both" }));
+  CLI::Option* propagation =
+    command->add_option("--propagation", args->Propagation,
+             "forward (default; both for --seed-mask with e1), backward or both")
+      ->check(CLI::IsMember({ "forward", "backward", "both" }));
   command->add_flag("--transverse-jacobian", args->TransverseJacobian,
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
@@ -279,7 +385,12 @@ void RegisterTraceCommand(CLI::App& app)
     ->add_option(
       "--output,-o", args->Output, std::string("Output file: .vtp, .csv, or .pvtp ") + PiecesHelp)
     ->required();
-  command->callback([args]() { RunTrace(*args); });
+  command->callback(
+    [args, propagation]()
+    {
+      args->PropagationGiven = propagation->count() > 0;
+      RunTrace(*args);
+    });
 }
 } // namespace cli
 } // namespace riemann

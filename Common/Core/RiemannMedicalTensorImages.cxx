@@ -344,26 +344,130 @@ void ApplyNrrdSpace(vtkImageData* image, const std::string& path)
 }
 } // namespace
 
-vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
-  const std::string& path, SampledTensorFrame frame)
+namespace
 {
-  vtkNew<vtkNIFTIImageReader> reader;
+/// A NIfTI file read by `reader` (checked first: VTK's reader trusts the
+/// header), every volume a component (six FSL volumes become six
+/// components, as a vector dimension does).
+vtkSmartPointer<vtkImageData> ReadNifti(vtkNIFTIImageReader* reader, const std::string& path)
+{
   if (!reader->CanReadFile(path.c_str()))
   {
     throw std::runtime_error("not a NIfTI file");
   }
-  // VTK's reader trusts the header: checked first.
   const std::string problem = CheckNiftiFile(path);
   if (!problem.empty())
   {
     throw std::runtime_error(problem);
   }
-  // Six volumes (FSL) become six components, as the vector dimension does.
   reader->TimeAsVectorOn();
   reader->SetFileName(path.c_str());
   reader->Update();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->ShallowCopy(reader->GetOutput());
+  return image;
+}
+
+/// Place a NIfTI image by its q-form, else its s-form (voxel grid at the
+/// origin without either); the matrix used, or null.
+vtkMatrix4x4* PlaceNifti(vtkImageData* image, vtkNIFTIImageReader* reader)
+{
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  if (header->GetQFormCode() > 0 && reader->GetQFormMatrix())
+  {
+    PlaceByMatrix(image, reader->GetQFormMatrix(), "q-form");
+    return reader->GetQFormMatrix();
+  }
+  if (header->GetSFormCode() > 0 && reader->GetSFormMatrix())
+  {
+    PlaceByMatrix(image, reader->GetSFormMatrix(), "s-form");
+    return reader->GetSFormMatrix();
+  }
+  return nullptr;
+}
+
+/// A NRRD file's image (checked first; gzip bodies read by our reader),
+/// placed by its "space directions" and "space origin".
+vtkSmartPointer<vtkImageData> ReadNrrd(const std::string& path)
+{
+  const std::string problem = CheckNrrdFile(path);
+  if (!problem.empty())
+  {
+    throw std::runtime_error(problem);
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  if (IsGzipNrrd(path))
+  {
+    // vtkNrrdReader (VTK 9.1) misreads gzip bodies without an error.
+    image = ReadGzipNrrdImage(path);
+  }
+  else
+  {
+    vtkNew<SpaceBlindNrrdReader> reader;
+    if (!reader->CanReadFile(path.c_str()))
+    {
+      throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
+    }
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    image->ShallowCopy(reader->GetOutput());
+  }
+  return image;
+}
+
+/// A one-component image's values, as doubles, named "Scalars".
+void KeepOneComponent(vtkImageData* image, const char* format, double slope, double intercept)
+{
+  vtkDataArray* scalars = OnlyArray(image, format);
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    std::ostringstream message;
+    message << "the " << format << " image has " << scalars->GetNumberOfComponents()
+            << " values per voxel; a mask or label image has 1";
+    throw std::runtime_error(message.str());
+  }
+  vtkNew<vtkDoubleArray> values;
+  values->SetName("Scalars");
+  values->SetNumberOfTuples(scalars->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    values->SetValue(i, slope * scalars->GetTuple1(i) + intercept);
+  }
+  image->GetPointData()->Initialize();
+  image->GetPointData()->SetScalars(values);
+}
+} // namespace
+
+vtkSmartPointer<vtkImageData> ReadNiftiScalarImage(const std::string& path)
+{
+  vtkNew<vtkNIFTIImageReader> reader;
+  vtkSmartPointer<vtkImageData> image = ReadNifti(reader, path);
+  double slope = reader->GetRescaleSlope();
+  double intercept = reader->GetRescaleIntercept();
+  if (slope == 0.0 || !std::isfinite(slope) || !std::isfinite(intercept))
+  {
+    slope = 1.0; // NIfTI: scl_slope 0 means "no scaling"
+    intercept = 0.0;
+  }
+  KeepOneComponent(image, "NIfTI", slope, intercept);
+  PlaceNifti(image, reader);
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> ReadNrrdScalarImage(const std::string& path)
+{
+  vtkSmartPointer<vtkImageData> image = ReadNrrd(path);
+  KeepOneComponent(image, "NRRD", 1.0, 0.0);
+  // vtkNrrdReader (VTK 9.1) keeps only the lengths of "space directions".
+  ApplyNrrdSpace(image, path);
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
+  const std::string& path, SampledTensorFrame frame)
+{
+  vtkNew<vtkNIFTIImageReader> reader;
+  vtkSmartPointer<vtkImageData> image = ReadNifti(reader, path);
   vtkDataArray* scalars = OnlyArray(image, "NIfTI");
 
   // Step 1: the components, in VTK's order.
@@ -392,17 +496,7 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
     slope, intercept);
 
   // Step 2: the placement, q-form first.
-  vtkMatrix4x4* placement = nullptr;
-  if (header->GetQFormCode() > 0 && reader->GetQFormMatrix())
-  {
-    placement = reader->GetQFormMatrix();
-    PlaceByMatrix(image, placement, "q-form");
-  }
-  else if (header->GetSFormCode() > 0 && reader->GetSFormMatrix())
-  {
-    placement = reader->GetSFormMatrix();
-    PlaceByMatrix(image, placement, "s-form");
-  }
+  vtkMatrix4x4* placement = PlaceNifti(image, reader);
 
   // Step 3: tensors in FSL's voxel axes turned to world axes.
   if (frame == SampledTensorFrame::Fsl)
@@ -421,29 +515,7 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
 
 vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path)
 {
-  // VTK's reader trusts the header: checked first.
-  const std::string problem = CheckNrrdFile(path);
-  if (!problem.empty())
-  {
-    throw std::runtime_error(problem);
-  }
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  if (IsGzipNrrd(path))
-  {
-    // vtkNrrdReader (VTK 9.1) misreads gzip bodies without an error.
-    image = ReadGzipNrrdImage(path);
-  }
-  else
-  {
-    vtkNew<SpaceBlindNrrdReader> reader;
-    if (!reader->CanReadFile(path.c_str()))
-    {
-      throw std::runtime_error("not a NRRD file vtkNrrdReader can read (raw or gzip encoding)");
-    }
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    image->ShallowCopy(reader->GetOutput());
-  }
+  vtkSmartPointer<vtkImageData> image = ReadNrrd(path);
   vtkDataArray* scalars = OnlyArray(image, "NRRD");
   const int count = scalars->GetNumberOfComponents();
   if (count != 6 && count != 7 && count != 9)

@@ -53,6 +53,16 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
  * use. Throws std::runtime_error.
  */
 vtkSmartPointer<vtkImageData> ReadNrrdTensorImage(const std::string& path);
+
+/**
+ * Read a NIfTI or NRRD image of one value per voxel (a mask, a label
+ * image), placed in world coordinates as the tensor readers place theirs
+ * (NIfTI: q-form, else s-form; NRRD: space directions and origin), its
+ * values (NIfTI's scl_slope and scl_inter applied) as a double array
+ * "Scalars". Throws std::runtime_error saying what is wrong.
+ */
+vtkSmartPointer<vtkImageData> ReadNiftiScalarImage(const std::string& path);
+vtkSmartPointer<vtkImageData> ReadNrrdScalarImage(const std::string& path);
 }
 
 #endif

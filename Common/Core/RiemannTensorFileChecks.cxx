@@ -38,11 +38,6 @@ std::string Lower(std::string text)
   return text;
 }
 
-bool EndsWith(const std::string& text, const std::string& end)
-{
-  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
 std::string GiB(std::uint64_t bytes)
 {
   std::ostringstream text;
@@ -102,6 +97,13 @@ std::string Shortened(const std::string& text)
 }
 
 } // namespace
+
+bool HasFileEnding(const std::string& path, const std::string& ending)
+{
+  const std::string text = Lower(path);
+  return text.size() >= ending.size() &&
+    text.compare(text.size() - ending.size(), ending.size(), ending) == 0;
+}
 
 int NrrdVtkType(const std::string& type)
 {
@@ -209,13 +211,13 @@ std::string CheckNiftiFile(const std::string& path)
 
   // Step 3: an uncompressed file holds what it declares (a .hdr's data is in its .img).
   const std::string lower = Lower(path);
-  if (EndsWith(lower, ".gz"))
+  if (HasFileEnding(lower, ".gz"))
   {
     return std::string(); // reading stops at the declared (bounded) size
   }
   fs::path dataFile = path;
   std::uint64_t offset = 0;
-  if (EndsWith(lower, ".hdr"))
+  if (HasFileEnding(lower, ".hdr"))
   {
     dataFile.replace_extension(".img");
     const std::string problem = InputFileProblem(dataFile.string(), "the image file");

@@ -22,6 +22,9 @@
 
 namespace riemann
 {
+/// Whether `path` ends with `ending` (lower case, ".nii.gz"), whatever its case.
+RIEMANNCOMMONCORE_EXPORT bool HasFileEnding(const std::string& path, const std::string& ending);
+
 /// The most voxel data a tensor file may declare: 2 GiB (a 256^3 tensor
 /// volume of floats is 0.4 GiB).
 constexpr std::uint64_t MaximumTensorFileBytes = std::uint64_t(2) << 30;

@@ -168,12 +168,7 @@ SampledTensorGrid ReadTensorGridFile(
   {
     throw std::runtime_error(notAFile);
   }
-  const std::string lower = vtksys::SystemTools::LowerCase(path);
-  const auto endsWith = [&lower](const std::string& end)
-  {
-    return lower.size() >= end.size() &&
-      lower.compare(lower.size() - end.size(), end.size(), end) == 0;
-  };
+  const auto endsWith = [&path](const std::string& end) { return HasFileEnding(path, end); };
   const std::string extension =
     vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
   vtkSmartPointer<vtkImageData> image;

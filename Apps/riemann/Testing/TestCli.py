@@ -842,6 +842,85 @@ class TractographyTests(unittest.TestCase):
         self.assertEqual(status, 1, err)
         self.assertIn("StartPosition is outside the metric's data", err)
 
+    def test_seeds_from_a_nifti_mask_stay_in_their_bundle(self):
+        # A NIfTI mask written with the phantom's placement (s-form: spacing
+        # 0.1, origin (-1.95, -1.95, -1.15)) over the x bundle's voxels with
+        # -1.2 <= x <= -0.8: seeded along e1 both ways, every tract runs
+        # along the bundle (within its radius 0.4 of the axis y = 0,
+        # z = -0.35) up to the crossing, and each seed is a voxel centre of
+        # the phantom.
+        import numpy as np
+        from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+        from vtkmodules.vtkCommonMath import vtkMatrix4x4
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        from vtkmodules.vtkIOImage import vtkNIFTIImageWriter
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(os.path.join(DATA, "phantom", "fibre-phantom.vti"))
+        reader.Update()
+        phantom = reader.GetOutput()
+        bundle = vtk_to_numpy(phantom.GetPointData().GetArray("Bundle"))
+        points = np.array([phantom.GetPoint(i) for i in range(phantom.GetNumberOfPoints())])
+        chosen = (bundle == 1) & (points[:, 0] >= -1.2) & (points[:, 0] <= -0.8) & \
+            (np.hypot(points[:, 1], points[:, 2] + 0.35) < 0.2)
+        self.assertGreater(chosen.sum(), 5)
+        mask = vtkImageData()
+        mask.SetDimensions(40, 40, 24)
+        mask.GetPointData().SetScalars(numpy_to_vtk(chosen.astype(np.uint8), deep=True))
+        placement = vtkMatrix4x4()
+        for r, (step, origin) in enumerate(((0.1, -1.95), (0.1, -1.95), (0.1, -1.15))):
+            placement.SetElement(r, r, 1.0)
+            placement.SetElement(r, 3, origin)
+        mask.SetSpacing(0.1, 0.1, 0.1)
+        path = os.path.join(self.dir, "mask.nii.gz")
+        writer = vtkNIFTIImageWriter()
+        writer.SetInputData(mask)
+        writer.SetQFormMatrix(placement)
+        writer.SetFileName(path)
+        writer.Write()
+        out = os.path.join(self.dir, "tracts.csv")
+        status, _, err = run("trace", "-m", self.PHANTOM, "--seed-mask", path, "--length", "1.2",
+                             "--step", "0.02", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertIn("riemann trace: %d geodesic(s)" % (2 * chosen.sum()), err)
+        with open(out) as f:
+            rows = list(csv.DictReader(f))
+        xyz = np.array([[float(r[k]) for k in "xyz"] for r in rows])
+        starts = xyz[[r["step"] == "0" for r in rows]]
+        # Each seed is a chosen voxel's centre (to 1e-6: NIfTI stores the
+        # q-form's offsets as 32-bit floats; measured 5.6e-8).
+        centres = points[chosen]
+        self.assertLess(max(np.min(np.linalg.norm(centres - s, axis=1)) for s in starts), 1e-6)
+        # Before the crossing with the y bundle (x around 0, where the
+        # tensors are oblate and a tract may turn into the other bundle).
+        before = xyz[:, 0] <= -0.4
+        off_axis = np.hypot(xyz[before, 1], xyz[before, 2] + 0.35)
+        self.assertGreater(before.sum(), 100)
+        self.assertLess(off_axis.max(), 0.4)
+
+    def test_seed_mask_errors(self):
+        out = os.path.join(self.dir, "t.csv")
+        empty = os.path.join(self.dir, "empty.vti")
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+        from vtkmodules.util.numpy_support import numpy_to_vtk
+        import numpy as np
+        image = vtkImageData()
+        image.SetDimensions(3, 3, 3)
+        image.GetPointData().SetScalars(numpy_to_vtk(np.zeros(27, np.uint8), deep=True))
+        writer = vtkXMLImageDataWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(empty)
+        writer.Write()
+        for args, status_, words in (([ "--seed-mask", empty], 1, "no voxel of the mask is set"),
+                                     (["--seed-mask", self.PHANTOM], 1, "unknown image format"),
+                                     (["--seed-mask", empty, "--seed", "0,0,0"], 2, "excludes")):
+            with self.subTest(args=args):
+                status, _, err = run("trace", "-m", self.PHANTOM, *args, "-o", out)
+                self.assertEqual(status, status_, err)
+                self.assertIn(words, err)
+                self.assertFalse(os.path.exists(out))
+
     def diagonal(self, scale):
         """The diagonal of g at a background point of the phantom, as info prints it."""
         import re
@@ -1636,12 +1715,13 @@ class VtkMessageTests(unittest.TestCase):
             line = ["trace", "-m", metric, "--seed", "2,0,0", "-o", os.path.join(d, "out.csv")]
             status, _, err = run(*line)
             self.assertEqual(status, 1, err)
-            self.assertEqual(err.splitlines(), ["riemann: error: no geodesic could be traced from the given seeds",
+            self.assertEqual(err.splitlines(), ["riemann: error: no geodesic could be traced from the given seeds: "
+                                                "1 seed(s) made no geodesic: 1 degenerate metric at the seed",
                                                 "riemann: note: VTK also reported 1 warning; --verbose prints it"])
             status, _, err = run(*line, "--verbose")
             self.assertEqual(status, 1, err)
             self.assertIn("riemann: VTK warning (vtkRiemannGeodesicTracer.cxx:", err)
-            self.assertIn("could not start", err)
+            self.assertIn("1 of 1 geodesics made no line: degenerate metric at the seed", err)
             self.assertNotIn("\x1b", err)
             self.assertEqual(sorted(os.listdir(d)), ["ball.json"])
 
