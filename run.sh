@@ -54,6 +54,9 @@ PACKAGES=(
   qtbase5-dev libqt5opengl5-dev libvtk9-qt-dev
   openmpi-bin libopenmpi-dev python3-mpi4py
   ccache
+  # SciPy: the comparisons of Testing/Benchmarks (between_points_vs_scipy.py,
+  # trace_vs_scipy.py); no test needs it.
+  python3-scipy
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }
