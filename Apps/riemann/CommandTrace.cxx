@@ -8,10 +8,7 @@
 #include "GeodesicCsv.h"
 #include "GeodesicTrace.h"
 #include "InputFiles.h"
-#include "Metric.h"
 #include "RiemannScalarImages.h"
-
-#include <Eigen/Eigenvalues>
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -37,7 +34,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <random>
 #include <sstream>
 
 namespace riemann
@@ -94,15 +90,11 @@ std::string DescribeUntraced(const long long* byReason)
 }
 
 /**
- * The seeds of --seed-mask: --seeds-per-voxel points in every voxel of the
- * mask that is not 0 (placed by the file's own affine), each with a
- * direction: e1, the direction the metric makes cheapest at the point (for
- * a diffusion tensor's inverse, D^-1, the principal diffusion direction:
- * the eigenvector of g's smallest eigenvalue), or a random unit vector
- * (deterministic by --random-seed). A point where g cannot be evaluated
- * keeps the direction (1, 0, 0) and is counted as untraced by the tracer.
+ * The mask of --seed-mask (placed by its own affine), which the tracer seeds
+ * from (vtkRiemannGeodesicTracer: SeedsPerVoxel seeds in every voxel that is
+ * not 0, along SeedDirection); `count` receives how many seeds that makes.
  */
-vtkSmartPointer<vtkPolyData> SeedsFromMask(const TraceArguments& args, vtkRiemannMetric* metric)
+vtkSmartPointer<vtkImageData> ReadSeedMask(const TraceArguments& args, vtkIdType& count)
 {
   vtkSmartPointer<vtkImageData> mask;
   try
@@ -113,47 +105,17 @@ vtkSmartPointer<vtkPolyData> SeedsFromMask(const TraceArguments& args, vtkRieman
   {
     throw Failure(std::string("--seed-mask: ") + e.what());
   }
-  const std::vector<double> points = MaskSeedPoints(
-    mask, static_cast<int>(args.SeedsPerVoxel), static_cast<unsigned>(args.RandomSeed));
-  if (points.empty())
+  vtkDataArray* values = mask->GetPointData()->GetScalars();
+  count = 0;
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    count += values->GetTuple1(i) != 0.0 ? args.SeedsPerVoxel : 0;
+  }
+  if (count == 0)
   {
     throw Failure("--seed-mask " + args.SeedMask + ": no voxel of the mask is set (not 0)");
   }
-  const std::shared_ptr<const Metric> core = metric->GetMetric();
-  std::mt19937 generator(static_cast<unsigned>(args.RandomSeed) + 1u);
-  std::normal_distribution<double> normal;
-  auto seeds = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> positions;
-  positions->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> directions;
-  directions->SetName("Direction");
-  directions->SetNumberOfComponents(3);
-  for (std::size_t p = 0; p + 2 < points.size(); p += 3)
-  {
-    const Vec3 x(points[p], points[p + 1], points[p + 2]);
-    Vec3 direction(1.0, 0.0, 0.0);
-    if (args.SeedDirection == "random")
-    {
-      do
-      {
-        direction = Vec3(normal(generator), normal(generator), normal(generator));
-      } while (!(direction.norm() > 1e-12));
-    }
-    else
-    {
-      Mat3 g;
-      if (core && core->Tensor(x, g) && g.allFinite())
-      {
-        const Eigen::SelfAdjointEigenSolver<Mat3> eigen(g);
-        direction = eigen.eigenvectors().col(0);
-      }
-    }
-    positions->InsertNextPoint(x.data());
-    directions->InsertNextTuple(direction.data());
-  }
-  seeds->SetPoints(positions);
-  seeds->GetPointData()->AddArray(directions);
-  return seeds;
+  return mask;
 }
 
 /// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
@@ -246,12 +208,19 @@ void RunTrace(const TraceArguments& args)
   settings->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   vtkIdType numberOfSeeds = 1;
-  if (!args.SeedsFile.empty() || !args.SeedMask.empty())
+  if (!args.SeedsFile.empty())
   {
-    vtkSmartPointer<vtkPolyData> seeds =
-      args.SeedMask.empty() ? ReadSeeds(args.SeedsFile) : SeedsFromMask(args, metric);
+    vtkSmartPointer<vtkPolyData> seeds = ReadSeeds(args.SeedsFile);
     numberOfSeeds = seeds->GetNumberOfPoints();
     tracer->SetInputData(seeds);
+  }
+  else if (!args.SeedMask.empty())
+  {
+    tracer->SetInputData(ReadSeedMask(args, numberOfSeeds));
+    tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
+    tracer->SetSeedDirection(
+      args.SeedDirection == "random" ? vtkRiemannGeodesicTracer::RANDOM : vtkRiemannGeodesicTracer::E1);
+    tracer->SetRandomSeed(static_cast<unsigned>(args.RandomSeed));
   }
   CheckOutputSize(args, numberOfSeeds);
   if (args.SeedsFile.empty() && args.SeedMask.empty())

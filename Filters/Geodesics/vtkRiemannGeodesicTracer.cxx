@@ -9,6 +9,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -20,11 +21,15 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
+#include "RiemannScalarImages.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -152,18 +157,67 @@ void TraceWithJacobian(const riemann::Metric& metric, const std::vector<Seed>& s
     metric, packetSeeds.data(), packetSeeds.size(), options, {}, false, visitor);
 }
 
+/**
+ * The starts of a mask (an input image without the direction array): its
+ * set voxels' seeds (riemann::MaskSeedPoints), each along E1 (g's
+ * eigenvector of the smallest eigenvalue; (1, 0, 0) where g fails, which
+ * the tracer then counts as untraced) or a random unit vector.
+ */
+std::vector<std::pair<riemann::Vec3, riemann::Vec3>> MaskStarts(
+  vtkRiemannGeodesicTracer* self, vtkImageData* mask, const riemann::Metric& metric)
+{
+  std::vector<std::pair<riemann::Vec3, riemann::Vec3>> starts;
+  const std::vector<double> points =
+    riemann::MaskSeedPoints(mask, self->GetSeedsPerVoxel(), self->GetRandomSeed());
+  // Not the points' generator: the directions do not depend on SeedsPerVoxel's draws.
+  std::mt19937 generator(self->GetRandomSeed() + 1u);
+  std::normal_distribution<double> normal;
+  for (std::size_t p = 0; p + 2 < points.size(); p += 3)
+  {
+    const riemann::Vec3 x(points[p], points[p + 1], points[p + 2]);
+    riemann::Vec3 direction(1.0, 0.0, 0.0);
+    if (self->GetSeedDirection() == vtkRiemannGeodesicTracer::RANDOM)
+    {
+      do
+      {
+        direction = riemann::Vec3(normal(generator), normal(generator), normal(generator));
+      } while (!(direction.norm() > 1e-12));
+    }
+    else
+    {
+      riemann::Mat3 g;
+      if (metric.Tensor(x, g) && g.allFinite())
+      {
+        direction = Eigen::SelfAdjointEigenSolver<riemann::Mat3>(g).eigenvectors().col(0);
+      }
+    }
+    starts.emplace_back(x, direction);
+  }
+  return starts;
+}
+
 /// Step 1 of RequestData: the seeds, in start order, one per start and
 /// direction of integration (two for BOTH). The starts are the input's points
-/// with their directions (or StartDirection), or StartPosition without an
-/// input. Returns the error that empties the output ("" when all is well);
-/// a missing direction array is only a warning.
-std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input, std::vector<Seed>& seeds)
+/// with their directions (or StartDirection), a mask's seeds (MaskStarts), or
+/// StartPosition without an input. Returns the error that empties the output
+/// ("" when all is well); a missing direction array is only a warning.
+std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input,
+  const riemann::Metric& metric, std::vector<Seed>& seeds)
 {
   const double* start = self->GetStartDirection();
   const riemann::Vec3 startDirection(start[0], start[1], start[2]);
   const char* arrayName = self->GetDirectionArrayName();
   std::vector<std::pair<riemann::Vec3, riemann::Vec3>> starts;
-  if (input)
+  auto* mask = vtkImageData::SafeDownCast(input);
+  if (mask && !(arrayName && mask->GetPointData()->GetArray(arrayName)))
+  {
+    if (!mask->GetPointData()->GetScalars())
+    {
+      return "The input image has neither a direction array nor scalars to seed from as a mask.";
+    }
+    starts = MaskStarts(self, mask, metric);
+  }
+  else if (input)
   {
     vtkDataArray* directions = arrayName ? input->GetPointData()->GetArray(arrayName) : nullptr;
     if (directions && directions->GetNumberOfComponents() != 3)
@@ -405,7 +459,7 @@ int vtkRiemannGeodesicTracer::RequestData(
   vtkDataSet* input =
     this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   std::vector<Seed> seeds;
-  const std::string error = GatherSeeds(this, input, seeds);
+  const std::string error = GatherSeeds(this, input, *metric, seeds);
   if (!error.empty())
   {
     this->ReportError(error);
@@ -455,6 +509,9 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
      << "DirectionArrayName: " << (this->DirectionArrayName ? this->DirectionArrayName : "(none)")
      << "\n";
   os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
+  os << indent << "SeedsPerVoxel: " << this->SeedsPerVoxel << "\n";
+  os << indent << "SeedDirection: " << (this->SeedDirection == RANDOM ? "RANDOM" : "E1") << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "UseDomainBounds: " << this->UseDomainBounds << "\n";
   os << indent << "DomainBounds: " << this->DomainBounds[0] << " " << this->DomainBounds[1] << " "
      << this->DomainBounds[2] << " " << this->DomainBounds[3] << " " << this->DomainBounds[4] << " "

@@ -104,6 +104,33 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Seeds from a mask: an input vtkImageData without the DirectionArrayName
+   * array is a mask (a region of interest). Its voxels whose active scalar
+   * is not 0 give SeedsPerVoxel seeds each (1: the voxel's centre; more:
+   * spread uniformly over the voxel, from RandomSeed, so the same settings
+   * give the same seeds: riemann::MaskSeedPoints), each with the direction
+   * SeedDirection says: E1 (default), the direction g makes cheapest at the
+   * seed (for a diffusion tensor's inverse D^-1, the principal diffusion
+   * direction: trace BOTH ways for tractography), or RANDOM, a random unit
+   * vector (from RandomSeed too).
+   */
+  enum SeedDirections
+  {
+    E1 = 0,
+    RANDOM = 1
+  };
+  vtkSetClampMacro(SeedsPerVoxel, int, 1, 1000);
+  vtkGetMacro(SeedsPerVoxel, int);
+  vtkSetClampMacro(SeedDirection, int, E1, RANDOM);
+  vtkGetMacro(SeedDirection, int);
+  void SetSeedDirectionToE1() { this->SetSeedDirection(E1); }
+  void SetSeedDirectionToRandom() { this->SetSeedDirection(RANDOM); }
+  vtkSetMacro(RandomSeed, unsigned int);
+  vtkGetMacro(RandomSeed, unsigned int);
+  ///@}
+
+  ///@{
   /// Name of the seeds' point-data direction vectors (default "Direction").
   vtkSetStringMacro(DirectionArrayName);
   vtkGetStringMacro(DirectionArrayName);
@@ -166,6 +193,9 @@ protected:
   bool UseDomainBounds = false;
   double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
   bool ComputeTransverseJacobian = false;
+  int SeedsPerVoxel = 1;
+  int SeedDirection = E1;
+  unsigned int RandomSeed = 1;
   /// Untraced seed-direction pairs by reason (index: the reason's code).
   std::vector<vtkIdType> UntracedSeeds;
 

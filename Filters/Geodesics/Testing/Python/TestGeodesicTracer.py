@@ -249,6 +249,54 @@ class TracerTest(unittest.TestCase):
                     for k, i in zip(lasts, a['SeedIds']))
         self.assertLess(worst, 1e-8)
 
+    def test_seeds_from_a_mask_image(self):
+        # A mask image as the input: seeds at its set voxels' centres, along
+        # e1 (for g = diag(4, 1, 9) the cheapest direction is y); with
+        # several seeds per voxel, spread in the voxel, the same RandomSeed
+        # gives the same seeds and another gives others.
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        m = riemann.vtkRiemannMetric()
+        self.assertTrue(m.SetDefinition(
+            '{"type": "tensor", "g": [["4","0","0"],["0","1","0"],["0","0","9"]]}'), m.GetLastError())
+        mask = vtkImageData()
+        mask.SetDimensions(4, 3, 2)
+        mask.SetOrigin(1.0, 2.0, 3.0)
+        mask.SetSpacing(0.5, 0.5, 0.5)
+        values = np.zeros(24, np.uint8)
+        values[[0, 5, 17]] = 1
+        mask.GetPointData().SetScalars(numpy_to_vtk(values, deep=True))
+
+        def trace(per_voxel, seed, direction=riemann.vtkRiemannGeodesicTracer.E1):
+            t = riemann.vtkRiemannGeodesicTracer()
+            t.SetMetric(m)
+            t.SetInputData(mask)
+            t.SetSeedsPerVoxel(per_voxel)
+            t.SetSeedDirection(direction)
+            t.SetRandomSeed(seed)
+            t.GetIntegrationSettings().SetMaximumPropagation(0.2)
+            t.Update()
+            self.assertEqual(t.GetLastError(), "")
+            out = t.GetOutput()
+            lines = lines_of(out)
+            points = vtk_to_numpy(out.GetPoints().GetData())
+            return points[[first for first, _ in lines]], points[[first + 1 for first, _ in lines]]
+
+        starts, seconds = trace(1, 1)
+        voxels = np.array([mask.GetPoint(i) for i in (0, 5, 17)])
+        np.testing.assert_allclose(starts, voxels, atol=1e-15)
+        steps = seconds - starts
+        np.testing.assert_allclose(np.abs(steps / np.linalg.norm(steps, axis=1)[:, None]),
+                                   [[0, 1, 0]] * 3, atol=1e-9)
+        a, _ = trace(5, 7)
+        b, _ = trace(5, 7)
+        c, _ = trace(5, 8)
+        self.assertEqual(len(a), 15)
+        np.testing.assert_array_equal(a, b)
+        self.assertGreater(np.abs(a - c).max(), 1e-3)
+        self.assertLessEqual(np.abs(a - np.repeat(voxels, 5, axis=0)).max(), 0.25 + 1e-12)
+        random, _ = trace(1, 3, riemann.vtkRiemannGeodesicTracer.RANDOM)
+        np.testing.assert_allclose(random, voxels, atol=1e-15)
+
 
 if __name__ == '__main__':
     result = unittest.main(exit=False, verbosity=2).result
