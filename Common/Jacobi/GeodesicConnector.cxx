@@ -372,16 +372,38 @@ std::vector<ConnectingGeodesic> MergeConnections(
   return distinct;
 }
 
-std::vector<ConnectingGeodesic> ConnectPoints(
+ConnectionProblem CheckConnection(
   const Metric& metric, const Vec3& p, const Vec3& q, const ConnectOptions& options)
 {
   if (!p.allFinite() || !q.allFinite())
   {
-    throw std::invalid_argument("the points must be finite");
+    return ConnectionProblem::NotFinite;
   }
-  if ((p - q).norm() <= options.Tolerance)
+  if (!metric.InsideData(p))
   {
-    throw std::invalid_argument("p and q are the same point (within the tolerance)");
+    return ConnectionProblem::StartOutsideData;
+  }
+  if (!metric.InsideData(q))
+  {
+    return ConnectionProblem::EndOutsideData;
+  }
+  return (p - q).norm() <= options.Tolerance ? ConnectionProblem::SamePoint : ConnectionProblem::None;
+}
+
+std::vector<ConnectingGeodesic> ConnectPoints(
+  const Metric& metric, const Vec3& p, const Vec3& q, const ConnectOptions& options)
+{
+  switch (CheckConnection(metric, p, q, options))
+  {
+    case ConnectionProblem::NotFinite:
+      throw std::invalid_argument("the points must be finite");
+    case ConnectionProblem::StartOutsideData:
+    case ConnectionProblem::EndOutsideData:
+      throw std::invalid_argument("a point is outside the metric's data (geodesics stop there)");
+    case ConnectionProblem::SamePoint:
+      throw std::invalid_argument("p and q are the same point (within the tolerance)");
+    case ConnectionProblem::None:
+      break;
   }
   const std::vector<Vec3> directions =
     ShootingDirections(metric, p, q, options.NumberOfDirections);

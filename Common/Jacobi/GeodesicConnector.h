@@ -140,8 +140,20 @@ RIEMANNCOMMONJACOBI_EXPORT void ClassifyConnection(
 RIEMANNCOMMONJACOBI_EXPORT std::vector<ConnectingGeodesic> MergeConnections(
   std::vector<ConnectingGeodesic> found, const ConnectOptions& options);
 
-/// Steps 1 to 4 on one thread. Throws std::invalid_argument for p = q, a
-/// point that is not finite, or g not positive definite at p.
+/// What keeps p and q from being joined, checked before any shooting.
+enum class ConnectionProblem
+{
+  None,
+  NotFinite,        ///< p or q is not finite
+  StartOutsideData, ///< p is outside the metric's data (Metric::InsideData)
+  EndOutsideData,   ///< q is
+  SamePoint         ///< |p - q| <= the tolerance
+};
+RIEMANNCOMMONJACOBI_EXPORT ConnectionProblem CheckConnection(
+  const Metric& metric, const Vec3& p, const Vec3& q, const ConnectOptions& options);
+
+/// Steps 1 to 4 on one thread. Throws std::invalid_argument for what
+/// CheckConnection refuses, or g not positive definite at p.
 RIEMANNCOMMONJACOBI_EXPORT std::vector<ConnectingGeodesic> ConnectPoints(
   const Metric& metric, const Vec3& p, const Vec3& q, const ConnectOptions& options);
 

@@ -29,14 +29,30 @@ vtkStandardNewMacro(vtkRiemannGeodesicConnector);
 vtkRiemannGeodesicConnector::vtkRiemannGeodesicConnector()
 {
   this->SetNumberOfInputPorts(0);
+  ApplyConnectionDefaults(this->GetIntegrationSettings());
+}
+
+void vtkRiemannGeodesicConnector::ApplyConnectionDefaults(vtkRiemannIntegrationSettings* settings)
+{
   // The conjugate locus's integration defaults (vtkRiemannConjugateLocus):
   // the Morse indices come from the same Maslov-phase search. The step
   // budget is large: no geodesic may stop before MaximumPropagation.
-  vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
   settings->SetIntegratorTypeToDormandPrince45();
   settings->SetMaximumIntegrationStep(0.1);
   settings->SetMaximumError(1e-8);
   settings->SetMaximumNumberOfSteps(10000000);
+}
+
+std::string vtkRiemannGeodesicConnector::CheckTolerance(double tolerance)
+{
+  if (tolerance >= MinimumTolerance && tolerance <= MaximumTolerance)
+  {
+    return std::string();
+  }
+  std::ostringstream why;
+  why << "Tolerance is " << tolerance << ": expected a number from " << MinimumTolerance << " to "
+      << MaximumTolerance << ".";
+  return why.str();
 }
 
 vtkRiemannGeodesicConnector::~vtkRiemannGeodesicConnector() = default;
@@ -54,14 +70,10 @@ std::string CheckProperties(const double start[3], const double end[3], double t
       return "StartPosition and EndPosition must be finite.";
     }
   }
-  if (!(tolerance >= vtkRiemannGeodesicConnector::MinimumTolerance &&
-        tolerance <= vtkRiemannGeodesicConnector::MaximumTolerance))
+  const std::string tolerable = vtkRiemannGeodesicConnector::CheckTolerance(tolerance);
+  if (!tolerable.empty())
   {
-    std::ostringstream why;
-    why << "Tolerance is " << tolerance << ": expected a number from "
-        << vtkRiemannGeodesicConnector::MinimumTolerance << " to "
-        << vtkRiemannGeodesicConnector::MaximumTolerance << ".";
-    return why.str();
+    return tolerable;
   }
   if (directions < 1 || directions > 1000000)
   {
@@ -229,14 +241,19 @@ int vtkRiemannGeodesicConnector::RequestData(
   options.Tolerance = this->Tolerance;
   options.NumberOfDirections = this->NumberOfDirections;
   options.MaximumIterations = this->MaximumNumberOfIterations;
-  if (!metric->InsideData(p) || !metric->InsideData(q))
+  // Finiteness was CheckProperties'.
+  const riemann::ConnectionProblem refused = riemann::CheckConnection(*metric, p, q, options);
+  if (refused == riemann::ConnectionProblem::StartOutsideData ||
+    refused == riemann::ConnectionProblem::EndOutsideData)
   {
-    this->ReportError(std::string(metric->InsideData(p) ? "EndPosition" : "StartPosition") +
+    this->ReportError(std::string(refused == riemann::ConnectionProblem::EndOutsideData
+                          ? "EndPosition"
+                          : "StartPosition") +
       " is outside the metric's data: geodesics stop there (a sampled volume with \"outside\": "
       "\"stop\").");
     return 1;
   }
-  if ((p - q).norm() <= options.Tolerance)
+  if (refused == riemann::ConnectionProblem::SamePoint)
   {
     this->ReportError("StartPosition and EndPosition are the same point (within the Tolerance).");
     return 1;

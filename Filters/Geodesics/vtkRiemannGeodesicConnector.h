@@ -40,6 +40,8 @@
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
 
+#include <string> // For CheckTolerance
+
 class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicConnector
   : public vtkRiemannGeodesicAlgorithm
 {
@@ -65,7 +67,16 @@ public:
   vtkGetMacro(Tolerance, double);
   static constexpr double MinimumTolerance = 1e-13;
   static constexpr double MaximumTolerance = 1e-2;
+  /// "" when `tolerance` is in that range, else why not ("Tolerance is ...").
+  static std::string CheckTolerance(double tolerance);
   ///@}
+
+  /**
+   * The integration defaults of a connection (dp45, steps of at most 0.1,
+   * MaximumError 1e-8, 10^7 steps), which this filter starts with and
+   * vtkRiemannMinimalGeodesics, whose Newton step is this one's, too.
+   */
+  static void ApplyConnectionDefaults(vtkRiemannIntegrationSettings* settings);
 
   ///@{
   /// Directions of the shooting grid, in [1, 1000000]. More finds geodesics

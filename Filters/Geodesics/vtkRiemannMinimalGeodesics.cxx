@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannGeodesicConnector.h"
 #include "vtkRiemannDistanceImage.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannParallelBatches.h"
@@ -22,19 +23,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 vtkStandardNewMacro(vtkRiemannMinimalGeodesics);
 
 vtkRiemannMinimalGeodesics::vtkRiemannMinimalGeodesics()
 {
   this->SetNumberOfInputPorts(1);
-  // vtkRiemannGeodesicConnector's integration defaults: Newton's.
-  vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
-  settings->SetIntegratorTypeToDormandPrince45();
-  settings->SetMaximumIntegrationStep(0.1);
-  settings->SetMaximumError(1e-8);
-  settings->SetMaximumNumberOfSteps(10000000);
+  // Newton's is the connector's: its integration defaults.
+  vtkRiemannGeodesicConnector::ApplyConnectionDefaults(this->GetIntegrationSettings());
 }
 
 vtkRiemannMinimalGeodesics::~vtkRiemannMinimalGeodesics() = default;
@@ -228,11 +224,10 @@ int vtkRiemannMinimalGeodesics::RequestData(
   {
     return 1;
   }
-  if (!(this->Tolerance >= 1e-13 && this->Tolerance <= 1e-2))
+  const std::string tolerable = vtkRiemannGeodesicConnector::CheckTolerance(this->Tolerance);
+  if (!tolerable.empty())
   {
-    std::ostringstream why;
-    why << "Tolerance is " << this->Tolerance << ": expected a number from 1e-13 to 0.01.";
-    this->ReportError(why.str());
+    this->ReportError(tolerable);
     return 1;
   }
   vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);
