@@ -40,6 +40,17 @@ TARGETS = [(1.6, 0.0, 0.0), (1.5, 0.3, 0.0), (0.2, 0.05, 0.0), (1.2, -1.2, 0.0),
            (-0.2, -0.9, 0.0)]
 
 
+def solid_actor(port, colour):
+    """An actor drawing the output at `port` in one colour."""
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(port)
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*colour)
+    return actor
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--metric", default=os.path.join(HERE, "..", "Data", "metrics", "two-bumps.json"))
@@ -103,42 +114,23 @@ def main():
     fronts = vtkContourFilter()
     fronts.SetInputConnection(slice_.GetOutputPort())
     fronts.GenerateValues(23, 0.2, 4.6)
-    fronts_mapper = vtkPolyDataMapper()
-    fronts_mapper.SetInputConnection(fronts.GetOutputPort())
-    fronts_mapper.ScalarVisibilityOff()
-    fronts_actor = vtkActor()
-    fronts_actor.SetMapper(fronts_mapper)
-    fronts_actor.GetProperty().SetColor(0.05, 0.05, 0.05)
+    fronts_actor = solid_actor(fronts.GetOutputPort(), (0.05, 0.05, 0.05))
     fronts_actor.GetProperty().SetLineWidth(1.5)
     fronts_actor.SetPosition(0, 0, 0.01)
 
-    cut_mapper = vtkPolyDataMapper()
-    cut_mapper.SetInputConnection(cut.GetOutputPort())
-    cut_mapper.ScalarVisibilityOff()
-    cut_actor = vtkActor()
-    cut_actor.SetMapper(cut_mapper)
-    cut_actor.GetProperty().SetColor(1, 1, 1)
+    cut_actor = solid_actor(cut.GetOutputPort(), (1, 1, 1))
     cut_actor.GetProperty().SetOpacity(0.55)
 
     tubes = vtkTubeFilter()
     tubes.SetInputConnection(minimal.GetOutputPort())
     tubes.SetRadius(0.025)
     tubes.SetNumberOfSides(12)
-    tubes_mapper = vtkPolyDataMapper()
-    tubes_mapper.SetInputConnection(tubes.GetOutputPort())
-    tubes_mapper.ScalarVisibilityOff()
-    tubes_actor = vtkActor()
-    tubes_actor.SetMapper(tubes_mapper)
-    tubes_actor.GetProperty().SetColor(1.0, 0.82, 0.15)
+    tubes_actor = solid_actor(tubes.GetOutputPort(), (1.0, 0.82, 0.15))
 
     seed = vtkSphereSource()
     seed.SetCenter(*SEED)
     seed.SetRadius(0.07)
-    seed_mapper = vtkPolyDataMapper()
-    seed_mapper.SetInputConnection(seed.GetOutputPort())
-    seed_actor = vtkActor()
-    seed_actor.SetMapper(seed_mapper)
-    seed_actor.GetProperty().SetColor(0.95, 0.3, 0.2)
+    seed_actor = solid_actor(seed.GetOutputPort(), (0.95, 0.3, 0.2))
 
     renderer = vtkRenderer()
     renderer.SetBackground(0.1, 0.1, 0.12)

@@ -21,6 +21,9 @@ namespace studio
 /// "cool-to-warm" (the default, as in ParaView), "viridis", "rainbow", "grayscale".
 QStringList ColorMapNames();
 
+/// The picked ray's colour (magenta), and what is drawn like it (connections).
+constexpr double PickedRayColor[3] = { 1.0, 0.25, 0.9 };
+
 /**
  * Colour `actor` (whose mapper draws `data`) by `array` (a point or cell
  * array; "Solid" or a missing array: `solid` RGB) through `map`, over the

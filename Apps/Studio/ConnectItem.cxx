@@ -30,17 +30,16 @@ ConnectItem::ConnectItem(const QString& name)
         "dp45", 10.0))
 {
   // The picked ray's look (OutsideView::ShowPickedRay): magenta tubes.
-  double magenta[3] = { 1.0, 0.25, 0.9 };
   this->Tubes->SetNumberOfSides(8);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(this->Tubes->GetOutputPort());
   this->Lines->SetMapper(mapper);
-  this->Lines->GetProperty()->SetColor(magenta);
+  this->Lines->GetProperty()->SetColor(PickedRayColor[0], PickedRayColor[1], PickedRayColor[2]);
   this->Assembly->AddPart(this->Lines);
   vtkNew<vtkPolyDataMapper> endMapper;
   endMapper->SetInputConnection(this->End->GetOutputPort());
   this->EndBall->SetMapper(endMapper);
-  this->EndBall->GetProperty()->SetColor(magenta);
+  this->EndBall->GetProperty()->SetColor(PickedRayColor[0], PickedRayColor[1], PickedRayColor[2]);
   this->Assembly->AddPart(this->EndBall);
   this->UpdateDisplay();
 }
@@ -112,9 +111,8 @@ void ConnectItem::UpdateDisplay()
     this->Tubes->SetRadius(0.006 * size);
     this->End->SetRadius(0.02 * size);
   }
-  const double magenta[3] = { 1.0, 0.25, 0.9 };
   ApplyColoring(this->Lines, lines, this->Text("ColorArray"), this->Text("ColorMap"),
-    this->Number("Opacity"), magenta);
+    this->Number("Opacity"), PickedRayColor);
   const bool shown = lines && lines->GetNumberOfLines() > 0;
   this->Lines->SetVisibility(shown);
   this->EndBall->SetVisibility(shown);

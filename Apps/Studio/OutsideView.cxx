@@ -1,5 +1,6 @@
 #include "OutsideView.h"
 
+#include "ColorMaps.h"
 #include "PipelineItem.h"
 #include "StudioDocument.h"
 
@@ -107,9 +108,8 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
   // The picked ray: a tube, and a ball where it ended.
   this->RayTube->SetInputData(this->Ray);
   this->RayTube->SetNumberOfSides(8);
-  const double rayColor[3] = { 1.0, 0.25, 0.9 };
-  SetUpActor(this->RayActor, this->RayTube->GetOutputPort(), rayColor);
-  SetUpActor(this->RayEndActor, this->RayEnd->GetOutputPort(), rayColor);
+  SetUpActor(this->RayActor, this->RayTube->GetOutputPort(), PickedRayColor);
+  SetUpActor(this->RayEndActor, this->RayEnd->GetOutputPort(), PickedRayColor);
   // One colour: the bundle's arrays on the ray must not colour it.
   this->RayActor->GetMapper()->ScalarVisibilityOff();
   this->RayEnd->SetRadius(0.06);

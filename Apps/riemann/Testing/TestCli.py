@@ -41,7 +41,9 @@ def twist_exact(p, d, s):
     return (cz * q[0] - sz * q[1], sz * q[0] + cz * q[1], q[2])
 
 
-class TraceTests(unittest.TestCase):
+class TempDirTest(unittest.TestCase):
+    """A test case with a fresh folder, self.dir, removed after each test."""
+
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.dir = self.tmp.name
@@ -49,6 +51,8 @@ class TraceTests(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+
+class TraceTests(TempDirTest):
     def read_csv(self, path):
         with open(path, newline="") as f:
             rows = list(csv.DictReader(f))
@@ -208,15 +212,8 @@ class StartupTests(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(folder, "x.png")))
 
 
-class RenderTests(unittest.TestCase):
+class RenderTests(TempDirTest):
     """riemann render: needs an X display (ctest runs under xvfb-run)."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def test_bundle_side_by_side(self):
         out = os.path.join(self.dir, "bundle.png")
@@ -296,16 +293,9 @@ class RenderTests(unittest.TestCase):
         self.assertEqual(status, 0, err)
 
 
-class HostileInputTests(unittest.TestCase):
+class HostileInputTests(TempDirTest):
     """Files that crashed or hung riemann: meshes (Rendering/Scene/Testing/Data/hostile-meshes)
     and tensor volumes (Common/Core/Testing/Data/hostile-tensors)."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def test_each_is_a_clear_error_with_no_output(self):
         folder = os.path.join(os.path.dirname(__file__), "../../../Rendering/Scene/Testing/Data/hostile-meshes")
@@ -489,16 +479,9 @@ class FilePathTests(unittest.TestCase):
         self.assertFalse(os.path.exists(out))
 
 
-class InterruptTests(unittest.TestCase):
+class InterruptTests(TempDirTest):
     """SIGINT and SIGTERM stop a command: exit 130 / 143, one line, this run's
     partial files removed, earlier outputs and other processes' files kept."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def interrupt(self, sig, name, status):
         out = os.path.join(self.dir, "c.vtp")
@@ -534,18 +517,11 @@ class InterruptTests(unittest.TestCase):
         self.interrupt(signal.SIGTERM, "SIGTERM", 143)
 
 
-class ConcurrentWriteTests(unittest.TestCase):
+class ConcurrentWriteTests(TempDirTest):
     """Several runs writing one .pvti name: whatever order they finish in,
     the summary names pieces that exist and are of the same run (before,
     12 of 20 rounds of four runs left a summary with no pieces or another
     run's pieces)."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def test_one_name_many_runs(self):
         import re
@@ -608,18 +584,11 @@ class IntegrationOptionTests(unittest.TestCase):
         self.assertTrue(os.path.exists(out))
 
 
-class ConnectTests(unittest.TestCase):
+class ConnectTests(TempDirTest):
     """riemann connect: every geodesic from p to q, against the round sphere's
     great circles and the twist's straight lines."""
 
     SPHERE = os.path.join(METRICS, "round-sphere.json")
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     @staticmethod
     def on_sphere(x):
@@ -687,16 +656,9 @@ class ConnectTests(unittest.TestCase):
                 self.assertEqual(os.listdir(self.dir), [])
 
 
-class DistanceTests(unittest.TestCase):
+class DistanceTests(TempDirTest):
     """riemann distance: the twist's exact distance |Phi(x) - Phi(p)|, seeds'
     Voronoi regions, the cut locus file, and bad input refused before work."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     @staticmethod
     def read(path):
@@ -764,19 +726,12 @@ class DistanceTests(unittest.TestCase):
                 self.assertEqual(os.listdir(self.dir), [])
 
 
-class TractographyTests(unittest.TestCase):
+class TractographyTests(TempDirTest):
     """Tracing a sampled tensor volume as a tractography user does: seeds on
     the volume's faces are inside it (up to the rounding of its affine map),
     and every seed that makes no geodesic is counted, with why."""
 
     PHANTOM = os.path.join(DATA, "phantom", "fibre-phantom.json")
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def test_face_seeds_are_inside_and_untraced_seeds_are_counted(self):
         # The phantom's voxel centres on its x faces, 1e-13 beyond them (as a
@@ -934,7 +889,7 @@ class TractographyTests(unittest.TestCase):
         return [float(rows[i].split(",")[i]) for i in range(3)]
 
 
-class PictureOptionTests(unittest.TestCase):
+class PictureOptionTests(TempDirTest):
     """The camera and picture options of render are the picture schema's
     (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words
     as a scene's "camera" block."""
@@ -951,13 +906,6 @@ class PictureOptionTests(unittest.TestCase):
         "--fov": "FLOAT:in (0, 179]",
         "--projection": "TEXT:perspective|equirectangular",
     }
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def scene(self, camera):
         import json
@@ -1038,15 +986,8 @@ class PictureOptionTests(unittest.TestCase):
         self.assertGreater(abs(p.astype(float) - q.astype(float)).mean(), 5)
 
 
-class CpuRenderTests(unittest.TestCase):
+class CpuRenderTests(TempDirTest):
     """riemann render --backend cpu (the Embree tracer)."""
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def test_cpu_matches_the_gpu_baselines(self):
         # The GPU's committed pictures of the paper's figures are the CPU's
