@@ -57,6 +57,10 @@ PACKAGES=(
   # SciPy: the comparisons of Testing/Benchmarks (between_points_vs_scipy.py,
   # trace_vs_scipy.py); no test needs it.
   python3-scipy
+  # DIPY and nibabel: the tractography interop tests (nibabel reads our .trk
+  # and .tck) and the DIPY comparison (Examples/tractography_dipy.py,
+  # Testing/Benchmarks); never needed by the library.
+  python3-dipy python3-nibabel
 )
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }

@@ -1,5 +1,7 @@
-// riemann trace: geodesics of a metric from one seed or a CSV of seeds, written
-// as .vtp (VTK XML polylines) or .csv (seed_id,step,t,x,y,z,vx,vy,vz).
+// riemann trace: geodesics of a metric from one seed, a CSV of seeds, a mask
+// or a streamline file, written as .vtp (VTK XML polylines), .csv
+// (seed_id,step,t,x,y,z,vx,vy,vz) or, for tractography, .tck / .trk
+// (TractOptions.h, with the stop and selection options).
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvColumns.h"
@@ -9,6 +11,7 @@
 #include "GeodesicTrace.h"
 #include "InputFiles.h"
 #include "RiemannScalarImages.h"
+#include "TractOptions.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -43,7 +46,7 @@ namespace cli
 namespace
 {
 /// The largest TerminationReason code (GeodesicTrace.h), for the summary's counts.
-constexpr int MaximumReason = OutOfData;
+constexpr int MaximumReason = LastTerminationReason;
 
 struct TraceArguments
 {
@@ -65,6 +68,7 @@ struct TraceArguments
   double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
   long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
   bool TransverseJacobian = false;
+  TractArguments Tracts;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;
@@ -118,9 +122,14 @@ vtkSmartPointer<vtkImageData> ReadSeedMask(const TraceArguments& args, vtkIdType
   return mask;
 }
 
-/// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order, extra columns ignored).
+/// Reads seeds from a CSV with a header naming x,y,z,dx,dy,dz (any order,
+/// extra columns ignored), or from a streamline file (SeedsFromTracts).
 vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
 {
+  if (IsTractFile(path) || Extension(path) == "vtp")
+  {
+    return SeedsFromTracts(path);
+  }
   std::vector<long long> lines;
   const std::vector<std::vector<double>> rows =
     ReadCsvColumns(path, { "x", "y", "z", "dx", "dy", "dz" }, "seeds", 10000000, &lines);
@@ -177,12 +186,18 @@ void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds)
 
 void RunTrace(const TraceArguments& args)
 {
-  CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile }, { "--seed-mask", args.SeedMask } },
-    { { "-o", args.Output } });
-  const std::string extension = Extension(args.Output);
-  if (extension != "vtp" && extension != "csv" && extension != "pvtp")
+  std::vector<NamedPath> inputs = { { "-m", args.Metric },
+    { "--seeds", args.SeedsFile }, { "--seed-mask", args.SeedMask } };
+  for (const auto& input : TractInputFiles(args.Tracts))
   {
-    throw Failure("-o " + args.Output + ": the output must end in .vtp, .pvtp or .csv", 2);
+    inputs.push_back(input);
+  }
+  CheckFilePaths(inputs, { { "-o", args.Output } });
+  const std::string extension = Extension(args.Output);
+  if (extension != "vtp" && extension != "csv" && extension != "pvtp" && !IsTractFile(args.Output))
+  {
+    throw Failure(
+      "-o " + args.Output + ": the output must end in .vtp, .pvtp, .csv, .tck or .trk", 2);
   }
   const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
   static const std::map<std::string, int> propagations = {
@@ -207,6 +222,7 @@ void RunTrace(const TraceArguments& args)
   settings->SetMaximumPropagation(args.Length);
   settings->SetMaximumNumberOfSteps(args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
+  ApplyTractOptions(args.Tracts, tracer);
   vtkIdType numberOfSeeds = 1;
   if (!args.SeedsFile.empty())
   {
@@ -214,15 +230,25 @@ void RunTrace(const TraceArguments& args)
     numberOfSeeds = seeds->GetNumberOfPoints();
     tracer->SetInputData(seeds);
   }
-  else if (!args.SeedMask.empty())
+  vtkSmartPointer<vtkImageData> seedMask;
+  if (args.SeedsFile.empty() && !args.SeedMask.empty())
   {
-    tracer->SetInputData(ReadSeedMask(args, numberOfSeeds));
+    seedMask = ReadSeedMask(args, numberOfSeeds);
+    tracer->SetInputData(seedMask);
     tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
     tracer->SetSeedDirection(
       args.SeedDirection == "random" ? vtkRiemannGeodesicTracer::RANDOM : vtkRiemannGeodesicTracer::E1);
     tracer->SetRandomSeed(static_cast<unsigned>(args.RandomSeed));
   }
   CheckOutputSize(args, numberOfSeeds);
+  // A .trk's reference, before the work: a run without one is refused at once.
+  TractReference reference;
+  if (extension == "trk")
+  {
+    TractArguments tracts = args.Tracts;
+    tracts.SeedMask = args.SeedMask;
+    reference = ChooseTrkReference(tracts, metric, seedMask);
+  }
   if (args.SeedsFile.empty() && args.SeedMask.empty())
   {
     double seed[3], direction[3];
@@ -250,22 +276,34 @@ void RunTrace(const TraceArguments& args)
       counts[2 + std::min(std::max(reason, 0), MaximumReason)]++;
     }
   }
-  // The seeds that made no geodesic, by why (after the lines' reasons).
+  // The seeds that made no geodesic, by why (after the lines' reasons), then
+  // the tracts the selection dropped, by why.
   for (int reason = 0; reason <= MaximumReason; ++reason)
   {
     counts.push_back(static_cast<long long>(tracer->GetNumberOfUntracedSeeds(reason)));
   }
+  for (int why = 0; why <= LastTractRejection; ++why)
+  {
+    counts.push_back(static_cast<long long>(tracer->GetNumberOfRejectedTracts(why)));
+  }
   counts = SumOverRanks(counts);
   const std::string untraced = DescribeUntraced(counts.data() + 2 + MaximumReason + 1);
+  const std::string rejected = DescribeRejectedTracts(counts.data() + 2 + 2 * (MaximumReason + 1));
   if (counts[0] == 0)
   {
+    std::string why = untraced;
+    why += (why.empty() || rejected.empty() ? "" : "; ") + rejected;
     throw Failure("no geodesic could be traced from the given seeds" +
-      (untraced.empty() ? std::string() : ": " + untraced));
+      (why.empty() ? std::string() : ": " + why));
   }
 
   WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
     [&](vtkPolyData* all, const std::string& temporary)
     {
+      if (IsTractFile(args.Output))
+      {
+        return WriteTractFile(all, temporary, args.Output, reference);
+      }
       return extension == "csv" ? WriteGeodesicCsv(all, temporary)
                                 : WritePolyDataFile(all, temporary, args.Compress);
     });
@@ -290,6 +328,10 @@ void RunTrace(const TraceArguments& args)
   {
     std::cerr << "; " << untraced;
   }
+  if (!rejected.empty())
+  {
+    std::cerr << "; " << rejected;
+  }
   if (IsDistributed())
   {
     std::cerr << "; " << NumberOfRanks() << " ranks";
@@ -312,7 +354,8 @@ void RegisterTraceCommand(CLI::App& app)
     ->check(Direction3());
   command
     ->add_option("--seeds", args->SeedsFile,
-      "CSV of seeds with header x,y,z,dx,dy,dz (replaces --seed/--direction)")
+      "CSV of seeds with header x,y,z,dx,dy,dz, or a streamline file (.tck, .trk, .vtp: each "
+      "streamline's first point along its tangent there) (replaces --seed/--direction)")
     ->check(CLI::ExistingFile)
     ->excludes(command->get_option("--seed"))
     ->excludes(command->get_option("--direction"));
@@ -348,11 +391,14 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_flag("--transverse-jacobian", args->TransverseJacobian,
     "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
     "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
+  AddTractOptions(command, args->Tracts);
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
-    ->add_option(
-      "--output,-o", args->Output, std::string("Output file: .vtp, .csv, or .pvtp ") + PiecesHelp)
+    ->add_option("--output,-o", args->Output,
+      std::string("Output file: .vtp, .csv, .tck or .trk (streamlines in RAS+ mm, one per seed: "
+                  "both halves joined), or .pvtp ") +
+        PiecesHelp)
     ->required();
   command->callback(
     [args, propagation]()

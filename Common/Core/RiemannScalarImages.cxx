@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkStructuredPointsReader.h"
@@ -148,5 +149,36 @@ std::vector<double> MaskSeedPoints(vtkImageData* mask, int perVoxel, unsigned ra
     }
   }
   return points;
+}
+VoxelMask VoxelMaskFromImage(vtkImageData* image)
+{
+  VoxelMask mask;
+  vtkDataArray* values = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!values)
+  {
+    return mask;
+  }
+  int dimensions[3];
+  image->GetDimensions(dimensions);
+  double origin[3], spacing[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  const double* direction = image->GetDirectionMatrix()->GetData();
+  for (int a = 0; a < 3; ++a)
+  {
+    mask.Dimensions[a] = dimensions[a];
+    mask.Origin[a] = origin[a];
+    mask.Spacing[a] = spacing[a];
+    for (int b = 0; b < 3; ++b)
+    {
+      mask.Direction(a, b) = direction[3 * a + b];
+    }
+  }
+  mask.Set.resize(static_cast<std::size_t>(values->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    mask.Set[static_cast<std::size_t>(i)] = values->GetComponent(i, 0) != 0.0 ? 1 : 0;
+  }
+  return mask;
 }
 } // namespace riemann

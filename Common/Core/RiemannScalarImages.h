@@ -10,6 +10,7 @@
 
 #include "RiemannCommonCoreModule.h" // For export macro
 
+#include "TractStops.h"      // For VoxelMask
 #include "vtkSmartPointer.h" // For the returned images
 
 #include <string>
@@ -38,6 +39,12 @@ RIEMANNCOMMONCORE_EXPORT vtkSmartPointer<vtkImageData> ReadScalarImageFile(
  */
 RIEMANNCOMMONCORE_EXPORT std::vector<double> MaskSeedPoints(
   vtkImageData* mask, int perVoxel, unsigned randomSeed);
+/**
+ * The image's active scalars as a VoxelMask (set where not 0), with the
+ * image's origin, spacing and direction. An image without scalars gives an
+ * empty mask.
+ */
+RIEMANNCOMMONCORE_EXPORT VoxelMask VoxelMaskFromImage(vtkImageData* image);
 } // namespace riemann
 
 #endif

@@ -84,7 +84,7 @@ bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName,
         "outside: expected \"euclidean\" or \"stop\", got \"" + outsideName + "\"");
     }
     riemann::SampledTensorOptions options;
-    options.Inverse = inverse;
+    options.Kind = inverse ? riemann::TensorMetricKind::Inverse : riemann::TensorMetricKind::Tensor;
     options.Scale = scale;
     options.Repair = repair;
     options.StopOutside = outsideName == "stop";

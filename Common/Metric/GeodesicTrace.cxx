@@ -27,6 +27,12 @@ const char* TerminationReasonName(int reason)
       return "hit a surface";
     case OutOfData:
       return "left the sampled data";
+    case StoppedByMask:
+      return "left the stop mask";
+    case LowAnisotropy:
+      return "fell below the anisotropy threshold";
+    case SharpTurn:
+      return "turned too sharply";
     default:
       return "unknown";
   }

@@ -29,7 +29,29 @@ enum TerminationReason : int
   DegenerateMetric = 8,
   HitSurface = 9,
   /// Left the volume of a sampled metric with "outside": "stop" (Metric::InsideData).
-  OutOfData = 10
+  OutOfData = 10,
+  /// Tractography (TractStops.h): reached a voxel where the stop mask is 0,
+  StoppedByMask = 11,
+  /// reached fractional anisotropy below the threshold,
+  LowAnisotropy = 12,
+  /// turned more sharply than the largest angle per mm between steps.
+  SharpTurn = 13
+};
+
+/// The largest TerminationReason code (for tables of counts by reason).
+constexpr int LastTerminationReason = SharpTurn;
+
+/**
+ * A rule that ends geodesics at some points of space (tractography's stop
+ * mask and anisotropy threshold: TractStopRules). Consulted at every point
+ * of a path, the seed included; must be safe to call from several threads.
+ */
+class RIEMANNCOMMONMETRIC_EXPORT StopCondition
+{
+public:
+  virtual ~StopCondition() = default;
+  /// The TerminationReason for stopping at x, or 0 to go on.
+  virtual int ReasonToStop(const Vec3& x) const = 0;
 };
 
 /// A short English name for a TerminationReason ("out of length", ...).
@@ -56,6 +78,8 @@ struct GeodesicOptions
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   /// Record g(v,v)/g(v0,v0) - 1 at every point (one metric evaluation per step).
   bool RecordSpeedDrift = true;
+  /// Also stop where this says (not owned; null: no such rule).
+  const StopCondition* Stop = nullptr;
 };
 
 /// x within options.Bounds, or true when !options.UseBounds.
@@ -68,7 +92,8 @@ inline bool InsideBounds(const GeodesicOptions& options, const Vec3& x)
 
 /**
  * Why a geodesic at x stops before stepping on, or 0: OutOfDomain outside
- * options.Bounds, OutOfData outside the metric's data.
+ * options.Bounds, OutOfData outside the metric's data, else options.Stop's
+ * reason.
  */
 inline int ReasonToStopAt(const Metric& metric, const GeodesicOptions& options, const Vec3& x)
 {
@@ -76,7 +101,11 @@ inline int ReasonToStopAt(const Metric& metric, const GeodesicOptions& options, 
   {
     return OutOfDomain;
   }
-  return metric.InsideData(x) ? 0 : OutOfData;
+  if (!metric.InsideData(x))
+  {
+    return OutOfData;
+  }
+  return options.Stop ? options.Stop->ReasonToStop(x) : 0;
 }
 
 /**

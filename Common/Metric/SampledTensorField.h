@@ -102,6 +102,13 @@ public:
   /// The grid coordinates (i, j, k as reals) of world point p.
   Vec3 GridCoordinates(const Vec3& p) const;
   const SampledTensorGrid& GetGrid() const { return this->Grid; }
+  /**
+   * The diffusion tensor these metric samples stand for is g^q up to a scale
+   * (q = DiffusionExponent() of the "tensor_metric" that made them: -1 for
+   * D^-1). Tractography's anisotropy (FractionalAnisotropyOfMetric) reads it.
+   */
+  void SetDiffusionExponent(double q) { this->DiffusionExponent = q; }
+  double GetDiffusionExponent() const { return this->DiffusionExponent; }
 
 protected:
   void AppendSamplePoints(std::vector<Vec3>& points) const override;
@@ -114,6 +121,7 @@ private:
 
   SampledTensorGrid Grid;
   bool StopOutside = false;
+  double DiffusionExponent = -1.0;
   /// The samples in float for the GPU, made on the first EmitGlsl().
   mutable std::once_flag TexelsMade;
   mutable std::shared_ptr<const std::vector<float>> DiagonalTexels;

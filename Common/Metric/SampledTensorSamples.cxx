@@ -50,7 +50,63 @@ std::string Where(const SampledTensorGrid& grid, const std::array<int, 3>& index
        << x[1] << ", " << x[2] << ")";
   return text.str();
 }
+/// The eigenvalues of the metric `kind` makes of a tensor with eigenvalues l.
+Vec3 MetricEigenvalues(TensorMetricKind kind, double sharpening, const Vec3& l)
+{
+  switch (kind)
+  {
+    case TensorMetricKind::Tensor:
+      return l;
+    case TensorMetricKind::Inverse:
+      return l.cwiseInverse();
+    case TensorMetricKind::Adjugate:
+      return Vec3(l[1] * l[2], l[0] * l[2], l[0] * l[1]);
+    case TensorMetricKind::Sharpened:
+    {
+      // Through logarithms: l_geo^(p-1) l_i^-p overflows no sooner than the result.
+      const double logGeometricMean = (std::log(l[0]) + std::log(l[1]) + std::log(l[2])) / 3.0;
+      Vec3 g;
+      for (int i = 0; i < 3; ++i)
+      {
+        g[i] = std::exp((sharpening - 1.0) * logGeometricMean - sharpening * std::log(l[i]));
+      }
+      return g;
+    }
+  }
+  return l;
+}
 } // namespace
+
+const char* TensorMetricName(TensorMetricKind kind)
+{
+  switch (kind)
+  {
+    case TensorMetricKind::Tensor:
+      return "tensor";
+    case TensorMetricKind::Inverse:
+      return "inverse";
+    case TensorMetricKind::Adjugate:
+      return "adjugate";
+    case TensorMetricKind::Sharpened:
+      return "sharpened";
+  }
+  return "tensor";
+}
+
+double DiffusionExponent(TensorMetricKind kind, double sharpening)
+{
+  switch (kind)
+  {
+    case TensorMetricKind::Tensor:
+      return 1.0;
+    case TensorMetricKind::Inverse:
+    case TensorMetricKind::Adjugate:
+      return -1.0;
+    case TensorMetricKind::Sharpened:
+      return -1.0 / sharpening;
+  }
+  return 1.0;
+}
 
 std::string SampledTensorOptions::Check() const
 {
@@ -58,6 +114,11 @@ std::string SampledTensorOptions::Check() const
   if (!std::isfinite(this->Scale) || !(this->Scale > 0.0))
   {
     problem << "the scale must be a finite positive number, got " << this->Scale;
+  }
+  else if (!(this->Sharpening >= 1.0 && this->Sharpening <= 16.0))
+  {
+    problem << "the sharpening must be a number in [1, 16] (1: the inverse), got "
+            << this->Sharpening;
   }
   else if (!(this->RelativeFloor > 0.0 && this->RelativeFloor < 1.0))
   {
@@ -158,7 +219,7 @@ std::string PrepareTensorSamples(
     auto middle = meanDiffusivities.begin() + static_cast<std::ptrdiff_t>(meanDiffusivities.size() / 2);
     std::nth_element(meanDiffusivities.begin(), middle, meanDiffusivities.end());
     found.MedianMeanDiffusivity = *middle;
-    scale *= options.Inverse ? *middle : 1.0 / *middle;
+    scale /= MetricEigenvalues(options.Kind, options.Sharpening, Vec3::Constant(*middle))[0];
   }
   found.AppliedScale = scale;
 
@@ -182,14 +243,11 @@ std::string PrepareTensorSamples(
       }
     }
     found.Repaired += clamped ? 1 : 0;
-    if (!clamped && !options.Inverse && scale == 1.0)
+    if (!clamped && options.Kind == TensorMetricKind::Tensor && scale == 1.0)
     {
       continue; // kept exactly as given
     }
-    if (options.Inverse)
-    {
-      eigenvalues = eigenvalues.cwiseInverse();
-    }
+    eigenvalues = MetricEigenvalues(options.Kind, options.Sharpening, eigenvalues);
     const Mat3& v = solver.eigenvectors();
     StoreAt(grid, point, scale * (v * eigenvalues.asDiagonal() * v.transpose()));
   }
@@ -208,6 +266,8 @@ std::shared_ptr<const Metric> MakeSampledTensorMetric(
   {
     throw std::invalid_argument(problem);
   }
-  return std::make_shared<TensorMetric>(std::make_shared<SampledTensorField>(std::move(grid), options.StopOutside));
+  auto field = std::make_shared<SampledTensorField>(std::move(grid), options.StopOutside);
+  field->SetDiffusionExponent(DiffusionExponent(options.Kind, options.Sharpening));
+  return std::make_shared<TensorMetric>(std::move(field));
 }
 } // namespace riemann

@@ -22,6 +22,44 @@
 
 namespace riemann
 {
+/**
+ * Which metric a tensor D of the data gives (JSON "tensor_metric"), through
+ * its eigenvalues l_i (same eigenvectors):
+ * - Tensor: g = D (the data is a metric already);
+ * - Inverse: g = D^-1, eigenvalues 1 / l_i (O'Donnell, Haker and Westin
+ *   2002): moving along the principal diffusion direction is cheap;
+ * - Adjugate: g = det(D) D^-1, eigenvalues l_j l_k (Fuster, Dela Haije et
+ *   al. 2016): a geodesic of the adjugate metric is a geodesic of D^-1
+ *   reparametrised only where det D is constant; elsewhere the factor
+ *   det D draws geodesics away from where diffusion is slow overall;
+ * - Sharpened: g = det(D)^((p-1)/3) D^-p, eigenvalues (1 / l_i)
+ *   (l_i / l_geo)^(1-p), l_geo = (l_1 l_2 l_3)^(1/3) and p =
+ *   Sharpening >= 1: D^-1 with its anisotropy raised to the power p and its
+ *   volume form kept (det g = det D^-1). FA grows with p, so geodesics keep
+ *   to the principal direction more tightly in moderately anisotropic
+ *   voxels (the tensor sharpening of Lenglet et al. 2009 and of the
+ *   adaptive metrics of Hao, Whitaker and Fletcher 2011); p = 1 is Inverse.
+ */
+enum class TensorMetricKind
+{
+  Tensor,
+  Inverse,
+  Adjugate,
+  Sharpened
+};
+
+/// The JSON name of each kind: "tensor", "inverse", "adjugate", "sharpened".
+RIEMANNCOMMONMETRIC_EXPORT const char* TensorMetricName(TensorMetricKind kind);
+
+/**
+ * The exponent q with which the diffusion tensor a metric of `kind` stands
+ * for is, up to a scale at each point, g^q: 1 for Tensor, -1 for Inverse
+ * and Adjugate, -1/p for Sharpened. Fractional anisotropy is scale
+ * invariant, so the FA of that tensor is the FA of g's eigenvalues to the
+ * power q (FractionalAnisotropyOfMetric).
+ */
+RIEMANNCOMMONMETRIC_EXPORT double DiffusionExponent(TensorMetricKind kind, double sharpening);
+
 /// What the "sampled" family does to the data's tensors, in this order.
 struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
 {
@@ -29,14 +67,17 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
   /// instead of refusing samples that are not positive definite.
   bool Repair = false;
   double RelativeFloor = 1e-3;
-  /// Use each sample's inverse (a diffusion tensor's metric).
-  bool Inverse = false;
-  /// Multiply the metric by this (after the inverse).
+  /// The metric of each sample (after any repair): the tensor, its
+  /// inverse, its adjugate or its sharpened inverse (TensorMetricKind).
+  TensorMetricKind Kind = TensorMetricKind::Tensor;
+  /// The power p of Sharpened (>= 1; JSON "sharpening", default 2).
+  double Sharpening = 2.0;
+  /// Multiply the metric by this (after the tensor's metric is made).
   double Scale = 1.0;
   /**
    * Also multiply it so that a sample equal to the data's median mean
-   * diffusivity times I becomes I (by that median with Inverse, by its
-   * inverse without): arc length is then Euclidean length where the data
+   * diffusivity m times I becomes I (by 1 / f(m), f(m) I the metric Kind
+   * makes of m I: m, 1 / m, m^2 or 1 / m): arc length is then Euclidean length where the data
    * is isotropic, whatever the tensors' units (mm^2/s, um^2/ms), so steps
    * and lengths are in the units of the voxels' positions (mm). The median
    * is over the positive definite samples (JSON "scale": "mean-diffusivity").

@@ -99,6 +99,7 @@ public:
   bool Christoffel(const Vec3& p, Mat3Stack& gamma) const override;
   bool InsideData(const Vec3& p) const override { return this->Field->InsideData(p); }
   void EmitGlsl(GlslBuilder& builder) const override;
+  const TensorField& GetField() const { return *this->Field; }
 
 protected:
   void AppendSamplePoints(std::vector<Vec3>& points) const override;

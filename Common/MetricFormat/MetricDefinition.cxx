@@ -518,7 +518,8 @@ std::string ChoiceOr(const Json& object, const char* key, const std::string& pat
 std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string& path)
 {
   CheckKeys(
-    root, path, { "type", "file", "array", "inverse", "scale", "repair", "outside", "frame" });
+    root, path, { "type", "file", "array", "inverse", "tensor_metric", "sharpening", "scale",
+                  "repair", "outside", "frame" });
   const Json& fileValue = Required(root, "file", path);
   if (!fileValue.is_string() || fileValue.get<std::string>().empty())
   {
@@ -531,7 +532,43 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
     {
       Fail(path + ".inverse", "expected true or false, got " + Describe(root.at("inverse")));
     }
-    options.Inverse = root.at("inverse").get<bool>();
+    options.Kind =
+      root.at("inverse").get<bool>() ? TensorMetricKind::Inverse : TensorMetricKind::Tensor;
+  }
+  // "tensor_metric": which metric each tensor gives; "inverse": true is its
+  // older spelling of "inverse", so the two must agree when both are given.
+  if (root.contains("tensor_metric"))
+  {
+    const std::string kind = ChoiceOr(root, "tensor_metric", path,
+      { { "tensor", "g = D" }, { "inverse", "g = D^-1" }, { "adjugate", "g = det(D) D^-1" },
+        { "sharpened", "g = det(D)^((p-1)/3) D^-p, p the sharpening" } });
+    for (TensorMetricKind k : { TensorMetricKind::Tensor, TensorMetricKind::Inverse,
+           TensorMetricKind::Adjugate, TensorMetricKind::Sharpened })
+    {
+      if (kind == TensorMetricName(k))
+      {
+        if (root.contains("inverse") && root.at("inverse").get<bool>() != (k == TensorMetricKind::Inverse))
+        {
+          Fail(path + ".inverse", std::string("\"inverse\": ") +
+              (root.at("inverse").get<bool>() ? "true" : "false") +
+              " contradicts \"tensor_metric\": \"" + kind + "\" (give only \"tensor_metric\")");
+        }
+        options.Kind = k;
+      }
+    }
+  }
+  if (root.contains("sharpening"))
+  {
+    if (options.Kind != TensorMetricKind::Sharpened)
+    {
+      Fail(path + ".sharpening", "only a \"sharpened\" tensor_metric takes a sharpening");
+    }
+    options.Sharpening = NumberOr(root, "sharpening", path, 2.0);
+    if (!(options.Sharpening >= 1.0 && options.Sharpening <= 16.0))
+    {
+      Fail(path + ".sharpening", "expected a number in [1, 16] (1: the inverse), got " +
+          Describe(root.at("sharpening")));
+    }
   }
   // "scale": a number, or "mean-diffusivity" (arc length in the voxels' units).
   if (root.contains("scale") && root.at("scale").is_string())

@@ -22,6 +22,7 @@
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
 #include "RiemannScalarImages.h"
+#include "TractStops.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -44,7 +45,15 @@ static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
     static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_LENGTH) ==
       static_cast<int>(riemann::OutOfLength) &&
     static_cast<int>(vtkRiemannGeodesicTracer::OUT_OF_DATA) ==
-      static_cast<int>(riemann::OutOfData),
+      static_cast<int>(riemann::OutOfData) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::STOPPED_BY_MASK) ==
+      static_cast<int>(riemann::StoppedByMask) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::LOW_ANISOTROPY) ==
+      static_cast<int>(riemann::LowAnisotropy) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::SHARP_TURN) ==
+      static_cast<int>(riemann::SharpTurn) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::CROSSED_EXCLUDE) ==
+      static_cast<int>(riemann::TractCrossedExclude),
   "termination codes must match the core");
 static_assert(vtkRiemannIntegrationSettings::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),
@@ -315,12 +324,13 @@ Traces TraceInParallel(vtkAlgorithm* self, const riemann::Metric& metric,
 /// they stopped, and warn once for each reason.
 std::vector<vtkIdType> CountUntracedSeeds(vtkObject* self, const Traces& traces)
 {
-  std::vector<vtkIdType> untraced(riemann::OutOfData + 1, 0);
+  std::vector<vtkIdType> untraced(riemann::LastTerminationReason + 1, 0);
   for (vtkIdType i = 0; i < traces.Traced; ++i)
   {
     if (traces.Paths[i].Points.size() < 2)
     {
-      const int reason = std::clamp(traces.Paths[i].Reason, 0, static_cast<int>(riemann::OutOfData));
+      const int reason =
+        std::clamp(traces.Paths[i].Reason, 0, static_cast<int>(riemann::LastTerminationReason));
       untraced[static_cast<std::size_t>(reason)]++;
     }
   }
@@ -337,7 +347,59 @@ std::vector<vtkIdType> CountUntracedSeeds(vtkObject* self, const Traces& traces)
   return untraced;
 }
 
-/// Step 4: the polylines of two or more points, in seed order, with their
+/**
+ * Step 4 (tractography): cut every path at its first sharp turn (with a
+ * MaximumAngle), then drop the tracts the selection refuses: a tract is a
+ * seed's paths (adjacent in `seeds`, both halves with BOTH). Dropped paths
+ * are emptied, so BuildOutput skips them. Returns the counts by why.
+ */
+std::vector<vtkIdType> CutAndSelectTracts(double maximumAngle,
+  const riemann::TractSelection& selection, const std::vector<Seed>& seeds, Traces& traces)
+{
+  std::vector<vtkIdType> rejected(riemann::LastTractRejection + 1, 0);
+  if (maximumAngle > 0.0)
+  {
+    for (vtkIdType i = 0; i < traces.Traced; ++i)
+    {
+      riemann::CutAtSharpTurn(traces.Paths[i], maximumAngle);
+    }
+  }
+  if (!selection.Any())
+  {
+    return rejected;
+  }
+  for (vtkIdType first = 0; first < traces.Traced;)
+  {
+    vtkIdType last = first + 1;
+    while (last < traces.Traced && seeds[last].Id == seeds[first].Id)
+    {
+      ++last;
+    }
+    std::vector<const riemann::GeodesicPath*> halves;
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      halves.push_back(&traces.Paths[i]);
+    }
+    const int why = riemann::SelectTract(halves.data(), static_cast<int>(halves.size()), selection);
+    bool anyLine = false;
+    for (const riemann::GeodesicPath* half : halves)
+    {
+      anyLine = anyLine || half->Points.size() >= 2;
+    }
+    if (why != riemann::TractKept && anyLine)
+    {
+      rejected[static_cast<std::size_t>(why)]++;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        traces.Paths[i].Clear();
+      }
+    }
+    first = last;
+  }
+  return rejected;
+}
+
+/// Step 5: the polylines of two or more points, in seed order, with their
 /// point arrays (ArcLength, Velocity, SpeedDrift and the Jacobian's when
 /// asked) and cell arrays (SeedIds, ReasonForTermination).
 void BuildOutput(
@@ -444,13 +506,15 @@ int vtkRiemannGeodesicTracer::RequestUpdateExtent(
 }
 
 // RequestData as named steps: GatherSeeds -> PieceShare -> TraceInParallel
-// -> CountUntracedSeeds -> BuildOutput (each in an anonymous namespace above).
+// -> CountUntracedSeeds -> CutAndSelectTracts -> BuildOutput (each in an
+// anonymous namespace above).
 int vtkRiemannGeodesicTracer::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   this->UntracedSeeds.clear();
+  this->RejectedTracts.clear();
   const std::shared_ptr<const riemann::Metric> metric = this->CheckMetricAndSettings();
   if (!metric)
   {
@@ -474,9 +538,25 @@ int vtkRiemannGeodesicTracer::RequestData(
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
-  const Traces traces =
+  riemann::TractStopRules stops(*metric);
+  stops.StopMask = riemann::VoxelMaskFromImage(this->StopMask);
+  stops.MinimumAnisotropy = this->StopFractionalAnisotropy;
+  options.Stop = stops.Any() ? &stops : nullptr;
+  riemann::TractSelection selection;
+  selection.Include = riemann::VoxelMaskFromImage(this->IncludeRegion);
+  selection.Exclude = riemann::VoxelMaskFromImage(this->ExcludeRegion);
+  selection.MinimumLength = this->MinimumLength;
+  if ((this->StopMask && stops.StopMask.Empty()) ||
+    (this->IncludeRegion && selection.Include.Empty()) ||
+    (this->ExcludeRegion && selection.Exclude.Empty()))
+  {
+    this->ReportError("A stop mask, include or exclude region has no scalars to read.");
+    return 1;
+  }
+  Traces traces =
     TraceInParallel(this, *metric, seeds, options, this->ComputeTransverseJacobian);
   this->UntracedSeeds = CountUntracedSeeds(this, traces);
+  this->RejectedTracts = CutAndSelectTracts(this->MaximumAngle, selection, seeds, traces);
   BuildOutput(seeds, traces, this->ComputeTransverseJacobian, output);
   return 1;
 }
@@ -498,6 +578,36 @@ vtkIdType vtkRiemannGeodesicTracer::GetNumberOfUntracedSeeds(int reason) const
     : 0;
 }
 
+vtkIdType vtkRiemannGeodesicTracer::GetNumberOfRejectedTracts() const
+{
+  vtkIdType all = 0;
+  for (vtkIdType n : this->RejectedTracts)
+  {
+    all += n;
+  }
+  return all;
+}
+
+vtkIdType vtkRiemannGeodesicTracer::GetNumberOfRejectedTracts(int why) const
+{
+  return why >= 0 && why < static_cast<int>(this->RejectedTracts.size())
+    ? this->RejectedTracts[static_cast<std::size_t>(why)]
+    : 0;
+}
+
+vtkMTimeType vtkRiemannGeodesicTracer::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  for (vtkImageData* image : { this->StopMask.Get(), this->IncludeRegion.Get(), this->ExcludeRegion.Get() })
+  {
+    if (image)
+    {
+      time = std::max(time, image->GetMTime());
+    }
+  }
+  return time;
+}
+
 void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -517,4 +627,10 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
      << this->DomainBounds[2] << " " << this->DomainBounds[3] << " " << this->DomainBounds[4] << " "
      << this->DomainBounds[5] << "\n";
   os << indent << "ComputeTransverseJacobian: " << this->ComputeTransverseJacobian << "\n";
+  os << indent << "StopMask: " << this->StopMask.Get() << "\n";
+  os << indent << "StopFractionalAnisotropy: " << this->StopFractionalAnisotropy << "\n";
+  os << indent << "MaximumAngle: " << this->MaximumAngle << "\n";
+  os << indent << "IncludeRegion: " << this->IncludeRegion.Get() << "\n";
+  os << indent << "ExcludeRegion: " << this->ExcludeRegion.Get() << "\n";
+  os << indent << "MinimumLength: " << this->MinimumLength << "\n";
 }

@@ -23,11 +23,23 @@
  *   MaximumNumberOfSteps, on leaving DomainBounds (when UseDomainBounds), or
  *   where the metric degenerates.
  *
+ * Tractography (issue 31; riemann/TractStops.h): StopMask ends geodesics
+ * where a mask is 0 (STOPPED_BY_MASK), StopFractionalAnisotropy where the
+ * diffusion tensor the metric stands for is less anisotropic than it
+ * (LOW_ANISOTROPY), MaximumAngle where they turn more than that many degrees
+ * per unit of length (SHARP_TURN: the part up to the turn is kept). Then a
+ * tract (a seed's lines: both halves with BOTH) is dropped when it enters
+ * ExcludeRegion, misses IncludeRegion or is shorter than MinimumLength
+ * (GetNumberOfRejectedTracts says how many, by why). Masks and regions are
+ * images read at the voxel that holds each point; lengths and angles are
+ * Euclidean (mm for a scan), whatever the metric's scale.
+ *
  * Output: one polyline per seed and direction with point data `ArcLength`,
  * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1 for the unit-speed velocity:
  * exactly 0 for an exact geodesic, so it monitors the integration error)
  * and cell data `SeedIds` and `ReasonForTermination` (vtkStreamTracer's codes
- * plus DEGENERATE_METRIC, HIT_SURFACE and OUT_OF_DATA).
+ * plus DEGENERATE_METRIC, HIT_SURFACE, OUT_OF_DATA and tractography's
+ * STOPPED_BY_MASK, LOW_ANISOTROPY and SHARP_TURN).
  *
  * With ComputeTransverseJacobian on, each geodesic is integrated together with
  * two Jacobi fields J_a (J_a(0) = 0, J_a'(0) g-orthonormal and g-orthogonal to
@@ -60,6 +72,9 @@
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
 #include "vtkRiemannGeodesicAlgorithm.h"
 
+#include "vtkImageData.h"    // For the masks' smart pointers
+#include "vtkSmartPointer.h" // For the masks
+
 #include <vector> // For UntracedSeeds
 
 class RIEMANNFILTERSGEODESICS_EXPORT vtkRiemannGeodesicTracer : public vtkRiemannGeodesicAlgorithm
@@ -88,7 +103,21 @@ public:
     DEGENERATE_METRIC = 8,
     HIT_SURFACE = 9,
     /// Left a sampled metric's volume with "outside": "stop".
-    OUT_OF_DATA = 10
+    OUT_OF_DATA = 10,
+    /// Reached a voxel where StopMask is 0 (or left its grid).
+    STOPPED_BY_MASK = 11,
+    /// Reached fractional anisotropy below StopFractionalAnisotropy.
+    LOW_ANISOTROPY = 12,
+    /// Turned more than MaximumAngle degrees per unit length between two steps.
+    SHARP_TURN = 13
+  };
+
+  /// Why GetNumberOfRejectedTracts counts a tract (riemann::TractRejection).
+  enum TractRejections
+  {
+    TOO_SHORT = 1,
+    MISSED_INCLUDE = 2,
+    CROSSED_EXCLUDE = 3
   };
 
   ///@{
@@ -129,6 +158,42 @@ public:
   vtkSetMacro(RandomSeed, unsigned int);
   vtkGetMacro(RandomSeed, unsigned int);
   ///@}
+
+  ///@{
+  /**
+   * Tractography's stops, each off by default (see the class comment). The
+   * masks' and regions' active scalars are read at the voxel holding each
+   * point (not 0: set), in the image's own placement (origin, spacing,
+   * direction). MaximumAngle is in degrees per unit length (0: off).
+   */
+  vtkSetSmartPointerMacro(StopMask, vtkImageData);
+  vtkGetSmartPointerMacro(StopMask, vtkImageData);
+  vtkSetClampMacro(StopFractionalAnisotropy, double, 0.0, 1.0);
+  vtkGetMacro(StopFractionalAnisotropy, double);
+  vtkSetClampMacro(MaximumAngle, double, 0.0, 1e6);
+  vtkGetMacro(MaximumAngle, double);
+  ///@}
+
+  ///@{
+  /// Which tracts are kept (see the class comment): through IncludeRegion,
+  /// avoiding ExcludeRegion, at least MinimumLength long (0: any). None by default.
+  vtkSetSmartPointerMacro(IncludeRegion, vtkImageData);
+  vtkGetSmartPointerMacro(IncludeRegion, vtkImageData);
+  vtkSetSmartPointerMacro(ExcludeRegion, vtkImageData);
+  vtkGetSmartPointerMacro(ExcludeRegion, vtkImageData);
+  vtkSetClampMacro(MinimumLength, double, 0.0, 1e12);
+  vtkGetMacro(MinimumLength, double);
+  ///@}
+
+  ///@{
+  /// Tracts of the last execution dropped by IncludeRegion, ExcludeRegion or
+  /// MinimumLength: in all, and by why (TractRejections).
+  vtkIdType GetNumberOfRejectedTracts() const;
+  vtkIdType GetNumberOfRejectedTracts(int why) const;
+  ///@}
+
+  /// Also the masks' and regions' times.
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /// Name of the seeds' point-data direction vectors (default "Direction").
@@ -196,8 +261,16 @@ protected:
   int SeedsPerVoxel = 1;
   int SeedDirection = E1;
   unsigned int RandomSeed = 1;
+  vtkSmartPointer<vtkImageData> StopMask;
+  double StopFractionalAnisotropy = 0.0;
+  double MaximumAngle = 0.0;
+  vtkSmartPointer<vtkImageData> IncludeRegion;
+  vtkSmartPointer<vtkImageData> ExcludeRegion;
+  double MinimumLength = 0.0;
   /// Untraced seed-direction pairs by reason (index: the reason's code).
   std::vector<vtkIdType> UntracedSeeds;
+  /// Dropped tracts by why (index: TractRejections).
+  std::vector<vtkIdType> RejectedTracts;
 
 private:
   vtkRiemannGeodesicTracer(const vtkRiemannGeodesicTracer&) = delete;

@@ -17,7 +17,9 @@
 //   faces with OutOfData, each point before it inside;
 // - through TensorMetric, the Christoffel symbols of a sampled affine field
 //   are those of the field itself.
-// PrepareTensorSamples: inverse and scale exact; bad samples counted and the
+// PrepareTensorSamples: inverse and scale exact; the adjugate is det(D) D^-1
+// and the sharpened metric keeps det g = det D^-1 while its FA grows with p
+// (p = 1 is the inverse); FractionalAnisotropyOfMetric gives D's FA for each; bad samples counted and the
 // first named (index, position, eigenvalue); repair clamps to the floor.
 #include "GeodesicTrace.h"
 #include "GlslSource.h"
@@ -27,6 +29,7 @@
 #include "SampledTensorField.h"
 #include "SampledTensorSamples.h"
 #include "TensorMetric.h"
+#include "TractStops.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -503,7 +506,7 @@ TEST(SampledTensorSamples, InverseAndScaleMakeTheDiffusionTensorsMetric)
 {
   SampledTensorGrid grid = Uniform(Diffusion());
   riemann::SampledTensorOptions options;
-  options.Inverse = true;
+  options.Kind = riemann::TensorMetricKind::Inverse;
   options.Scale = 2.0;
   riemann::SampledTensorReport report;
   ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
@@ -527,7 +530,7 @@ TEST(SampledTensorSamples, MeanDiffusivityScaleMakesIsotropicTissueEuclidean)
   SampledTensorGrid grid = Uniform(md * Mat3::Identity());
   SetSample(grid, 13, 1e-3 * Diffusion() * (1.2 / (Diffusion().trace() / 3.0)));
   riemann::SampledTensorOptions options;
-  options.Inverse = true;
+  options.Kind = riemann::TensorMetricKind::Inverse;
   options.ScaleToMeanDiffusivity = true;
   riemann::SampledTensorReport report;
   ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
@@ -536,10 +539,64 @@ TEST(SampledTensorSamples, MeanDiffusivityScaleMakesIsotropicTissueEuclidean)
   EXPECT_LT((SampleOf(grid, 0) - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
   // Without the inverse, the tensors are divided by it.
   SampledTensorGrid direct = Uniform(md * Mat3::Identity());
-  options.Inverse = false;
+  options.Kind = riemann::TensorMetricKind::Tensor;
   ASSERT_EQ(riemann::PrepareTensorSamples(direct, options, &report), "");
   EXPECT_NEAR(report.AppliedScale, 1.0 / md, 1e-9);
   EXPECT_LT((SampleOf(direct, 26) - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(SampledTensorSamples, AdjugateAndSharpenedMetricsOfADiffusionTensor)
+{
+  const Mat3 d = Diffusion();
+  const Mat3 inverse = d.inverse();
+  riemann::SampledTensorOptions options;
+  // Adjugate: det(D) D^-1, exactly.
+  SampledTensorGrid adjugate = Uniform(d);
+  options.Kind = riemann::TensorMetricKind::Adjugate;
+  ASSERT_EQ(riemann::PrepareTensorSamples(adjugate, options), "");
+  EXPECT_LT((SampleOf(adjugate, 4) - d.determinant() * inverse).cwiseAbs().maxCoeff(), 1e-12);
+  // Sharpened with p = 1 is the inverse; with p = 2, det g = det D^-1, same
+  // eigenvectors, and FA of g^(-1/2) is D's FA (what the stops read).
+  options.Kind = riemann::TensorMetricKind::Sharpened;
+  options.Sharpening = 1.0;
+  SampledTensorGrid one = Uniform(d);
+  ASSERT_EQ(riemann::PrepareTensorSamples(one, options), "");
+  EXPECT_LT((SampleOf(one, 0) - inverse).cwiseAbs().maxCoeff(), 1e-12);
+  options.Sharpening = 2.0;
+  SampledTensorGrid two = Uniform(d);
+  ASSERT_EQ(riemann::PrepareTensorSamples(two, options), "");
+  const Mat3 g = SampleOf(two, 0);
+  EXPECT_NEAR(g.determinant(), inverse.determinant(), 1e-12 * inverse.determinant());
+  EXPECT_LT((g * d - d * g).cwiseAbs().maxCoeff(), 1e-12); // same eigenvectors
+  const auto fa = [](const Mat3& m)
+  { return riemann::FractionalAnisotropy(Eigen::SelfAdjointEigenSolver<Mat3>(m).eigenvalues()); };
+  EXPECT_GT(fa(g), fa(inverse) + 0.05); // sharper
+  EXPECT_GT(fa(d), 0.5);
+  for (auto kind : { riemann::TensorMetricKind::Tensor, riemann::TensorMetricKind::Inverse,
+         riemann::TensorMetricKind::Adjugate, riemann::TensorMetricKind::Sharpened })
+  {
+    options.Kind = kind;
+    riemann::SampledTensorGrid grid = Uniform(d);
+    const auto metric = riemann::MakeSampledTensorMetric(grid, options);
+    double anisotropy = 0.0;
+    ASSERT_TRUE(riemann::FractionalAnisotropyOfMetric(*metric, Vec3(1.5, 2.5, 3.5), anisotropy));
+    EXPECT_NEAR(anisotropy, fa(d), 1e-9) << riemann::TensorMetricName(kind);
+  }
+  // Scaled to the mean diffusivity m, m I becomes I for every kind.
+  const double md = 0.8e-3;
+  options.ScaleToMeanDiffusivity = true;
+  for (auto kind : { riemann::TensorMetricKind::Adjugate, riemann::TensorMetricKind::Sharpened })
+  {
+    options.Kind = kind;
+    SampledTensorGrid isotropic = Uniform(md * Mat3::Identity());
+    ASSERT_EQ(riemann::PrepareTensorSamples(isotropic, options), "");
+    EXPECT_LT((SampleOf(isotropic, 0) - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-9)
+      << riemann::TensorMetricName(kind);
+  }
+  // The sharpening's range is checked.
+  options.Sharpening = 0.5;
+  SampledTensorGrid refused = Uniform(d);
+  EXPECT_NE(riemann::PrepareTensorSamples(refused, options).find("sharpening"), std::string::npos);
 }
 
 TEST(SampledTensorSamples, PositiveSamplesWithoutOptionsAreKeptBitwise)
@@ -598,7 +655,7 @@ TEST(SampledTensorSamples, RepairClampsEigenvaluesToTheFloor)
   riemann::SampledTensorOptions options;
   options.Repair = true;
   options.RelativeFloor = 0.01;
-  options.Inverse = true;
+  options.Kind = riemann::TensorMetricKind::Inverse;
   riemann::SampledTensorReport report;
   ASSERT_EQ(riemann::PrepareTensorSamples(grid, options, &report), "");
   EXPECT_EQ(report.NotPositiveDefinite, 2);
