@@ -25,15 +25,19 @@ seeds (seeds_from_mask, density 1) and stops where the FA falls below 0.2.
 `riemann trace` has no FA stop yet: its tracts run to --length or out of
 the volume, so the distances are printed twice, once for the whole tracts
 and once with each half cut where the (trilinear) FA first falls below 0.2,
-DIPY's rule.
+DIPY's rule. --length and --step are riemann's arc length, which is mm
+only where the tissue is isotropic at the scan's median diffusivity: a mm
+along a fibre is less arc length, a mm across one (or through a nearly
+degenerate tensor) more.
 
-Printed: seeds, the seeds that made no tract in each, tracts per second of
-each on this machine (the whole `riemann trace` process, start-up and
-output included; DIPY's LocalTracking loop, its peaks not included, over
-the same seeds), and the mean closest-point distance between the two
-tracts of each seed (symmetrised: the mean over each tract's points of the
-distance to the other tract, averaged both ways). The picture: over the FA of
-the middle slice, the tracts of its seeds, riemann's (orange, faded where
+Printed: seeds, the angle between riemann's first step and the seed
+voxel's e1 (a check of the frame), the seeds that made no tract in each,
+tracts per second of each on this machine (the whole `riemann trace`
+process, start-up and output included; DIPY's LocalTracking loop, its
+peaks not included, over the same seeds), and the mean closest-point
+distance between the two tracts of each seed (symmetrised: the mean over
+each tract's points of the distance to the other tract, averaged both
+ways). The picture: over the FA of the middle slice, the tracts of its seeds, riemann's (orange, faded where
 the FA is below 0.2) and DIPY's (cyan), and a few seeds' pairs one colour a
 seed, in the slice's voxel plane (mm).
 
@@ -50,9 +54,9 @@ import sys
 import tempfile
 import time
 
-import numpy as np
-
 try:
+    # DIPY needs NumPy: without it, it is as absent.
+    import numpy as np
     import nibabel as nib
     from dipy.core.gradients import gradient_table
     from dipy.data import default_sphere, get_fnames
@@ -192,6 +196,21 @@ def join(halves):
     return np.concatenate([halves[1][::-1], halves[0][1:]])
 
 
+def seed_angles(halves, fit, seed_voxels, affine):
+    """Per traced seed, the angle (degrees) between riemann's first step and
+    the seed voxel's e1 as DIPY fitted it, turned to world axes: a check of
+    the frame ("fsl"). Not 0: riemann's g is a B-spline, which blends each
+    sample with its neighbours' (MetricFormat.md), and this scan is noisy."""
+    axes = affine[:3, :3] / np.linalg.norm(affine[:3, :3], axis=0)
+    angles = []
+    for h, voxel in zip(halves, seed_voxels):
+        if h:
+            step = (h[0][1] - h[0][0]) / np.linalg.norm(h[0][1] - h[0][0])
+            e1 = axes @ fit.evecs[tuple(voxel)][:, 0]
+            angles.append(np.degrees(np.arccos(min(1.0, abs(float(step @ e1))))))
+    return np.array(angles)
+
+
 def cut_at_low_fa(half, fa, affine):
     """`half` up to and including its first point where the trilinear FA is
     below STOP_FA (DIPY's ThresholdStoppingCriterion)."""
@@ -228,7 +247,9 @@ def polyline_distances(points, line):
         return np.linalg.norm(points - line[0], axis=1)
     a, b = line[:-1][None], line[1:][None]
     d = b - a
-    t = np.clip(np.einsum("psk,psk->ps", points[:, None] - a, d) / np.maximum(np.einsum("psk,psk->ps", d, d), 1e-300), 0, 1)
+    # Where along each segment the closest point lies (a repeated point is a segment of length 0).
+    along = np.einsum("psk,psk->ps", points[:, None] - a, d) / np.maximum(np.einsum("psk,psk->ps", d, d), 1e-300)
+    t = np.clip(along, 0, 1)
     return np.linalg.norm(points[:, None] - (a + t[..., None] * d), axis=2).min(axis=1)
 
 
@@ -306,11 +327,13 @@ def main():
                         help="the riemann executable (default: $RIEMANN_EXECUTABLE, else build/bin/riemann)")
     parser.add_argument("--step", type=float, default=0.5, help="step of both, mm (default 0.5)")
     parser.add_argument("--length", type=float, default=40.0,
-                        help="riemann's arc length each way, mm where isotropic (default 40: "
-                             "the volume is 18 mm across, so tracts end at its faces)")
+                        help="riemann's arc length each way (default 40): mm where the tissue is "
+                             "isotropic at the median diffusivity; the volume is 18 mm across, and most "
+                             "tracts end at its faces")
     parser.add_argument("--repeats", type=int, default=3, help="timed runs of each, median (default 3)")
     parser.add_argument("--qform", action="store_true",
-                        help="also give the tensor and mask files the scan's q-form")
+                        help="also give the tensor and mask files the scan's q-form (with the s-form "
+                             "only, riemann drops some seeds of the outer voxels)")
     args = parser.parse_args()
     if not os.access(args.riemann, os.X_OK):
         sys.exit(f"tractography_dipy.py: no riemann executable at {args.riemann} (set RIEMANN_EXECUTABLE)")
@@ -351,6 +374,9 @@ def main():
     whole = np.array([mean_closest_point_distance(ours[s], theirs[s]) for s in both])
     cut = np.array([mean_closest_point_distance(ours_cut[s], theirs[s]) for s in both])
     one_half = sum(len(h) == 1 for h in halves)
+    angles = seed_angles(halves, fit, seed_voxels, affine)
+    print(f"angle between riemann's first step and DIPY's e1 of the seed voxel: median {np.median(angles):.1f} deg, "
+          f"90th percentile {np.percentile(angles, 90):.1f} deg")
     print(f"seeds that made no tract: riemann {ours_none} (and {one_half} with one half only), DIPY {theirs_none}")
     print(f"mean length: riemann {np.mean([length(ours[s]) for s in both]):.1f} mm "
           f"({np.mean([length(ours_cut[s]) for s in both]):.1f} mm cut at FA < {STOP_FA}), "

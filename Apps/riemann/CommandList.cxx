@@ -19,6 +19,7 @@ void RegisterComputeCommands(CLI::App& app)
   RegisterExpmapCommand(app);
   RegisterConnectCommand(app);
   RegisterDistanceCommand(app);
+  RegisterConnectivityCommand(app);
 }
 } // namespace cli
 } // namespace riemann

@@ -21,6 +21,7 @@ void RegisterConjugateCommand(CLI::App& app);
 void RegisterExpmapCommand(CLI::App& app);
 void RegisterConnectCommand(CLI::App& app);
 void RegisterDistanceCommand(CLI::App& app);
+void RegisterConnectivityCommand(CLI::App& app);
 
 /**
  * Every subcommand of `riemann` and `riemann-mpi` (CommandList.cxx): all but

@@ -53,13 +53,12 @@ import sys
 import tempfile
 import time
 
-import numpy as np
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "Examples"))
 try:
-    import nibabel as nib  # noqa: F401
+    import numpy as np
+    import nibabel as nib
     import dipy  # noqa: F401
 except ImportError as missing:
     print(f"tractography_vs_dipy.py: skipped: needs DIPY and nibabel ({missing})")
@@ -234,7 +233,8 @@ def synthetic(folder, shape=(64, 64, 32), spacing=2.0):
     peaks.peak_dirs = SPHERE.vertices[peaks.peak_indices]
     peaks.peak_values = np.ones(shape + (1,))
     peaks.qa = peaks.peak_values
-    fa = np.full(shape, float(np.sqrt(0.5) * np.sqrt(2 * (along - across) ** 2) / np.sqrt(along ** 2 + 2 * across ** 2)))
+    # FA of eigenvalues (along, across, across): (along - across) / |eigenvalues| = 0.80.
+    fa = np.full(shape, (along - across) / np.sqrt(along ** 2 + 2 * across ** 2))
     seeds = seeds_from_mask(mask.astype(bool), affine, density=1)
     return seeds, metric, {"seed_mask": os.path.join(folder, "mask.nii.gz")}, peaks, fa, affine
 
