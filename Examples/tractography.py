@@ -72,10 +72,17 @@ def seeds(radius=0.08, rings=2, per_ring=6):
     return polydata
 
 
-def trace_tracts(length=6.0, step=0.01):
-    """The tracts: geodesics of the phantom's metric from seeds()."""
+def trace_tracts(length=6.0, step=0.01, tensor_metric="inverse"):
+    """The tracts: geodesics of the phantom's metric from seeds().
+    `tensor_metric`: which metric of the tensors (MetricFormat.md): "inverse"
+    (the shipped definition's D^-1), "adjugate" or "sharpened"."""
+    import json
+    with open(os.path.join(PHANTOM, "fibre-phantom.json")) as f:
+        definition = json.load(f)
+    definition.pop("inverse", None)
+    definition["tensor_metric"] = tensor_metric
     metric = riemann.vtkRiemannMetric()
-    if not metric.SetDefinitionFile(os.path.join(PHANTOM, "fibre-phantom.json")):
+    if not metric.SetDefinition(json.dumps(definition), PHANTOM):
         raise RuntimeError(metric.GetLastError())
     tracer = riemann.vtkRiemannGeodesicTracer()
     tracer.SetMetric(metric)

@@ -27,8 +27,9 @@ Cases:
 3. synthetic: 64 x 64 x 32 voxels of 2 mm (128 x 128 x 64 mm), FA 0.80
    everywhere, fibres along x waving in y (direction (1, 0.8 cos(2 pi x /
    40 mm), 0)); seeds at the centres of every other voxel in each axis,
-   inside (31 x 31 x 15 = 14,415); tracts cross the volume (about 130 mm,
-   260 steps each). Its metric is D^-1 scaled by the largest eigenvalue, so
+   inside (31 x 31 x 15 = 14,415); most tracts cross the volume, 145 mm
+   (on average riemann's 130 mm, DIPY's 110: tracts seeded near the y faces
+   wave out through them). Its metric is D^-1 scaled by the largest eigenvalue, so
    that arc length is length in mm along the fibres. DIPY's peaks are the
    tensors' e1 on the sphere (peaks_from_model on 131,072 voxels would take
    minutes and measure nothing here).
