@@ -75,8 +75,10 @@ struct TraceArguments
 };
 
 /// "3 seed(s) made no geodesic: 2 left the sampled data, 1 degenerate
-/// metric" from the counts by reason (0..MaximumReason); "" when none.
-std::string DescribeUntraced(const long long* byReason)
+/// metric" from the counts by reason (0..MaximumReason) of seed-direction
+/// pairs, `ways` per seed (2 for --propagation both: every reason to make no
+/// line is the seed's, so both halves fail alike); "" when none.
+std::string DescribeUntraced(const long long* byReason, int ways)
 {
   long long all = 0;
   std::string reasons;
@@ -84,8 +86,8 @@ std::string DescribeUntraced(const long long* byReason)
   {
     if (byReason[reason] > 0)
     {
-      all += byReason[reason];
-      reasons += (reasons.empty() ? "" : ", ") + std::to_string(byReason[reason]) + " " +
+      all += byReason[reason] / ways;
+      reasons += (reasons.empty() ? "" : ", ") + std::to_string(byReason[reason] / ways) + " " +
         TerminationReasonName(reason);
     }
   }
@@ -287,7 +289,8 @@ void RunTrace(const TraceArguments& args)
     counts.push_back(static_cast<long long>(tracer->GetNumberOfRejectedTracts(why)));
   }
   counts = SumOverRanks(counts);
-  const std::string untraced = DescribeUntraced(counts.data() + 2 + MaximumReason + 1);
+  const std::string untraced =
+    DescribeUntraced(counts.data() + 2 + MaximumReason + 1, propagation == "both" ? 2 : 1);
   const std::string rejected = DescribeRejectedTracts(counts.data() + 2 + 2 * (MaximumReason + 1));
   if (counts[0] == 0)
   {

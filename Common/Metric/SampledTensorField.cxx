@@ -1,5 +1,7 @@
 #include "SampledTensorField.h"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -131,13 +133,12 @@ SampledTensorField::SampledTensorField(SampledTensorGrid grid, bool stopOutside)
   {
     throw std::invalid_argument("sampled tensor field: " + problem);
   }
-  for (int a = 0; a < 3; ++a)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      this->WorldToGrid(a, k) = this->Grid.Direction(k, a) / this->Grid.Spacing[a];
-    }
-  }
+  // The inverse of the placement itself, not Direction^T / Spacing: a
+  // direction read from a float32 s-form is orthonormal only to about 1e-7,
+  // and its transpose then put the voxel centres of a mask placed by the
+  // same s-form up to 1e-6 voxels off the grid (an oblique DIPY file lost
+  // its seeds on the outer faces so).
+  this->WorldToGrid = (this->Grid.Direction * this->Grid.Spacing.asDiagonal()).inverse();
 }
 
 Vec3 SampledTensorField::GridCoordinates(const Vec3& p) const
@@ -148,9 +149,10 @@ Vec3 SampledTensorField::GridCoordinates(const Vec3& p) const
 namespace
 {
 /// The samples' extent, faces included: a voxel centre on a face maps to
-/// grid coordinate 0 or n - 1 only up to the rounding of the affine map (a
-/// seed there counted as outside), so this much beyond a face is on it.
-constexpr double FaceTolerance = 1e-9;
+/// grid coordinate 0 or n - 1 only up to the rounding of the affine maps (a
+/// mask's placement and the tensors' are each read from float32 numbers),
+/// so this much (in voxels) beyond a face is on it.
+constexpr double FaceTolerance = 1e-6;
 } // namespace
 
 bool SampledTensorField::Inside(const Vec3& p) const

@@ -142,7 +142,9 @@ public:
    * SeedDirection says: E1 (default), the direction g makes cheapest at the
    * seed (for a diffusion tensor's inverse D^-1, the principal diffusion
    * direction: trace BOTH ways for tractography), or RANDOM, a random unit
-   * vector (from RandomSeed too).
+   * vector (from RandomSeed too). SeedIds number the seeds in the image's
+   * point order, which for a NIfTI file of qfac -1 is not the file's:
+   * VTK's reader reverses its slices (the world positions are the file's).
    */
   enum SeedDirections
   {

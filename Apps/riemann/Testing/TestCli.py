@@ -1454,7 +1454,7 @@ BAD_INPUTS = [
     ("absurd step count", ["trace", "-m", "METRIC", "--max-steps", "99999999999", "-o", "OUT.csv"],
      '{"type": "euclidean"}', "--max-steps"),
     ("wrong output extension", ["trace", "-m", "METRIC", "-o", "OUT.txt"], '{"type": "euclidean"}',
-     "must end in .vtp, .pvtp or .csv"),
+     "must end in .vtp, .pvtp, .csv, .tck or .trk"),
     ("unwritable output folder", ["trace", "-m", "METRIC", "-o", "/nonexistent-dir/out.csv"], '{"type": "euclidean"}',
      "could not write /nonexistent-dir/out.csv"),
     ("bad number in seeds file", ["trace", "-m", "METRIC", "--seeds", "SEEDS", "-o", "OUT.csv"], '{"type": "euclidean"}',

@@ -384,6 +384,37 @@ class StreamlineFileTests(TempDirTest):
         starts = np.array([[float(r[k]) for k in "xyz"] for r in rows])
         self.assertLess(np.abs(starts - np.array([l[0] for l in lines])).max(), 1e-5)
 
+    def test_seeds_on_the_faces_of_an_oblique_s_form_are_inside(self):
+        # As DIPY writes small_64D's tensors: an s-form only (float32) with
+        # its oblique, permuted axes, and qfac -1 (pixdim[0]), so VTK's reader
+        # reverses the slices. Every voxel of the outer layer seeds a tract;
+        # before the fix 180 of its 488 seeds were "outside" (by about 1e-7 voxel).
+        affine = np.array([[0.0, -2.0, 0.0, 20.0], [-1.939744, 0.0, -0.4872305, 25.170544],
+                           [-0.48723, 0.0, 1.9397439, 12.320495], [0.0, 0.0, 0.0, 1.0]])
+        shape = (10, 10, 10)
+        tensor = np.array([1.7e-3, 0.1e-3, 0.3e-3, 0.0, 0.0, 0.3e-3], np.float32)  # XX XY YY XZ YZ ZZ
+        files = {}
+        for name, values in (("tensors.nii.gz", np.broadcast_to(tensor, shape + (1, 6)).copy()),
+                             ("layer.nii.gz", np.pad(np.zeros((8, 8, 8), np.uint8), 1, constant_values=1))):
+            image = nibabel.Nifti1Image(values, None)
+            image.set_sform(affine, code=2)
+            image.set_qform(None, code=0)
+            image.header["pixdim"][0] = -1.0
+            if name.startswith("tensors"):
+                image.header.set_intent("symmetric matrix")
+            files[name] = os.path.join(self.dir, name)
+            nibabel.save(image, files[name])
+        metric = os.path.join(self.dir, "dti.json")
+        with open(metric, "w") as f:
+            f.write('{"type": "sampled", "file": "tensors.nii.gz", "inverse": true, "outside": "stop", '
+                    '"scale": "mean-diffusivity"}')
+        out = os.path.join(self.dir, "t.vtp")
+        status, _, err = run("trace", "-m", metric, "--seed-mask", files["layer.nii.gz"],
+                             "--length", "3", "--step", "0.5", "-o", out)
+        self.assertEqual(status, 0, err)
+        self.assertNotIn("made no geodesic", err)
+        self.assertEqual(len(tracts_of(read_lines(out))), 10 ** 3 - 8 ** 3)
+
     def test_bad_streamline_files_are_refused(self):
         out = os.path.join(self.dir, "t.vtp")
         truncated = os.path.join(self.dir, "cut.tck")
