@@ -168,6 +168,73 @@ bool SampledTensorField::Inside(const Vec3& p) const
   return true;
 }
 
+namespace
+{
+/// g and (order 1) its first derivatives in grid coordinates from the 4^3
+/// samples around `cell`, with the spline weights w of each axis.
+void SumSeparably(const SampledTensorGrid& grid, const int cell[3], const SplineWeights w[3],
+  int order, Mat3& g, Mat3Stack& gridFirst)
+{
+  // The spline is a tensor product, so its sums go one axis at a time: along
+  // x within each of the 16 rows of samples (contiguous in memory), then y,
+  // then z. About 1,150 multiply-adds for g and its first derivatives against
+  // 2,300 sample by sample, without the second derivatives' bookkeeping.
+  // Geodesics, rays and Jacobi-free traces only ask for these (76% of a
+  // tractography run's time was this sum).
+  const std::array<int, 3>& n = grid.Dimensions;
+  long long ii[4], jj[4], kk[4];
+  for (int q = 0; q < 4; ++q)
+  {
+    ii[q] = 6LL * std::clamp(cell[0] - 1 + q, 0, n[0] - 1);
+    jj[q] = std::clamp(cell[1] - 1 + q, 0, n[1] - 1);
+    kk[q] = std::clamp(cell[2] - 1 + q, 0, n[2] - 1);
+  }
+  const double* samples = grid.Components.data();
+  // Per z layer: the value, d/dy and d/dx of the x-then-y sums.
+  double layerValue[4][6] = {}, layerY[4][6] = {}, layerX[4][6] = {};
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int b = 0; b < 4; ++b)
+    {
+      const double* row = samples + 6LL * n[0] * (jj[b] + n[1] * kk[c]);
+      double rowValue[6] = {}, rowX[6] = {};
+      for (int a = 0; a < 4; ++a)
+      {
+        const double* sample = row + ii[a];
+        for (int m = 0; m < 6; ++m)
+        {
+          rowValue[m] += w[0].Value[a] * sample[m];
+          rowX[m] += w[0].First[a] * sample[m];
+        }
+      }
+      for (int m = 0; m < 6; ++m)
+      {
+        layerValue[c][m] += w[1].Value[b] * rowValue[m];
+        layerY[c][m] += w[1].First[b] * rowValue[m];
+        layerX[c][m] += w[1].Value[b] * rowX[m];
+      }
+    }
+  }
+  double value[6] = {}, first[3][6] = {};
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int m = 0; m < 6; ++m)
+    {
+      value[m] += w[2].Value[c] * layerValue[c][m];
+      first[0][m] += w[2].Value[c] * layerX[c][m];
+      first[1][m] += w[2].Value[c] * layerY[c][m];
+      first[2][m] += w[2].First[c] * layerValue[c][m];
+    }
+  }
+  g = FromComponents(value);
+  for (int x = 0; x < 3 && order >= 1; ++x)
+  {
+    gridFirst[x] = FromComponents(first[x]);
+  }
+}
+
+} // namespace
+
 bool SampledTensorField::EvaluateInGrid(
   const Vec3& u, int order, Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>& d2g) const
 {
@@ -201,6 +268,11 @@ bool SampledTensorField::EvaluateInGrid(
       std::fill(std::begin(w[a].First), std::end(w[a].First), 0.0);
       std::fill(std::begin(w[a].Second), std::end(w[a].Second), 0.0);
     }
+  }
+  if (order <= 1)
+  {
+    SumSeparably(this->Grid, cell, w, order, g, dg);
+    return true;
   }
   // Sums over the 4 x 4 x 4 samples around the cell: the value, the three
   // first derivatives and the six second ones, each of six components.
