@@ -215,12 +215,13 @@ bool IsTractFile(const std::string& path)
 bool WriteTractFile(vtkPolyData* lines, const std::string& path, const std::string& output,
   const TractReference& reference)
 {
-  const std::vector<Tract> tracts = JoinTracesIntoTracts(lines);
+  std::vector<std::array<int, 2>> reasons;
+  const std::vector<Tract> tracts = JoinTracesIntoTracts(lines, &reasons);
   try
   {
     if (Extension(output) == "trk")
     {
-      WriteTrkFile(path, tracts, reference);
+      WriteTrkFile(path, tracts, reference, &reasons);
     }
     else
     {

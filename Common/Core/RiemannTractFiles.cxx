@@ -319,9 +319,14 @@ std::vector<Tract> ReadTrk(const std::string& path, const std::string& bytes)
 }
 } // namespace
 
-std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines)
+std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines, std::vector<std::array<int, 2>>* reasons)
 {
   std::vector<Tract> tracts;
+  if (reasons)
+  {
+    reasons->clear();
+  }
+  vtkDataArray* reasonArray = lines->GetCellData()->GetArray("ReasonForTermination");
   vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
   vtkDataArray* arcLength = lines->GetPointData()->GetArray("ArcLength");
   vtkNew<vtkIdList> ids;
@@ -345,7 +350,15 @@ std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines)
     if (seed != lastSeed || tracts.empty())
     {
       tracts.emplace_back();
+      if (reasons)
+      {
+        reasons->push_back({ 0, 0 });
+      }
       lastSeed = seed;
+    }
+    if (reasons && reasonArray)
+    {
+      reasons->back()[backward ? 0 : 1] = static_cast<int>(reasonArray->GetComponent(cell, 0));
     }
     Tract& tract = tracts.back();
     if (backward)
@@ -399,9 +412,10 @@ void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts)
   WriteWhole(path, head + data);
 }
 
-void WriteTrkFile(
-  const std::string& path, const std::vector<Tract>& tracts, const TractReference& reference)
+void WriteTrkFile(const std::string& path, const std::vector<Tract>& tracts,
+  const TractReference& reference, const std::vector<std::array<int, 2>>* reasons)
 {
+  const bool withReasons = reasons && reasons->size() == tracts.size();
   if (!HostIsLittleEndian())
   {
     throw FileError(path, "streamline files are written on little-endian hosts only");
@@ -424,8 +438,14 @@ void WriteTrkFile(
   }
   Put(bytes, std::int16_t(0)); // n_scalars
   bytes.append(200, '\0');
-  Put(bytes, std::int16_t(0)); // n_properties
-  bytes.append(200, '\0');
+  Put(bytes, std::int16_t(withReasons ? 2 : 0)); // n_properties
+  std::string names(200, '\0');
+  if (withReasons)
+  {
+    names.replace(0, 13, "stop_at_start");
+    names.replace(20, 11, "stop_at_end");
+  }
+  bytes.append(names);
   for (int r = 0; r < 4; ++r)
   {
     for (int c = 0; c < 4; ++c)
@@ -451,16 +471,21 @@ void WriteTrkFile(
   {
     throw std::logic_error("a .trk header of " + std::to_string(bytes.size()) + " bytes");
   }
-  for (const Tract& tract : tracts)
+  for (std::size_t t = 0; t < tracts.size(); ++t)
   {
-    Put(bytes, static_cast<std::int32_t>(tract.size()));
-    for (const Vec3& x : tract)
+    Put(bytes, static_cast<std::int32_t>(tracts[t].size()));
+    for (const Vec3& x : tracts[t])
     {
       const Eigen::Vector4d voxel = rasToVoxel * Eigen::Vector4d(x[0], x[1], x[2], 1.0);
       for (int c = 0; c < 3; ++c)
       {
         Put(bytes, static_cast<float>((voxel[c] + 0.5) * reference.Spacing[c]));
       }
+    }
+    if (withReasons)
+    {
+      Put(bytes, static_cast<float>((*reasons)[t][0]));
+      Put(bytes, static_cast<float>((*reasons)[t][1]));
     }
   }
   WriteWhole(path, bytes);

@@ -42,16 +42,25 @@ struct RIEMANNCOMMONCORE_EXPORT TractReference
  * A trace's lines (vtkRiemannGeodesicTracer's output: cell data SeedIds,
  * point data ArcLength) as tracts: each seed's backward line reversed, then
  * its forward line, the seed point once. Lines of one seed follow each
- * other, as the tracer writes them.
+ * other, as the tracer writes them. `reasons` (optional) gets each tract's
+ * ReasonForTermination at its start (the backward line's) and at its end
+ * (the forward line's); 0 for a half that is not there.
  */
-RIEMANNCOMMONCORE_EXPORT std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines);
+RIEMANNCOMMONCORE_EXPORT std::vector<Tract> JoinTracesIntoTracts(
+  vtkPolyData* lines, std::vector<std::array<int, 2>>* reasons = nullptr);
 
 /// Write .tck (MRtrix). Throws std::runtime_error naming the file.
 RIEMANNCOMMONCORE_EXPORT void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts);
 
-/// Write .trk (TrackVis v2) against `reference`. Throws std::runtime_error naming the file.
-RIEMANNCOMMONCORE_EXPORT void WriteTrkFile(
-  const std::string& path, const std::vector<Tract>& tracts, const TractReference& reference);
+/**
+ * Write .trk (TrackVis v2) against `reference`. With `reasons` (one pair a
+ * tract), each streamline carries them as its two properties,
+ * "stop_at_start" and "stop_at_end" (nibabel's data_per_streamline).
+ * Throws std::runtime_error naming the file.
+ */
+RIEMANNCOMMONCORE_EXPORT void WriteTrkFile(const std::string& path,
+  const std::vector<Tract>& tracts, const TractReference& reference,
+  const std::vector<std::array<int, 2>>* reasons = nullptr);
 
 /**
  * Read a .tck or .trk file's streamlines in world coordinates (.trk: through

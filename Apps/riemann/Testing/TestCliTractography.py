@@ -328,6 +328,15 @@ class StreamlineFileTests(TempDirTest):
                 self.assertEqual(len(streamlines), len(expected))
                 worst = max(np.abs(a - b).max() for a, b in zip(streamlines, expected.values()))
                 self.assertLess(worst, 1e-4)  # float32 storage: measured 1.3e-7
+                if name.endswith(".trk"):
+                    # Why each end stopped: the halves' codes, as the .vtp has them.
+                    stops = loaded.tractogram.data_per_streamline
+                    reasons = {}
+                    for _, _, seed, reason, arc in read_lines(vtp):
+                        reasons.setdefault(seed, [0, 0])[1 if arc[-1] > 0 else 0] = reason
+                    self.assertEqual([[int(a), int(b)] for a, b in zip(stops["stop_at_start"][:, 0],
+                                                                       stops["stop_at_end"][:, 0])],
+                                     list(reasons.values()))
                 if name == "t.trk":
                     # The reference's own voxel order, as DIPY compares it.
                     self.assertEqual(loaded.header["voxel_order"], b"LAS")
@@ -424,7 +433,14 @@ class StreamlineFileTests(TempDirTest):
         fake = os.path.join(self.dir, "fake.trk")
         with open(fake, "wb") as f:
             f.write(b"not a track file")
-        for path, words in ((truncated, "truncated .tck"), (fake, "not a TrackVis .trk file")):
+        # A valid header (nibabel's) whose one streamline claims 2^31 - 1 points.
+        huge = os.path.join(self.dir, "huge.trk")
+        nibabel.streamlines.save(nibabel.streamlines.Tractogram([np.zeros((3, 3))], affine_to_rasmm=np.eye(4)), huge)
+        with open(huge, "r+b") as f:
+            f.seek(1000)
+            f.write(np.array([2 ** 31 - 1], np.int32).tobytes())
+        for path, words in ((truncated, "truncated .tck"), (fake, "not a TrackVis .trk file"),
+                            (huge, "runs past the end of the file")):
             with self.subTest(path=path):
                 status, _, err = run("trace", "-m", PHANTOM, "--seeds", path, "-o", out)
                 self.assertEqual(status, 1, err)
