@@ -215,13 +215,13 @@ bool IsTractFile(const std::string& path)
 bool WriteTractFile(vtkPolyData* lines, const std::string& path, const std::string& output,
   const TractReference& reference)
 {
-  std::vector<std::array<int, 2>> reasons;
-  const std::vector<Tract> tracts = JoinTracesIntoTracts(lines, &reasons);
+  std::vector<TractRecord> records;
+  const std::vector<Tract> tracts = JoinTracesIntoTracts(lines, &records);
   try
   {
     if (Extension(output) == "trk")
     {
-      WriteTrkFile(path, tracts, reference, &reasons);
+      WriteTrkFile(path, tracts, reference, &records);
     }
     else
     {

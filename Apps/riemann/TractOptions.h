@@ -66,9 +66,10 @@ TractReference ChooseTrkReference(
 /**
  * Write the trace `lines` into `path` as the streamline file `output` names
  * (.tck, or .trk against `reference`; `path` may be a temporary file), one
- * streamline per seed (JoinTracesIntoTracts); a .trk's streamlines carry why
- * each end stopped (properties stop_at_start, stop_at_end: ReasonForTermination
- * codes, 0 for a missing half). Returns true (for WriteAtomically).
+ * streamline per seed (JoinTracesIntoTracts); a .trk's streamlines carry
+ * their seed and why each end stopped (properties seed_id, stop_at_start,
+ * stop_at_end: ReasonForTermination codes, 0 for a missing half). Returns
+ * true (for WriteAtomically).
  */
 bool WriteTractFile(vtkPolyData* lines, const std::string& path, const std::string& output,
   const TractReference& reference);

@@ -319,12 +319,12 @@ std::vector<Tract> ReadTrk(const std::string& path, const std::string& bytes)
 }
 } // namespace
 
-std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines, std::vector<std::array<int, 2>>* reasons)
+std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines, std::vector<TractRecord>* records)
 {
   std::vector<Tract> tracts;
-  if (reasons)
+  if (records)
   {
-    reasons->clear();
+    records->clear();
   }
   vtkDataArray* reasonArray = lines->GetCellData()->GetArray("ReasonForTermination");
   vtkDataArray* seedIds = lines->GetCellData()->GetArray("SeedIds");
@@ -350,15 +350,17 @@ std::vector<Tract> JoinTracesIntoTracts(vtkPolyData* lines, std::vector<std::arr
     if (seed != lastSeed || tracts.empty())
     {
       tracts.emplace_back();
-      if (reasons)
+      if (records)
       {
-        reasons->push_back({ 0, 0 });
+        records->emplace_back();
+        records->back().SeedId = seed;
       }
       lastSeed = seed;
     }
-    if (reasons && reasonArray)
+    if (records && reasonArray)
     {
-      reasons->back()[backward ? 0 : 1] = static_cast<int>(reasonArray->GetComponent(cell, 0));
+      const int reason = static_cast<int>(reasonArray->GetComponent(cell, 0));
+      (backward ? records->back().StopAtStart : records->back().StopAtEnd) = reason;
     }
     Tract& tract = tracts.back();
     if (backward)
@@ -413,9 +415,9 @@ void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts)
 }
 
 void WriteTrkFile(const std::string& path, const std::vector<Tract>& tracts,
-  const TractReference& reference, const std::vector<std::array<int, 2>>* reasons)
+  const TractReference& reference, const std::vector<TractRecord>* records)
 {
-  const bool withReasons = reasons && reasons->size() == tracts.size();
+  const bool withRecords = records && records->size() == tracts.size();
   if (!HostIsLittleEndian())
   {
     throw FileError(path, "streamline files are written on little-endian hosts only");
@@ -438,12 +440,13 @@ void WriteTrkFile(const std::string& path, const std::vector<Tract>& tracts,
   }
   Put(bytes, std::int16_t(0)); // n_scalars
   bytes.append(200, '\0');
-  Put(bytes, std::int16_t(withReasons ? 2 : 0)); // n_properties
+  Put(bytes, std::int16_t(withRecords ? 3 : 0)); // n_properties
   std::string names(200, '\0');
-  if (withReasons)
+  if (withRecords)
   {
-    names.replace(0, 13, "stop_at_start");
-    names.replace(20, 11, "stop_at_end");
+    names.replace(0, 7, "seed_id");
+    names.replace(20, 13, "stop_at_start");
+    names.replace(40, 11, "stop_at_end");
   }
   bytes.append(names);
   for (int r = 0; r < 4; ++r)
@@ -482,10 +485,12 @@ void WriteTrkFile(const std::string& path, const std::vector<Tract>& tracts,
         Put(bytes, static_cast<float>((voxel[c] + 0.5) * reference.Spacing[c]));
       }
     }
-    if (withReasons)
+    if (withRecords)
     {
-      Put(bytes, static_cast<float>((*reasons)[t][0]));
-      Put(bytes, static_cast<float>((*reasons)[t][1]));
+      // float32, as .trk stores properties: exact for seed numbers below 2^24.
+      Put(bytes, static_cast<float>((*records)[t].SeedId));
+      Put(bytes, static_cast<float>((*records)[t].StopAtStart));
+      Put(bytes, static_cast<float>((*records)[t].StopAtEnd));
     }
   }
   WriteWhole(path, bytes);

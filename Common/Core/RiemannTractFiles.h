@@ -28,6 +28,16 @@ namespace riemann
 /// One streamline: its points in world coordinates.
 using Tract = std::vector<Vec3>;
 
+/// Where a tract comes from and why its ends stopped (ReasonForTermination codes).
+struct RIEMANNCOMMONCORE_EXPORT TractRecord
+{
+  long long SeedId = -1;
+  /// The backward line's reason (the tract's first point), 0 without one.
+  int StopAtStart = 0;
+  /// The forward line's reason (its last point), 0 without one.
+  int StopAtEnd = 0;
+};
+
 /// The image a .trk file is written against (its voxel grid and placement).
 struct RIEMANNCOMMONCORE_EXPORT TractReference
 {
@@ -42,25 +52,24 @@ struct RIEMANNCOMMONCORE_EXPORT TractReference
  * A trace's lines (vtkRiemannGeodesicTracer's output: cell data SeedIds,
  * point data ArcLength) as tracts: each seed's backward line reversed, then
  * its forward line, the seed point once. Lines of one seed follow each
- * other, as the tracer writes them. `reasons` (optional) gets each tract's
- * ReasonForTermination at its start (the backward line's) and at its end
- * (the forward line's); 0 for a half that is not there.
+ * other, as the tracer writes them. `records` (optional) gets each tract's
+ * seed and why its ends stopped.
  */
 RIEMANNCOMMONCORE_EXPORT std::vector<Tract> JoinTracesIntoTracts(
-  vtkPolyData* lines, std::vector<std::array<int, 2>>* reasons = nullptr);
+  vtkPolyData* lines, std::vector<TractRecord>* records = nullptr);
 
 /// Write .tck (MRtrix). Throws std::runtime_error naming the file.
 RIEMANNCOMMONCORE_EXPORT void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts);
 
 /**
- * Write .trk (TrackVis v2) against `reference`. With `reasons` (one pair a
- * tract), each streamline carries them as its two properties,
+ * Write .trk (TrackVis v2) against `reference`. With `records` (one a
+ * tract), each streamline carries them as its three properties, "seed_id",
  * "stop_at_start" and "stop_at_end" (nibabel's data_per_streamline).
  * Throws std::runtime_error naming the file.
  */
 RIEMANNCOMMONCORE_EXPORT void WriteTrkFile(const std::string& path,
   const std::vector<Tract>& tracts, const TractReference& reference,
-  const std::vector<std::array<int, 2>>* reasons = nullptr);
+  const std::vector<TractRecord>* records = nullptr);
 
 /**
  * Read a .tck or .trk file's streamlines in world coordinates (.trk: through

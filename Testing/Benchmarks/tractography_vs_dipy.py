@@ -2,44 +2,57 @@
 """Streamlines per second: `riemann trace` against DIPY's LocalTracking, in one run.
 
 Both trace from the same seeds through the same tensors, both ways, at the
-same step (0.5 mm); one tract a seed. Timed: the whole `riemann trace`
-process (start-up, reading the NIfTI files, the spline, tracing on every
-core, writing the .vtp) against DIPY's deterministic LocalTracking loop
-(EuDX's direction getter on the tensor's peak, ThresholdStoppingCriterion
-on the FA at 0.2; one thread), whose peaks are computed beforehand and not
-timed. With the Python bindings on PYTHONPATH, also vtkRiemannGeodesicTracer
-in process (Update() alone: no start-up, no files) from the seeds and
-directions the CLI traced. Medians of --runs runs of each, interleaved
+same step (0.5 mm), and stop where the FA falls below 0.2 (riemann:
+`--stop-fa 0.2`, the FA of the tensor its metric's spline stands for;
+DIPY: ThresholdStoppingCriterion on the fitted FA, trilinear); one tract a
+seed. The tensors and masks are written as nibabel and DIPY write them
+(the s-form only). Timed: the whole `riemann trace` process (start-up,
+reading the NIfTI files, the spline, tracing on every core, writing the
+.tck) against DIPY's deterministic LocalTracking loop (EuDX's direction
+getter on the tensor's peak; one thread), whose peaks are computed
+beforehand and not timed. With the Python bindings on PYTHONPATH, also
+vtkRiemannGeodesicTracer in process (Update() alone: no start-up, no
+files), with the same stop, from the seeds and directions the CLI traced
+(one untimed run to a .vtp). Medians of --runs runs of each, interleaved
 (the machine may be shared). Printed per case: seeds, time and tracts per
 second of each, the ratio riemann / DIPY, the seeds that made no tract,
-mean tract length and points per second (the tracts differ in length:
-riemann has no FA stop yet and runs to --length or out of the volume).
+mean tract length and points per second (the .tck read with nibabel).
 
 Cases:
 1. small_64D: DIPY's 10^3-voxel scan (Examples/tractography_dipy.py fits and
    writes it), seeds at the centres of the voxels with FA > 0.3 (595):
-   `--seed-mask`, DIPY's seeds_from_mask. So few and so short (about 13 mm)
-   that riemann's start-up dominates.
+   `--seed-mask`, DIPY's seeds_from_mask. So few and so short (riemann's
+   16 mm, DIPY's 13) that riemann's start-up dominates.
 2. small_64D x 27: the same mask, 27 seeds a voxel (seeds_from_mask density
    3, 16,065 seeds); riemann reads them, with DIPY's initial direction at
    each (its voxel's peak, in world axes), from a CSV (`--seeds`), since
-   `--seeds-per-voxel` spreads its seeds at random.
+   `--seeds-per-voxel` spreads its seeds at random. The 3,146 seeds beyond
+   the outermost voxel centres make no tract in either (riemann's volume
+   ends at those centres; DIPY's 4,646 untraced seeds are all but 118 in
+   the outer layer of voxels), nor do 211 more in riemann, where the
+   spline's FA is below 0.2 at the seed.
 3. synthetic: 64 x 64 x 32 voxels of 2 mm (128 x 128 x 64 mm), FA 0.80
-   everywhere, fibres along x waving in y (direction (1, 0.8 cos(2 pi x /
-   40 mm), 0)); seeds at the centres of every other voxel in each axis,
-   inside (31 x 31 x 15 = 14,415); most tracts cross the volume, 145 mm
-   (on average riemann's 130 mm, DIPY's 110: tracts seeded near the y faces
-   wave out through them). Its metric is D^-1 scaled by the largest eigenvalue, so
-   that arc length is length in mm along the fibres. DIPY's peaks are the
-   tensors' e1 on the sphere (peaks_from_model on 131,072 voxels would take
-   minutes and measure nothing here).
+   everywhere (the FA stop never acts), fibres along x waving in y
+   (direction (1, 0.8 cos(2 pi x / 40 mm), 0)); seeds at the centres of
+   every other voxel in each axis, inside (31 x 31 x 15 = 14,415); most
+   tracts cross the volume, 145 mm (on average riemann's 130 mm, DIPY's
+   110: tracts seeded near the y faces wave out through them). Its metric
+   is D^-1 scaled by the largest eigenvalue, so that arc length is length
+   in mm along the fibres. DIPY's peaks are the tensors' e1 on the sphere
+   (peaks_from_model on 131,072 voxels would take minutes and measure
+   nothing here).
 
-The tensor and mask files get the q-form as well as the s-form: with the
-s-form only (as nibabel and DIPY write them) `riemann trace` drops about a
-third of the seeds on the outer layer of voxels of small_64D, whose affine
-is oblique ("left the sampled data at the seed"), and would do less work.
-Seeds beyond the outermost voxel centres (case 2's, in the outer voxels)
-make no tract in either: riemann's volume ends at those centres.
+Measured with riemann 697678a and DIPY 1.6 on 2 idle cores, --runs 3
+(tracts per second; points per second in brackets, riemann's from the
+.tck, one point a tract for the seed):
+
+    case            seeds   riemann trace      in process   DIPY                 riemann / DIPY
+    small_64D         595   9,600 (400,000)    16,600       74,000 (1,470,000)   0.13 (in process 0.22)
+    small_64D x 27  16,065  15,200 (617,000)   16,800       82,000 (1,600,000)   0.19 (0.21)
+    synthetic       14,415  2,610 (724,000)    2,770        14,900 (3,270,000)   0.18 (0.19)
+
+Untraced seeds, riemann / DIPY: 8 / 152, 3,357 / 4,646, 0 / 0; mean tract
+length, riemann / DIPY: 16.3 / 12.6 mm, 18.8 / 13.0 mm, 130.4 / 109.5 mm.
 
 Run: RIEMANN_EXECUTABLE=build/bin/riemann PYTHONPATH=build/lib/python3/dist-packages \
        /usr/bin/python3 Testing/Benchmarks/tractography_vs_dipy.py [--runs 5] [--cases 1,2,3]
@@ -100,8 +113,9 @@ def time_dipy(peaks, fa, affine, seeds):
 
 
 def cli_seeds(tracts):
-    """The seeds of a `riemann trace` output and their directions: each
-    line's first point and velocity, one line a seed."""
+    """The seeds of a `riemann trace` .vtp and their directions: each line's
+    first point and velocity, one line a seed (a seed that made no geodesic
+    has none)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
@@ -143,6 +157,7 @@ def in_process_tracer(metric_path, points, directions, length):
     settings.SetIntegratorTypeToRungeKutta4()
     settings.SetInitialIntegrationStep(STEP)
     settings.SetMaximumPropagation(length)
+    tracer.SetStopFractionalAnisotropy(example.STOP_FA)
     seeds = vtkPolyData()
     vtk_points = vtkPoints()
     vtk_points.SetData(numpy_to_vtk(points.copy(), deep=1))
@@ -161,15 +176,11 @@ def time_in_process(tracer):
     return time.perf_counter() - start, tracer.GetOutput().GetNumberOfPoints()
 
 
-def riemann_tracts(path, count):
-    """Per seed id: (points, length in mm) of the two halves together."""
-    lines, cells = example.read_polylines(path)
-    points = np.zeros(count, dtype=int)
-    lengths = np.zeros(count)
-    for line, seed in zip(lines, cells["SeedIds"]):
-        points[seed] += len(line) - 1  # the seed is in both halves
-        lengths[seed] += example.length(line)
-    return points + (points > 0), lengths
+def riemann_tracts(path):
+    """The points and the length in mm of each tract of a .tck (one a traced
+    seed, both halves joined), read as DIPY users read it."""
+    tracts, _ = example.read_tracts(path)
+    return np.array([len(t) for t in tracts]), np.array([example.length(t) for t in tracts])
 
 
 def write_seeds(path, seeds, directions):
@@ -181,11 +192,11 @@ def write_seeds(path, seeds, directions):
 
 def small_64d(folder, density):
     """Case 1 (density 1) or 2: (seeds, metric, riemann's seed options, DIPY's peaks, FA, affine)."""
-    data, affine, gtab, header = example.load_scan()
+    data, affine, gtab, _ = example.load_scan()
     fit = TensorModel(gtab).fit(data)
     fa = example.fractional_anisotropy(fit)
     mask = fa > example.SEED_FA
-    paths = example.write_inputs(folder, fit, fa, affine, qform=header)
+    paths = example.write_inputs(folder, fit, fa, affine)
     peaks = peaks_from_model(TensorModel(gtab), data, SPHERE, relative_peak_threshold=0.5,
                              min_separation_angle=25, mask=data[..., 0] > 0, npeaks=1)
     seeds = seeds_from_mask(mask, affine, density=density)
@@ -210,19 +221,16 @@ def synthetic(folder, shape=(64, 64, 32), spacing=2.0):
     e1 /= np.linalg.norm(e1, axis=-1, keepdims=True)
     along, across = 1.7e-3, 0.3e-3
     tensors = across * np.eye(3) + (along - across) * e1[..., :, None] * e1[..., None, :]
-    image = nifti1_symmat(lower_triangular(tensors).astype(np.float32), affine)
-    image.set_qform(affine, code=1)
-    nib.save(image, os.path.join(folder, "tensors.nii.gz"))
+    nib.save(nifti1_symmat(lower_triangular(tensors).astype(np.float32), affine),
+             os.path.join(folder, "tensors.nii.gz"))
     mask = np.zeros(shape, dtype=np.uint8)
     mask[1:-1:2, 1:-1:2, 1:-1:2] = 1
-    mask_image = nib.Nifti1Image(mask, affine)
-    mask_image.set_qform(affine, code=1)
-    nib.save(mask_image, os.path.join(folder, "mask.nii.gz"))
+    nib.save(nib.Nifti1Image(mask, affine), os.path.join(folder, "mask.nii.gz"))
     metric = os.path.join(folder, "metric.json")
     with open(metric, "w") as f:
         # Voxel axes are world axes here (no rotation): "world" is DIPY's frame.
         # The scale makes g = 1 along e1: arc length is mm along the fibres.
-        json.dump({"type": "sampled", "file": "tensors.nii.gz", "inverse": True, "scale": along,
+        json.dump({"type": "sampled", "file": "tensors.nii.gz", "tensor_metric": "inverse", "scale": along,
                    "outside": "stop", "frame": "world"}, f)
     # DIPY's peaks by hand: each voxel's e1 on the sphere (one peak).
     peaks = PeaksAndMetrics()
@@ -256,23 +264,24 @@ def main():
         name, make = cases[key]
         with tempfile.TemporaryDirectory() as folder:
             seeds, metric, seed_options, peaks, fa, affine = make(folder)
-            output = os.path.join(folder, "tracts.vtp")
+            output = os.path.join(folder, "tracts.tck")
             command = example.riemann_trace_command(args.riemann, metric, output, step=STEP, length=args.length,
                                                     **seed_options)
+            # The seeds and directions the CLI traces, for the tracer in process: once, untimed, as a .vtp.
+            polylines = os.path.join(folder, "tracts.vtp")
+            time_riemann(command[:command.index("-o") + 1] + [polylines] + command[command.index("-o") + 2:])
+            tracer = in_process_tracer(metric, *cli_seeds(polylines), args.length)
             # Interleaved, so that a change of load on a shared machine falls on all.
             ours, inside, theirs = [], [], []
-            tracer = None
             for run in range(args.runs):
                 ours.append(time_riemann(command))
-                if run == 0:
-                    tracer = in_process_tracer(metric, *cli_seeds(output), args.length)
                 if tracer is not None:
                     seconds, inside_points = time_in_process(tracer)
                     inside.append(seconds)
                 seconds, streamlines = time_dipy(peaks, fa, affine, seeds)
                 theirs.append(seconds)
             ours, theirs = statistics.median(ours), statistics.median(theirs)
-            our_points, our_lengths = riemann_tracts(output, len(seeds))
+            our_points, our_lengths = riemann_tracts(output)
         if len(streamlines) != len(seeds):
             sys.exit(f"{name}: DIPY returned {len(streamlines)} streamlines for {len(seeds)} seeds")
         their_points = np.array([len(s) for s in streamlines])
@@ -280,8 +289,8 @@ def main():
         n = len(seeds)
         print(f"{name}: {n} seeds; $ {' '.join(command)}")
         print(f"  riemann trace: {ours:.3f} s, {n / ours:,.0f} tracts/s, {our_points.sum() / ours:,.0f} points/s; "
-              f"{int((our_points < 2).sum())} seeds made no tract; mean length "
-              f"{our_lengths[our_points > 1].mean():.1f} mm, {our_points[our_points > 1].mean():.0f} points")
+              f"{n - len(our_points)} seeds made no tract; mean length "
+              f"{our_lengths.mean():.1f} mm, {our_points.mean():.0f} points")
         if inside:
             inside = statistics.median(inside)
             print(f"  vtkRiemannGeodesicTracer in process: {inside:.3f} s, {n / inside:,.0f} tracts/s, "

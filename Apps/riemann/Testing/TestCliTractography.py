@@ -337,6 +337,7 @@ class StreamlineFileTests(TempDirTest):
                     self.assertEqual([[int(a), int(b)] for a, b in zip(stops["stop_at_start"][:, 0],
                                                                        stops["stop_at_end"][:, 0])],
                                      list(reasons.values()))
+                    self.assertEqual([int(i) for i in stops["seed_id"][:, 0]], list(reasons))
                 if name == "t.trk":
                     # The reference's own voxel order, as DIPY compares it.
                     self.assertEqual(loaded.header["voxel_order"], b"LAS")
