@@ -1,5 +1,8 @@
 #include "SampledTensorSamples.h"
 
+#include "TensorMetric.h"
+#include "VoxelChristoffelMetric.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -268,6 +271,11 @@ std::shared_ptr<const Metric> MakeSampledTensorMetric(
   }
   auto field = std::make_shared<SampledTensorField>(std::move(grid), options.StopOutside);
   field->SetDiffusionExponent(DiffusionExponent(options.Kind, options.Sharpening));
-  return std::make_shared<TensorMetric>(std::move(field));
+  auto exact = std::make_shared<TensorMetric>(field);
+  if (options.ChristoffelAtVoxels)
+  {
+    return std::make_shared<VoxelChristoffelMetric>(std::move(exact), field->GetGrid());
+  }
+  return exact;
 }
 } // namespace riemann

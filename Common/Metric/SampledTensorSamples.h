@@ -86,6 +86,11 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
   /// "outside": "stop": geodesics and rays stop where they leave the volume
   /// (else g = I there).
   bool StopOutside = false;
+  /// "christoffel": "voxels": geodesics run on the Christoffel symbols
+  /// sampled at the voxels and interpolated trilinearly
+  /// (VoxelChristoffelMetric: tractography's fast path); else ("spline")
+  /// on the spline's own.
+  bool ChristoffelAtVoxels = false;
 
   /// What is wrong with the options, or "".
   std::string Check() const;

@@ -519,7 +519,7 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
 {
   CheckKeys(
     root, path, { "type", "file", "array", "inverse", "tensor_metric", "sharpening", "scale",
-                  "repair", "outside", "frame" });
+                  "repair", "outside", "frame", "christoffel" });
   const Json& fileValue = Required(root, "file", path);
   if (!fileValue.is_string() || fileValue.get<std::string>().empty())
   {
@@ -596,6 +596,10 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   options.StopOutside = ChoiceOr(root, "outside", path,
                           { { "euclidean", "g = I outside the volume" },
                             { "stop", "geodesics and rays stop where they leave it" } }) == "stop";
+  options.ChristoffelAtVoxels = ChoiceOr(root, "christoffel", path,
+                                  { { "spline", "the spline's own, exact" },
+                                    { "voxels", "sampled at the voxels, trilinear: faster" } }) ==
+    "voxels";
   const std::string frame = ChoiceOr(root, "frame", path,
     { { "world", "tensors in the axes the file places its voxels in" },
       { "fsl", "NIfTI tensors in FSL's voxel axes, as dtifit writes them" } });

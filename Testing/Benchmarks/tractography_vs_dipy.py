@@ -253,6 +253,8 @@ def main():
     parser.add_argument("--riemann", default=example.riemann_executable())
     parser.add_argument("--runs", type=int, default=5, help="runs of each, median (default 5)")
     parser.add_argument("--cases", default="1,2,3")
+    parser.add_argument("--christoffel", default="spline,voxels",
+                        help="the sampled metric's \"christoffel\" choices to time (default both)")
     parser.add_argument("--length", type=float, default=300.0,
                         help="riemann's arc length each way (default 300: tracts end at the volume's faces)")
     args = parser.parse_args()
@@ -264,48 +266,65 @@ def main():
         name, make = cases[key]
         with tempfile.TemporaryDirectory() as folder:
             seeds, metric, seed_options, peaks, fa, affine = make(folder)
-            output = os.path.join(folder, "tracts.tck")
-            command = example.riemann_trace_command(args.riemann, metric, output, step=STEP, length=args.length,
-                                                    **seed_options)
-            # The seeds and directions the CLI traces, for the tracer in process: once, untimed, as a .vtp.
-            polylines = os.path.join(folder, "tracts.vtp")
-            time_riemann(command[:command.index("-o") + 1] + [polylines] + command[command.index("-o") + 2:])
-            tracer = in_process_tracer(metric, *cli_seeds(polylines), args.length)
+            variants = {}
+            for christoffel in args.christoffel.split(","):
+                # The same metric with "christoffel": the spline's own symbols or the voxels'.
+                with open(metric) as f:
+                    definition = json.load(f)
+                definition["christoffel"] = christoffel
+                path = os.path.join(folder, f"metric-{christoffel}.json")
+                with open(path, "w") as f:
+                    json.dump(definition, f)
+                output = os.path.join(folder, f"tracts-{christoffel}.tck")
+                command = example.riemann_trace_command(args.riemann, path, output, step=STEP,
+                                                        length=args.length, **seed_options)
+                # The seeds and directions the CLI traces, for the tracer in process: once, untimed, as a .vtp.
+                polylines = os.path.join(folder, "tracts.vtp")
+                time_riemann(command[:command.index("-o") + 1] + [polylines] + command[command.index("-o") + 2:])
+                variants[christoffel] = {"command": command, "output": output, "ours": [], "inside": [],
+                                         "tracer": in_process_tracer(path, *cli_seeds(polylines), args.length)}
             # Interleaved, so that a change of load on a shared machine falls on all.
-            ours, inside, theirs = [], [], []
+            theirs = []
             for run in range(args.runs):
-                ours.append(time_riemann(command))
-                if tracer is not None:
-                    seconds, inside_points = time_in_process(tracer)
-                    inside.append(seconds)
+                for variant in variants.values():
+                    variant["ours"].append(time_riemann(variant["command"]))
+                    if variant["tracer"] is not None:
+                        seconds, variant["inside_points"] = time_in_process(variant["tracer"])
+                        variant["inside"].append(seconds)
                 seconds, streamlines = time_dipy(peaks, fa, affine, seeds)
                 theirs.append(seconds)
-            ours, theirs = statistics.median(ours), statistics.median(theirs)
-            our_points, our_lengths = riemann_tracts(output)
+            theirs = statistics.median(theirs)
+            for variant in variants.values():
+                variant["points"], variant["lengths"] = riemann_tracts(variant["output"])
         if len(streamlines) != len(seeds):
             sys.exit(f"{name}: DIPY returned {len(streamlines)} streamlines for {len(seeds)} seeds")
         their_points = np.array([len(s) for s in streamlines])
         their_lengths = np.array([example.length(s) for s in streamlines])
         n = len(seeds)
-        print(f"{name}: {n} seeds; $ {' '.join(command)}")
-        print(f"  riemann trace: {ours:.3f} s, {n / ours:,.0f} tracts/s, {our_points.sum() / ours:,.0f} points/s; "
-              f"{n - len(our_points)} seeds made no tract; mean length "
-              f"{our_lengths.mean():.1f} mm, {our_points.mean():.0f} points")
-        if inside:
-            inside = statistics.median(inside)
-            print(f"  vtkRiemannGeodesicTracer in process: {inside:.3f} s, {n / inside:,.0f} tracts/s, "
-                  f"{inside_points / inside:,.0f} points/s")
+        print(f"{name}: {n} seeds")
         print(f"  DIPY LocalTracking: {theirs:.3f} s, {n / theirs:,.0f} tracts/s, "
               f"{their_points.sum() / theirs:,.0f} points/s; {int((their_points < 2).sum())} seeds made no tract; "
               f"mean length {their_lengths[their_points > 1].mean():.1f} mm, "
               f"{their_points[their_points > 1].mean():.0f} points")
-        print(f"  riemann / DIPY, tracts/s: {theirs / ours:.2f}" +
-              (f" (in process: {theirs / inside:.2f})" if inside else ""))
-        rows.append((name, n, n / ours, n / inside if inside else float("nan"), n / theirs, theirs / ours))
-    print("\n| case | seeds | riemann trace, tracts/s | in process, tracts/s | DIPY, tracts/s | riemann / DIPY |\n"
-          "|---|---|---|---|---|---|")
-    for name, n, a, b, c, r in rows:
-        print(f"| {name} | {n:,} | {a:,.0f} | {b:,.0f} | {c:,.0f} | {r:.2f} |")
+        for christoffel, variant in variants.items():
+            ours = statistics.median(variant["ours"])
+            our_points, our_lengths = variant["points"], variant["lengths"]
+            print(f"  riemann trace, \"christoffel\": \"{christoffel}\": $ {' '.join(variant['command'])}")
+            print(f"    {ours:.3f} s, {n / ours:,.0f} tracts/s, {our_points.sum() / ours:,.0f} points/s; "
+                  f"{n - len(our_points)} seeds made no tract; mean length "
+                  f"{our_lengths.mean():.1f} mm, {our_points.mean():.0f} points")
+            inside = statistics.median(variant["inside"]) if variant["inside"] else None
+            if inside:
+                print(f"    vtkRiemannGeodesicTracer in process: {inside:.3f} s, {n / inside:,.0f} tracts/s, "
+                      f"{variant['inside_points'] / inside:,.0f} points/s")
+            print(f"    riemann / DIPY, tracts/s: {theirs / ours:.2f}" +
+                  (f" (in process: {theirs / inside:.2f})" if inside else ""))
+            rows.append((name, christoffel, n, n / ours, n / inside if inside else float("nan"), n / theirs,
+                         theirs / ours, theirs / inside if inside else float("nan")))
+    print("\n| case | christoffel | seeds | riemann trace, tracts/s | in process, tracts/s | DIPY, tracts/s "
+          "| riemann / DIPY (in process) |\n|---|---|---|---|---|---|---|")
+    for name, christoffel, n, a, b, c, r, ri in rows:
+        print(f"| {name} | {christoffel} | {n:,} | {a:,.0f} | {b:,.0f} | {c:,.0f} | {r:.2f} ({ri:.2f}) |")
 
 
 if __name__ == "__main__":
