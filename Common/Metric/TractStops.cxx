@@ -3,9 +3,13 @@
 #include "Metric.h"
 #include "SampledTensorField.h"
 #include "TensorMetric.h"
+#include "VoxelChristoffelMetric.h"
+
+#include <Eigen/LU>
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 
 namespace riemann
@@ -44,20 +48,55 @@ double FractionalAnisotropy(const Vec3& eigenvalues)
   return std::sqrt(1.5) * deviation.norm() / norm;
 }
 
-bool FractionalAnisotropyOfMetric(const Metric& metric, const Vec3& x, double& anisotropy)
+namespace
 {
-  Mat3 g;
-  if (!metric.Tensor(x, g) || !g.allFinite())
+/// The q of FractionalAnisotropyOfMetric: a sampled metric's (through the
+/// fast path's wrapper too), else -1.
+double DiffusionExponentOf(const Metric& metric)
+{
+  const Metric* exact = &metric;
+  if (const auto* voxels = dynamic_cast<const VoxelChristoffelMetric*>(exact))
   {
-    return false;
+    exact = &voxels->GetExact();
   }
-  double exponent = -1.0;
-  if (const auto* tensorMetric = dynamic_cast<const TensorMetric*>(&metric))
+  if (const auto* tensorMetric = dynamic_cast<const TensorMetric*>(exact))
   {
     if (const auto* sampled = dynamic_cast<const SampledTensorField*>(&tensorMetric->GetField()))
     {
-      exponent = sampled->GetDiffusionExponent();
+      return sampled->GetDiffusionExponent();
     }
+  }
+  return -1.0;
+}
+
+/// FA of a symmetric positive definite m from its invariants (no eigensolver):
+/// sqrt(3/2) |m - tr(m)/3 I| / |m|, Frobenius norms.
+double FractionalAnisotropyOfMatrix(const Mat3& m)
+{
+  const double squared = m.squaredNorm();
+  const double trace = m.trace();
+  if (!(squared > 0.0))
+  {
+    return 0.0;
+  }
+  return std::sqrt(std::max(0.0, 1.5 * (squared - trace * trace / 3.0) / squared));
+}
+} // namespace
+
+bool FractionalAnisotropyOfMetric(const Metric& metric, const Vec3& x, double& anisotropy)
+{
+  Mat3 g;
+  if (!metric.Tensor(x, g) || !g.allFinite() || !(g.determinant() > 0.0) || !(g(0, 0) > 0.0))
+  {
+    return false;
+  }
+  // Every step of a tract asks this (--stop-fa): the inverse and the tensor
+  // itself, the usual metrics, need no eigenvalues.
+  const double exponent = DiffusionExponentOf(metric);
+  if (exponent == -1.0 || exponent == 1.0)
+  {
+    anisotropy = FractionalAnisotropyOfMatrix(exponent == 1.0 ? g : Mat3(g.inverse()));
+    return std::isfinite(anisotropy);
   }
   const Vec3 eigenvalues =
     Eigen::SelfAdjointEigenSolver<Mat3>(g, Eigen::EigenvaluesOnly).eigenvalues();

@@ -93,14 +93,19 @@ bool VoxelChristoffelMetric::Interpolate(const Vec3& p, int first, int count, fl
   const float* corner[8] = { base, base + Values, base + Values * nx, base + Values * (nx + 1),
     base + Values * nxy, base + Values * (nxy + 1), base + Values * (nxy + nx),
     base + Values * (nxy + nx + 1) };
+  // Corner by corner over contiguous values: the inner loop vectorises.
   for (int v = 0; v < count; ++v)
   {
-    float sum = weight[0] * corner[0][v];
-    for (int c = 1; c < 8; ++c)
+    values[v] = weight[0] * corner[0][v];
+  }
+  for (int c = 1; c < 8; ++c)
+  {
+    const float w = weight[c];
+    const float* row = corner[c];
+    for (int v = 0; v < count; ++v)
     {
-      sum += weight[c] * corner[c][v];
+      values[v] += w * row[v];
     }
-    values[v] = sum;
   }
   return true;
 }

@@ -576,11 +576,17 @@ TEST(SampledTensorSamples, AdjugateAndSharpenedMetricsOfADiffusionTensor)
          riemann::TensorMetricKind::Adjugate, riemann::TensorMetricKind::Sharpened })
   {
     options.Kind = kind;
-    riemann::SampledTensorGrid grid = Uniform(d);
-    const auto metric = riemann::MakeSampledTensorMetric(grid, options);
-    double anisotropy = 0.0;
-    ASSERT_TRUE(riemann::FractionalAnisotropyOfMetric(*metric, Vec3(1.5, 2.5, 3.5), anisotropy));
-    EXPECT_NEAR(anisotropy, fa(d), 1e-9) << riemann::TensorMetricName(kind);
+    for (bool voxels : { false, true }) // the spline's symbols, and the fast path's
+    {
+      options.ChristoffelAtVoxels = voxels;
+      riemann::SampledTensorGrid grid = Uniform(d);
+      const auto metric = riemann::MakeSampledTensorMetric(grid, options);
+      double anisotropy = 0.0;
+      ASSERT_TRUE(riemann::FractionalAnisotropyOfMetric(*metric, Vec3(1.5, 2.5, 3.5), anisotropy));
+      // float storage on the fast path
+      EXPECT_NEAR(anisotropy, fa(d), voxels ? 1e-6 : 1e-9) << riemann::TensorMetricName(kind);
+    }
+    options.ChristoffelAtVoxels = false;
   }
   // Scaled to the mean diffusivity m, m I becomes I for every kind.
   const double md = 0.8e-3;
