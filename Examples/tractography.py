@@ -72,15 +72,17 @@ def seeds(radius=0.08, rings=2, per_ring=6):
     return polydata
 
 
-def trace_tracts(length=6.0, step=0.01, tensor_metric="inverse"):
+def trace_tracts(length=6.0, step=0.01, tensor_metric="inverse", christoffel="spline"):
     """The tracts: geodesics of the phantom's metric from seeds().
     `tensor_metric`: which metric of the tensors (MetricFormat.md): "inverse"
-    (the shipped definition's D^-1), "adjugate" or "sharpened"."""
+    (the shipped definition's D^-1), "adjugate" or "sharpened";
+    `christoffel`: "spline" (exact) or "voxels" (tractography's fast path)."""
     import json
     with open(os.path.join(PHANTOM, "fibre-phantom.json")) as f:
         definition = json.load(f)
     definition.pop("inverse", None)
     definition["tensor_metric"] = tensor_metric
+    definition["christoffel"] = christoffel
     metric = riemann.vtkRiemannMetric()
     if not metric.SetDefinition(json.dumps(definition), PHANTOM):
         raise RuntimeError(metric.GetLastError())

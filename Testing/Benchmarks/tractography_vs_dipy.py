@@ -42,18 +42,20 @@ Cases:
    (peaks_from_model on 131,072 voxels would take minutes and measure
    nothing here).
 
-Measured with riemann 697678a and DIPY 1.6 on 2 idle cores, --runs 3
-(tracts per second; points per second in brackets, riemann's from the
-.tck, one point a tract for the seed):
-
-    case            seeds   riemann trace      in process   DIPY                 riemann / DIPY
-    small_64D         595   9,600 (400,000)    16,600       74,000 (1,470,000)   0.13 (in process 0.22)
-    small_64D x 27  16,065  15,200 (617,000)   16,800       82,000 (1,600,000)   0.19 (0.21)
-    synthetic       14,415  2,610 (724,000)    2,770        14,900 (3,270,000)   0.18 (0.19)
-
+Each case is timed for both of the sampled metric's "christoffel" choices
+(--christoffel, default spline,voxels): the exact spline's symbols, and the
+fast path's g and dg sampled at the voxels and interpolated trilinearly.
+Measured with riemann 1d8b514 and DIPY 1.6 on 2 cores (load 0.9), --runs 3
+(tracts per second; riemann / DIPY, in process in brackets):
+    case            christoffel  seeds   riemann trace  in process  DIPY     riemann / DIPY
+    small_64D       spline         595    9,724         17,803      73,689   0.13 (0.24)
+                    voxels         595   17,199         79,927      73,689   0.23 (1.08)
+    small_64D x 27  spline      16,065   16,892         19,262      83,165   0.20 (0.23)
+                    voxels      16,065   51,913         86,986      83,165   0.62 (1.05)
+    synthetic       spline      14,415    2,692          2,877      14,552   0.19 (0.20)
+                    voxels      14,415    9,423         12,716      14,552   0.65 (0.87)
 Untraced seeds, riemann / DIPY: 8 / 152, 3,357 / 4,646, 0 / 0; mean tract
 length, riemann / DIPY: 16.3 / 12.6 mm, 18.8 / 13.0 mm, 130.4 / 109.5 mm.
-
 Run: RIEMANN_EXECUTABLE=build/bin/riemann PYTHONPATH=build/lib/python3/dist-packages \
        /usr/bin/python3 Testing/Benchmarks/tractography_vs_dipy.py [--runs 5] [--cases 1,2,3]
 Needs DIPY and nibabel (python3-dipy, python3-nibabel); not a test dependency.
