@@ -7,6 +7,7 @@
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPolyData.h"
+#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -405,6 +406,16 @@ CLI::Validator InSchemaRange(const riemann::IntegrationSetting& setting)
     "in " + riemann::IntegrationInterval(setting));
 }
 } // namespace
+
+void ApplyIntegrationOptions(vtkRiemannIntegrationSettings* settings, const std::string& integrator,
+  double step, double length, double tolerance, long long maximumSteps)
+{
+  settings->SetIntegratorType(static_cast<int>(ParseIntegratorOption(integrator)));
+  settings->SetInitialIntegrationStep(step);
+  settings->SetMaximumPropagation(length);
+  settings->SetMaximumError(tolerance);
+  settings->SetMaximumNumberOfSteps(maximumSteps);
+}
 
 void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options)
 {

@@ -53,6 +53,8 @@ class vtkPolyData;
 class vtkXMLWriter;
 class vtkRiemannMetric;
 
+class vtkRiemannIntegrationSettings;
+
 namespace riemann
 {
 namespace cli
@@ -192,6 +194,15 @@ struct IntegrationOptions
   std::string ToleranceHelp;
 };
 void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options);
+
+/**
+ * Put the values of AddIntegrationOptions' flags into a filter's
+ * integration settings: the integrator (checked: Failure naming
+ * --integrator), step, length, tolerance (dp45's per-step error) and step
+ * budget.
+ */
+void ApplyIntegrationOptions(vtkRiemannIntegrationSettings* settings, const std::string& integrator,
+  double step, double length, double tolerance, long long maximumSteps);
 
 /// "euler", "rk4" or "dp45"; throws Failure (status 2) naming --integrator.
 IntegratorType ParseIntegratorOption(const std::string& name);

@@ -21,7 +21,6 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannDistanceField.h"
 #include "vtkRiemannGeodesicTracer.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
@@ -264,12 +263,8 @@ std::vector<std::vector<long long>> TractCounts(
   tracer->SetInputData(mask);
   tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
   tracer->SetIntegrationDirectionToBoth();
-  vtkRiemannIntegrationSettings* settings = tracer->GetIntegrationSettings();
-  settings->SetIntegratorType(static_cast<int>(ParseIntegratorOption(args.Integrator)));
-  settings->SetInitialIntegrationStep(args.Step);
-  settings->SetMaximumError(args.Tolerance);
-  settings->SetMaximumPropagation(args.Length);
-  settings->SetMaximumNumberOfSteps(args.MaximumSteps);
+  ApplyIntegrationOptions(tracer->GetIntegrationSettings(), args.Integrator, args.Step, args.Length,
+    args.Tolerance, args.MaximumSteps);
   ApplyTractOptions(args.Tracts, tracer);
   vtkNew<ProgressBar> progress;
   progress->Observe(tracer, "riemann connectivity: tracts", ProgressBar::StderrIsTerminal());

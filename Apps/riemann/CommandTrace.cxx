@@ -25,7 +25,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannGeodesicTracer.h"
-#include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
 #include <CLI/CLI.hpp>
@@ -135,12 +134,7 @@ vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
   std::vector<long long> lines;
   const std::vector<std::vector<double>> rows =
     ReadCsvColumns(path, { "x", "y", "z", "dx", "dy", "dz" }, "seeds", 10000000, &lines);
-  auto seeds = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> directions;
-  directions->SetName("Direction");
-  directions->SetNumberOfComponents(3);
+  std::vector<Vec3> starts, directions;
   for (std::size_t r = 0; r < rows.size(); ++r)
   {
     const double* d = rows[r].data();
@@ -151,12 +145,10 @@ vtkSmartPointer<vtkPolyData> ReadSeeds(const std::string& path)
     {
       throw Failure(path + ": line " + std::to_string(lines[r]) + ": dx,dy,dz " + degenerate);
     }
-    points->InsertNextPoint(d);
-    directions->InsertNextTuple(d + 3);
+    starts.emplace_back(d[0], d[1], d[2]);
+    directions.emplace_back(d[3], d[4], d[5]);
   }
-  seeds->SetPoints(points);
-  seeds->GetPointData()->AddArray(directions);
-  return seeds;
+  return SeedsWithDirections(starts, directions);
 }
 
 /// The most points a trace writes (about 10 GB as .vtp with its arrays, more as CSV).
@@ -217,12 +209,8 @@ void RunTrace(const TraceArguments& args)
     !args.SeedMask.empty() && args.SeedDirection == "e1" && !args.PropagationGiven ? "both"
                                                                                    : args.Propagation;
   tracer->SetIntegrationDirection(propagations.at(propagation));
-  vtkRiemannIntegrationSettings* settings = tracer->GetIntegrationSettings();
-  settings->SetIntegratorType(static_cast<int>(ParseIntegratorOption(args.Integrator)));
-  settings->SetInitialIntegrationStep(args.Step);
-  settings->SetMaximumError(args.Tolerance);
-  settings->SetMaximumPropagation(args.Length);
-  settings->SetMaximumNumberOfSteps(args.MaximumSteps);
+  ApplyIntegrationOptions(tracer->GetIntegrationSettings(), args.Integrator, args.Step, args.Length,
+    args.Tolerance, args.MaximumSteps);
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   ApplyTractOptions(args.Tracts, tracer);
   vtkIdType numberOfSeeds = 1;

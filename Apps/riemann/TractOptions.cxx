@@ -281,12 +281,7 @@ vtkSmartPointer<vtkPolyData> SeedsFromTracts(const std::string& path)
     }
     velocities.assign(tracts.size(), Vec3::Zero());
   }
-  auto seeds = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> directions;
-  directions->SetName("Direction");
-  directions->SetNumberOfComponents(3);
+  std::vector<Vec3> starts, directions;
   for (std::size_t t = 0; t < tracts.size(); ++t)
   {
     const Tract& tract = tracts[t];
@@ -314,15 +309,32 @@ vtkSmartPointer<vtkPolyData> SeedsFromTracts(const std::string& path)
         direction = tract[1] - tract[0];
       }
     }
-    points->InsertNextPoint(tract[0].data());
-    directions->InsertNextTuple(direction.data());
+    starts.push_back(tract[0]);
+    directions.push_back(direction);
   }
-  if (points->GetNumberOfPoints() == 0)
+  if (starts.empty())
   {
     throw Failure("--seeds " + path + ": no streamline of two or more points to seed from");
   }
+  return SeedsWithDirections(starts, directions);
+}
+
+vtkSmartPointer<vtkPolyData> SeedsWithDirections(
+  const std::vector<Vec3>& starts, const std::vector<Vec3>& directions)
+{
+  auto seeds = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("Direction");
+  array->SetNumberOfComponents(3);
+  for (std::size_t s = 0; s < starts.size(); ++s)
+  {
+    points->InsertNextPoint(starts[s].data());
+    array->InsertNextTuple(directions[s].data());
+  }
   seeds->SetPoints(points);
-  seeds->GetPointData()->AddArray(directions);
+  seeds->GetPointData()->AddArray(array);
   return seeds;
 }
 } // namespace cli

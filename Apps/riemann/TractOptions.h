@@ -74,6 +74,10 @@ TractReference ChooseTrkReference(
 bool WriteTractFile(vtkPolyData* lines, const std::string& path, const std::string& output,
   const TractReference& reference);
 
+/// Seeds as the tracer reads them: points with the point-data array "Direction".
+vtkSmartPointer<vtkPolyData> SeedsWithDirections(
+  const std::vector<Vec3>& points, const std::vector<Vec3>& directions);
+
 /**
  * Seeds from a streamline file (.tck, .trk, or a .vtp of polylines): one per
  * streamline, at its first point, along its tangent there (the .vtp's
