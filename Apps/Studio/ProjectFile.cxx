@@ -133,7 +133,7 @@ void ParseMetric(const Json& metric, const std::string& folder, ProjectData& pro
   {
     const QString given = QString::fromStdString(String(metric.at("folder"), "metric.folder"));
     project.MetricFolder = QFileInfo(given).isRelative()
-      ? QDir(QString::fromStdString(folder)).absoluteFilePath(given).toStdString()
+      ? QDir::cleanPath(QDir(QString::fromStdString(folder)).absoluteFilePath(given)).toStdString()
       : given.toStdString();
   }
   if (metric.contains("parameter-values"))
@@ -179,8 +179,8 @@ void ParseScene(const Json& scene, const std::string& folder, ProjectData& proje
   project.SceneFile = scene.contains("file") ? String(scene.at("file"), "scene.file") : "";
   if (!project.SceneFile.empty() && QFileInfo(QString::fromStdString(project.SceneFile)).isRelative())
   {
-    project.SceneFile = QDir(QString::fromStdString(folder))
-                          .absoluteFilePath(QString::fromStdString(project.SceneFile))
+    project.SceneFile = QDir::cleanPath(QDir(QString::fromStdString(folder))
+                                          .absoluteFilePath(QString::fromStdString(project.SceneFile)))
                           .toStdString();
   }
   project.SceneText = scene.contains("text") ? String(scene.at("text"), "scene.text") : "";
@@ -345,8 +345,23 @@ ProjectData CaptureProject(const StudioDocument& document)
   return project;
 }
 
-nlohmann::json ProjectToJson(const ProjectData& project)
+std::string ProjectFingerprint(const StudioDocument& document)
 {
+  ProjectData project = CaptureProject(document);
+  Json json = ProjectToJson(project);
+  json.erase("layout");
+  return json.dump();
+}
+
+nlohmann::json ProjectToJson(const ProjectData& project, const std::string& folder)
+{
+  // Paths relative to the project file's folder, as Studio.md promises.
+  const auto relative = [&folder](const std::string& path)
+  {
+    return folder.empty() || path.empty()
+      ? path
+      : QDir(QString::fromStdString(folder)).relativeFilePath(QString::fromStdString(path)).toStdString();
+  };
   Json items = Json::array();
   for (const ItemState& item : project.Items)
   {
@@ -362,10 +377,11 @@ nlohmann::json ProjectToJson(const ProjectData& project)
     { "time", project.Time } };
   if (!project.MetricFolder.empty())
   {
-    metric["folder"] = project.MetricFolder;
+    const std::string metricFolder = relative(project.MetricFolder);
+    metric["folder"] = metricFolder.empty() ? "." : metricFolder;
   }
   return { { "riemann-studio", 1 }, { "metric", metric },
-    { "scene", { { "file", project.SceneFile }, { "text", project.SceneText } } },
+    { "scene", { { "file", relative(project.SceneFile) }, { "text", project.SceneText } } },
     { "observer", CameraToJson(project.Observer) },
     { "inside", { { riemann::PictureSettingOf(riemann::PictureSettingId::Backend).ProjectKey,
                     project.Backend },

@@ -92,7 +92,19 @@ public:
 
 /// The document's part of a project (metric, scene, observer, rays, items).
 ProjectData CaptureProject(const StudioDocument& document);
-nlohmann::json ProjectToJson(const ProjectData& project);
+/**
+ * The project file's JSON. `folder` is the folder the project file is
+ * written to: the scene file and the metric's data folder are written
+ * relative to it, so that a project copied with its files opens elsewhere
+ * ("" keeps them as they are).
+ */
+nlohmann::json ProjectToJson(const ProjectData& project, const std::string& folder = "");
+/**
+ * What a project saves of the document (CaptureProject), as text, without
+ * the window's part (layout, outside camera, inside view's backend and
+ * samples): equal texts, equal documents (ProjectSession's modified mark).
+ */
+std::string ProjectFingerprint(const StudioDocument& document);
 /**
  * Parse and check a project; throws ProjectError saying where and why. A
  * relative scene file name is resolved against `folder` (the project file's).

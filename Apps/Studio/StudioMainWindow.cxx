@@ -51,6 +51,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QTimer>
 #include <QCoreApplication>
 #include <QPainter>
 #include <QProgressBar>
@@ -123,6 +124,13 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
   this->BuildDocks();
   this->BuildStatusBar();
   this->BuildMenus();
+  // The modified mark follows the document whatever changed it (an item's
+  // property, the observer, t, a slider): compared with the file's
+  // fingerprint twice a second, a few kilobytes of JSON.
+  auto* modifiedPoll = new QTimer(this);
+  QObject::connect(modifiedPoll, &QTimer::timeout, this, &StudioMainWindow::UpdateModifiedMark);
+  modifiedPoll->start(500);
+  this->Project.MarkClean(ProjectFingerprint(*this->Doc));
 
   // Ctrl+click in the outside view places the selected item's points.
   QObject::connect(this->OutsideWidget, &OutsideView::PointPicked, this, &StudioMainWindow::PlacePoint);
@@ -286,6 +294,10 @@ void StudioMainWindow::BuildMenus()
   QMenu* file = this->menuBar()->addMenu("&File");
   file->addAction(this->style()->standardIcon(QStyle::SP_DialogOpenButton), "&Open...", this,
     [this]() {
+      if (!this->MaySetDocumentAside())
+      {
+        return;
+      }
       const QString path = this->AskOpenPath("Open Project, Metric or Scene", "JSON (*.json);;All files (*)");
       if (!path.isEmpty())
       {
@@ -300,14 +312,43 @@ void StudioMainWindow::BuildMenus()
       this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
     }
   };
+  QMenu* recent = file->addMenu("Open &Recent");
+  recent->setObjectName("RecentFilesMenu");
+  // Filled when it opens: the list lives in the settings, shared by windows.
+  QObject::connect(recent, &QMenu::aboutToShow, this, [this, recent]() {
+    recent->clear();
+    const QStringList paths = ProjectSession::RecentFiles();
+    for (int i = 0; i < paths.size(); ++i)
+    {
+      const QString path = paths[i];
+      recent->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this,
+        [this, path]() {
+          if (this->MaySetDocumentAside())
+          {
+            this->OpenFile(path);
+          }
+        })->setToolTip(path);
+    }
+    if (paths.isEmpty())
+    {
+      recent->addAction("(none)")->setEnabled(false);
+    }
+  });
   file->addAction("&Save Project", this, [this, saveProjectTo]() {
-    saveProjectTo(this->ProjectPath.isEmpty()
+    saveProjectTo(this->Project.Path().isEmpty()
       ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
-      : this->ProjectPath);
+      : this->Project.Path());
   }, QKeySequence::Save);
-  file->addAction("Save Project &As...", this, [this, saveProjectTo]() {
+  QAction* saveAs = file->addAction("Save Project &As...", this, [this, saveProjectTo]() {
     saveProjectTo(this->AskSavePath("Save Project As", "Riemann Studio project (*.json)", "json"));
-  }, QKeySequence::SaveAs);
+  });
+  // QKeySequence::SaveAs is empty on platforms without a theme (Xvfb): say it.
+  QList<QKeySequence> saveAsKeys = QKeySequence::keyBindings(QKeySequence::SaveAs);
+  if (!saveAsKeys.contains(QKeySequence(QStringLiteral("Ctrl+Shift+S"))))
+  {
+    saveAsKeys.prepend(QKeySequence(QStringLiteral("Ctrl+Shift+S")));
+  }
+  saveAs->setShortcuts(saveAsKeys);
   file->addAction("Save &Metric As...", this, [this]() {
     const QString path = this->AskSavePath("Save Metric (with the slider values)", "Metric (*.json)", "json");
     if (!path.isEmpty())
@@ -317,14 +358,20 @@ void StudioMainWindow::BuildMenus()
     }
   });
   QMenu* examples = file->addMenu("&Examples");
-  for (const QString& folder : { QStringLiteral("metrics"), QStringLiteral("scenes") })
+  examples->setObjectName("ExamplesMenu");
+  for (const QString& folder : { QStringLiteral("studio"), QStringLiteral("metrics"), QStringLiteral("scenes") })
   {
-    QMenu* menu = examples->addMenu(folder == "metrics" ? "Metrics" : "Scenes");
+    QMenu* menu = examples->addMenu(folder == "studio" ? "Projects" : folder == "metrics" ? "Metrics" : "Scenes");
     const QDir directory(DataDirectory() + "/" + folder);
     for (const QFileInfo& entry : directory.entryInfoList({ "*.json" }, QDir::Files, QDir::Name))
     {
       const QString path = entry.absoluteFilePath();
-      menu->addAction(entry.completeBaseName(), this, [this, path]() { this->OpenFile(path); });
+      menu->addAction(entry.completeBaseName(), this, [this, path]() {
+        if (this->MaySetDocumentAside())
+        {
+          this->OpenFile(path);
+        }
+      });
     }
   }
   QMenu* exports = file->addMenu("E&xport");
@@ -627,7 +674,7 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
             this->OutsideWidget->Renderer()->ResetCameraClippingRange();
             restoredOutsideCamera = true;
           }
-          this->ProjectPath = path;
+          this->Project.SetPath(path);
         }
       }
       catch (const ProjectError& e)
@@ -683,6 +730,7 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
     return error;
   }
   this->ShowMessage("Opened " + path);
+  this->RememberFile(path);
   this->UpdateTitle();
   if (!restoredOutsideCamera)
   {
@@ -702,11 +750,13 @@ QString StudioMainWindow::SaveProject(const QString& path)
                                                     : "both";
   project.HasOutsideCamera = true;
   project.OutsideCamera.From(this->OutsideWidget->Renderer()->GetActiveCamera());
-  const std::string text = ProjectToJson(project).dump(2) + "\n";
+  const std::string text =
+    ProjectToJson(project, QFileInfo(path).absolutePath().toStdString()).dump(2) + "\n";
   const QString error = WriteFileAtomically(path, QByteArray::fromStdString(text));
   if (error.isEmpty())
   {
-    this->ProjectPath = path;
+    this->Project.SetPath(path);
+    this->RememberFile(path);
     this->UpdateTitle();
   }
   return error;
@@ -874,12 +924,15 @@ void StudioMainWindow::Settle(int timeoutMilliseconds)
 
 QString StudioMainWindow::AskOpenPath(const QString& title, const QString& filter)
 {
-  return QFileDialog::getOpenFileName(this, title, QString(), filter);
+  const QString path = QFileDialog::getOpenFileName(this, title, this->Project.StartFolder(), filter);
+  this->Project.RememberFolderOf(path);
+  return path;
 }
 
 QString StudioMainWindow::AskSavePath(const QString& title, const QString& filter, const QString& suffix)
 {
-  QString path = QFileDialog::getSaveFileName(this, title, QString(), filter);
+  QString path = QFileDialog::getSaveFileName(this, title, this->Project.StartFolder(), filter);
+  this->Project.RememberFolderOf(path);
   if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
   {
     path += "." + suffix;
@@ -889,14 +942,72 @@ QString StudioMainWindow::AskSavePath(const QString& title, const QString& filte
 
 void StudioMainWindow::UpdateTitle()
 {
-  const QString project = this->ProjectPath.isEmpty() ? QStringLiteral("untitled")
-                                                      : QFileInfo(this->ProjectPath).fileName();
-  this->setWindowTitle(QStringLiteral("%1 - %2 - Riemann Studio")
+  const QString project = this->Project.Path().isEmpty() ? QStringLiteral("untitled")
+                                                        : QFileInfo(this->Project.Path()).fileName();
+  // "[*]": Qt shows "*" there while the window is modified (UpdateModifiedMark).
+  this->setWindowTitle(QStringLiteral("%1[*] - %2 - Riemann Studio")
                          .arg(project, QString::fromStdString(this->Doc->Metric()->GetDescription())));
+}
+
+bool StudioMainWindow::IsDocumentModified() const
+{
+  return this->Project.IsModified(ProjectFingerprint(*this->Doc));
+}
+
+void StudioMainWindow::UpdateModifiedMark()
+{
+  this->setWindowModified(this->IsDocumentModified());
+}
+
+void StudioMainWindow::RememberFile(const QString& path)
+{
+  this->Project.MarkClean(ProjectFingerprint(*this->Doc));
+  this->Project.RememberFolderOf(path);
+  ProjectSession::AddRecentFile(path);
+  this->UpdateModifiedMark();
+}
+
+bool StudioMainWindow::MaySetDocumentAside()
+{
+  if (!this->AskToSaveChanges || !this->IsDocumentModified())
+  {
+    return true;
+  }
+  const QString name = this->Project.Path().isEmpty() ? QStringLiteral("the untitled project")
+                                                      : QFileInfo(this->Project.Path()).fileName();
+  QMessageBox question(QMessageBox::Warning, "Unsaved changes",
+    "Save the changes to " + name + "?", QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+    this);
+  question.setObjectName("UnsavedChangesQuestion");
+  question.setDefaultButton(QMessageBox::Save);
+  const int answer = question.exec();
+  if (answer == QMessageBox::Discard)
+  {
+    return true;
+  }
+  if (answer != QMessageBox::Save)
+  {
+    return false;
+  }
+  const QString path = this->Project.Path().isEmpty()
+    ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
+    : this->Project.Path();
+  if (path.isEmpty())
+  {
+    return false;
+  }
+  const QString error = this->SaveProject(path);
+  this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
+  return error.isEmpty();
 }
 
 void StudioMainWindow::closeEvent(QCloseEvent* event)
 {
+  if (!this->MaySetDocumentAside())
+  {
+    event->ignore();
+    return;
+  }
   this->Doc->Jobs()->CancelAll();
   this->Doc->Jobs()->WaitForAll();
   event->accept();

@@ -8,6 +8,8 @@
 #ifndef RiemannStudio_StudioMainWindow_h
 #define RiemannStudio_StudioMainWindow_h
 
+#include "ProjectSession.h"
+
 #include <QMainWindow>
 
 #include "vtkNew.h"
@@ -101,6 +103,15 @@ public:
   /// Milliseconds of the last metric change -> inside view drawn.
   double LastUpdateMilliseconds() const { return this->LastUpdate; }
 
+  ///@{
+  /// The project file and its state (ProjectSession): whether the document
+  /// differs from the file (the title's "*"), and whether closing the
+  /// window with unsaved changes asks to save them (default on).
+  const ProjectSession& Session() const { return this->Project; }
+  bool IsDocumentModified() const;
+  void SetAskToSaveChanges(bool ask) { this->AskToSaveChanges = ask; }
+  ///@}
+
 protected:
   void closeEvent(QCloseEvent* event) override;
 
@@ -114,6 +125,12 @@ private:
   QString AskOpenPath(const QString& title, const QString& filter);
   QString AskSavePath(const QString& title, const QString& filter, const QString& suffix);
   void UpdateTitle();
+  /// The title's modified mark from the document (polled, see the constructor).
+  void UpdateModifiedMark();
+  /// The document is the file's now (opened or saved): clean, and a recent file.
+  void RememberFile(const QString& path);
+  /// Ask whether to save unsaved changes; false when the user cancels.
+  bool MaySetDocumentAside();
 
   StudioDocument* Doc;
   InsideView* InsideWidget;
@@ -134,7 +151,8 @@ private:
   QPushButton* Cancel;
   QAction* PickAction = nullptr;
   Layout CurrentLayout = BothViews;
-  QString ProjectPath;
+  ProjectSession Project;
+  bool AskToSaveChanges = true;
   vtkNew<vtkPolyData> Picked;
   double LastUpdate = 0.0;
 };

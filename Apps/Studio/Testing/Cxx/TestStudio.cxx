@@ -9,6 +9,7 @@
 #include "IntegrationValues.h"
 #include "PipelineItems.h"
 #include "ProjectFile.h"
+#include "ProjectSession.h"
 #include "PropertiesPanel.h"
 #include "StudioDocument.h"
 #include "StudioMainWindow.h"
@@ -42,6 +43,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -219,6 +221,9 @@ private Q_SLOTS:
   void StillFramesComeInPiecesAndTheWindowAnswers();
   void WindowScreenshotWaitsForTheFinishedPicture();
   void TheWheelPreviewsThenRefines();
+  void ProjectsTravelWithTheirFiles();
+  void UnsavedChangesAreMarkedAndAsked();
+  void RecentFilesAndShippedProjects();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1046,6 +1051,9 @@ void TestStudio::DraggingTheEyeMovesTheObserver()
 
 int main(int argc, char* argv[])
 {
+  // The recent files (QSettings) of this run only, not the user's.
+  QTemporaryDir settings;
+  qputenv("XDG_CONFIG_HOME", settings.path().toLocal8Bit());
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   TestStudio test;
@@ -1247,4 +1255,125 @@ void TestStudio::TheWheelPreviewsThenRefines()
   QTRY_VERIFY_WITH_TIMEOUT(inside->Pass()->GetRefinementComplete(), 120000);
   QCoreApplication::processEvents();
   QCOMPARE(drawn.last().at(0).toDouble(), 1.0);
+}
+
+void TestStudio::ProjectsTravelWithTheirFiles()
+{
+  // A project saved next to its scene names it relatively ("../scenes/...",
+  // as Studio.md says), so the folder copied elsewhere opens there.
+  QTemporaryDir first;
+  QVERIFY(first.isValid());
+  QVERIFY(QDir(first.path()).mkpath("scenes") && QDir(first.path()).mkpath("studio"));
+  const QString scene = first.filePath("scenes/quick-scene.json");
+  QVERIFY(QFile::rename(WriteQuickScene(first), scene));
+  const QString project = first.filePath("studio/session.json");
+  {
+    auto window = OpenWindow();
+    QVERIFY(window);
+    QCOMPARE(window->OpenFile(scene, false), QString());
+    QCOMPARE(window->SaveProject(project), QString());
+  }
+  QFile saved(project);
+  QVERIFY(saved.open(QIODevice::ReadOnly));
+  const nlohmann::json json = nlohmann::json::parse(saved.readAll().toStdString());
+  QCOMPARE(QString::fromStdString(json.at("scene").at("file").get<std::string>()),
+    QString("../scenes/quick-scene.json"));
+  QVERIFY(!QDir::isAbsolutePath(QString::fromStdString(json.at("metric").value("folder", "."))));
+  // Moved: the first folder is gone, the copy opens with its own scene.
+  QTemporaryDir second;
+  QVERIFY(QDir(second.path()).mkpath("scenes") && QDir(second.path()).mkpath("studio"));
+  QVERIFY(QFile::copy(scene, second.filePath("scenes/quick-scene.json")));
+  QVERIFY(QFile::copy(project, second.filePath("studio/session.json")));
+  QVERIFY(first.remove());
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QCOMPARE(window->OpenFile(second.filePath("studio/session.json"), false), QString());
+  QCOMPARE(QFileInfo(QString(window->Document()->Scene()->GetDefinitionFile())).canonicalFilePath(),
+    QFileInfo(second.filePath("scenes/quick-scene.json")).canonicalFilePath());
+}
+
+void TestStudio::UnsavedChangesAreMarkedAndAsked()
+{
+  QTemporaryDir folder;
+  auto window = OpenWindow(true); // as a user gets it: the helper's short rays are a change
+  QVERIFY(window);
+  // Fresh: nothing to save; the title has Qt's modified placeholder.
+  QVERIFY(!window->IsDocumentModified());
+  QVERIFY(window->windowTitle().contains("[*]"));
+  window->Document()->AddItem("geodesics");
+  QVERIFY(window->IsDocumentModified());
+  QTRY_VERIFY_WITH_TIMEOUT(window->isWindowModified(), 3000);
+  const QString project = folder.filePath("p.json");
+  QCOMPARE(window->SaveProject(project), QString());
+  QVERIFY(!window->IsDocumentModified());
+  QTRY_VERIFY_WITH_TIMEOUT(!window->isWindowModified(), 3000);
+  QCOMPARE(window->Session().Path(), project);
+  QCOMPARE(window->Session().StartFolder(), QFileInfo(project).absolutePath());
+  // Changed again, then closed: the question comes; Cancel keeps the
+  // window open, Discard closes it.
+  window->Document()->Observer()->Azimuth(15.0);
+  window->Document()->ObserverChanged();
+  QVERIFY(window->IsDocumentModified());
+  const auto answer = [](QMessageBox::StandardButton button) {
+    QTimer::singleShot(200, [button]() {
+      auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+      if (box && box->objectName() == "UnsavedChangesQuestion")
+      {
+        box->button(button)->click();
+      }
+    });
+  };
+  answer(QMessageBox::Cancel);
+  QVERIFY(!window->close());
+  QVERIFY(window->isVisible());
+  answer(QMessageBox::Discard);
+  QVERIFY(window->close());
+  // The file kept the first version (Discard wrote nothing).
+  QFile saved(project);
+  QVERIFY(saved.open(QIODevice::ReadOnly));
+  const nlohmann::json json = nlohmann::json::parse(saved.readAll().toStdString());
+  QCOMPARE(int(json.at("items").size()), 1);
+}
+
+void TestStudio::RecentFilesAndShippedProjects()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  const QString metric = DataFile("metrics/twist.json");
+  const QString project = DataFile("studio/gaussian-bump-session.json");
+  QCOMPARE(window->OpenFile(metric, false), QString());
+  QCOMPARE(window->OpenFile(project, false), QString());
+  const QStringList recent = ProjectSession::RecentFiles();
+  QVERIFY(recent.size() >= 2);
+  QCOMPARE(recent.at(0), QFileInfo(project).absoluteFilePath());
+  QCOMPARE(recent.at(1), QFileInfo(metric).absoluteFilePath());
+  // Opened, not modified; File > Open Recent lists both; Examples > Projects the shipped one.
+  QVERIFY(!window->IsDocumentModified());
+  auto* recentMenu = window->findChild<QMenu*>("RecentFilesMenu");
+  QVERIFY(recentMenu);
+  QMetaObject::invokeMethod(recentMenu, "aboutToShow");
+  QVERIFY(recentMenu->actions().size() >= 2);
+  QVERIFY(recentMenu->actions().at(0)->text().contains("gaussian-bump-session.json"));
+  auto* examples = window->findChild<QMenu*>("ExamplesMenu");
+  QVERIFY(examples);
+  QStringList projects;
+  for (QAction* action : examples->actions())
+  {
+    if (action->menu() && action->text() == "Projects")
+    {
+      for (QAction* entry : action->menu()->actions())
+      {
+        projects << entry->text();
+      }
+    }
+  }
+  QVERIFY2(projects.contains("gaussian-bump-session"), qPrintable(projects.join(", ")));
+  // Save As has Ctrl+Shift+S whatever the platform's key bindings.
+  bool saveAs = false;
+  for (QAction* action : window->findChildren<QAction*>())
+  {
+    saveAs = saveAs || (action->text().startsWith("Save Project &As") &&
+                         action->shortcuts().contains(QKeySequence("Ctrl+Shift+S")));
+  }
+  QVERIFY(saveAs);
 }
