@@ -272,6 +272,12 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
       this->Run(added);
     }
   });
+  QObject::connect(added, &PipelineItem::VisibilityChanged, this, [this, added]() {
+    if (added->IsVisible() && this->Stale.count(added) > 0)
+    {
+      this->Run(added);
+    }
+  });
   Q_EMIT this->ItemAdded(added);
   this->Run(added);
   return added;
@@ -289,6 +295,7 @@ void StudioDocument::RemoveItem(PipelineItem* item)
   {
     return;
   }
+  this->Stale.erase(item);
   this->Runner.Cancel(item);
   std::unique_ptr<PipelineItem> removed = std::move(this->ItemList[index]);
   this->ItemList.erase(this->ItemList.begin() + index);
@@ -351,6 +358,14 @@ void StudioDocument::Run(PipelineItem* item)
   {
     return;
   }
+  // A hidden item does not compute (a 200,000-direction locus nobody sees
+  // would hold the cores): it is stale, and computes when shown again.
+  if (!item->IsVisible())
+  {
+    this->Stale.insert(item);
+    return;
+  }
+  this->Stale.erase(item);
   vtkSmartPointer<vtkAlgorithm> job = item->MakeJob(this->MakeJobInputs());
   this->Runner.Start(item, job, item->Name(),
     [this, item](vtkAlgorithm* finished, bool ok, const QString& error) {

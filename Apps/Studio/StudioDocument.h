@@ -21,6 +21,7 @@
 #include "vtkNew.h"
 
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -122,6 +123,8 @@ public:
   JobRunner* Jobs() { return &this->Runner; }
   /// Why the item's last run failed ("" when it did not).
   QString ItemError(const PipelineItem* item) const;
+  /// Whether a hidden item missed a run (it computes when shown again).
+  bool IsStale(const PipelineItem* item) const { return this->Stale.count(item) > 0; }
   ///@}
 
   JobInputs MakeJobInputs() const;
@@ -154,6 +157,8 @@ private:
   std::map<std::string, double> Values;
   std::vector<std::unique_ptr<PipelineItem>> ItemList;
   std::map<const PipelineItem*, QString> Errors;
+  /// Hidden items that missed a run.
+  std::set<const PipelineItem*> Stale;
   JobRunner Runner;
 };
 }

@@ -224,6 +224,7 @@ private Q_SLOTS:
   void ProjectsTravelWithTheirFiles();
   void UnsavedChangesAreMarkedAndAsked();
   void RecentFilesAndShippedProjects();
+  void HiddenItemsDoNotCompute();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1376,4 +1377,28 @@ void TestStudio::RecentFilesAndShippedProjects()
                          action->shortcuts().contains(QKeySequence("Ctrl+Shift+S")));
   }
   QVERIFY(saveAs);
+}
+
+void TestStudio::HiddenItemsDoNotCompute()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  StudioDocument* document = window->Document();
+  PipelineItem* geodesics = document->AddItem("geodesics");
+  window->Settle();
+  QVERIFY(!document->IsStale(geodesics));
+  // Hidden, then the metric changes: no job starts, the item is stale.
+  geodesics->SetVisible(false);
+  QSignalSpy finished(document, &StudioDocument::ItemFinished);
+  QVERIFY(document->SetParameterValue("/parameters/a", 0.4).Ok());
+  QCOMPARE(document->Jobs()->NumberOfRunningJobs(), 0);
+  QVERIFY(!document->Jobs()->IsRunning(geodesics));
+  QVERIFY(document->IsStale(geodesics));
+  window->Settle();
+  QCOMPARE(finished.count(), 0);
+  // Shown: it computes for the metric as it is now.
+  geodesics->SetVisible(true);
+  QVERIFY(!document->IsStale(geodesics));
+  QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+  QCOMPARE(finished.first().at(1).toBool(), true);
 }
