@@ -1,5 +1,7 @@
 #include "StudioMainWindow.h"
 
+#include "HelpMenu.h"
+
 #include "IntegrationValues.h"
 #include "PictureValues.h"
 
@@ -460,13 +462,7 @@ void StudioMainWindow::BuildMenus()
   tools->addAction(resetOutside);
   tools->addAction(this->PickAction);
 
-  QMenu* help = this->menuBar()->addMenu("&Help");
-  help->addAction("&About Riemann Studio", this, [this]() {
-    QMessageBox::about(this, "About Riemann Studio",
-      "<b>Riemann Studio</b> (RiemannVTK)<br>Design a Riemannian metric on R<sup>3</sup> and see "
-      "it from inside (curved rays) and outside.<br>Ctrl+click the inside view to see a pixel's "
-      "ray. The metric format: Documentation/MetricFormat.md.");
-  });
+  AddHelpMenu(this, DataDirectory());
 }
 
 void StudioMainWindow::ShowSelection()

@@ -7,6 +7,7 @@
 // --screenshot renders the opened session (after every item has been
 // computed), writes the PNG and exits: 0 on success, 1 when the file could
 // not be opened or the picture not written, 2 for bad options.
+#include "InsideView.h"
 #include "StudioMainWindow.h"
 
 #include "QVTKOpenGLNativeWidget.h"
@@ -113,6 +114,17 @@ int main(int argc, char* argv[])
     {
       std::fprintf(stderr, "riemann-studio: --pick: expected COLUMN,ROW, got \"%s\"\n",
         qPrintable(parser.value(pick)));
+      return 2;
+    }
+    int viewWidth = 0, viewHeight = 0;
+    window.Inside()->PixelSize(viewWidth, viewHeight);
+    if (column < 0 || row < 0 || column >= viewWidth || row >= viewHeight)
+    {
+      // Picking nothing would write a picture without the ray asked for.
+      std::fprintf(stderr,
+        "riemann-studio: --pick %d,%d: outside the inside view, whose pixels are columns 0 to %d "
+        "and rows 0 to %d (from the bottom left)\n",
+        column, row, viewWidth - 1, viewHeight - 1);
       return 2;
     }
     window.PickPixel(column, row);

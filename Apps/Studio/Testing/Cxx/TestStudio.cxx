@@ -1,6 +1,7 @@
 // riemann-studio driven with QtTest: the real window under xvfb-run (Mesa
 // llvmpipe), each slot one feature of the app, checked against the
 // toolkit's own answers (the same classes the app is built on).
+#include "HelpMenu.h"
 #include "InsideView.h"
 #include "MetricEditor.h"
 #include "OutsideView.h"
@@ -44,6 +45,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -225,6 +227,7 @@ private Q_SLOTS:
   void UnsavedChangesAreMarkedAndAsked();
   void RecentFilesAndShippedProjects();
   void HiddenItemsDoNotCompute();
+  void HelpMenuListsShortcutsAndGuides();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -794,6 +797,13 @@ void TestStudio::CommandLineScreenshot()
   app.start(binary, { "--screenshot", none, "--view", "sideways" });
   QVERIFY(app.waitForFinished(60000));
   QCOMPARE(app.exitCode(), 2);
+  // A pixel outside the inside view is refused, not silently skipped.
+  app.start(binary, { WriteQuickScene(folder), "--screenshot", none, "--pick", "5000,5000",
+                      "--size", "640x400" });
+  QVERIFY(app.waitForFinished(180000));
+  QCOMPARE(app.exitCode(), 2);
+  QVERIFY(QString::fromUtf8(app.readAllStandardError()).contains("--pick 5000,5000: outside the inside view"));
+  QVERIFY(!QFileInfo::exists(none));
   // No display: a message that says what to do, exit status 1 (not Qt's abort).
   QProcessEnvironment headless = QProcessEnvironment::systemEnvironment();
   headless.remove("DISPLAY");
@@ -1401,4 +1411,30 @@ void TestStudio::HiddenItemsDoNotCompute()
   QVERIFY(!document->IsStale(geodesics));
   QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
   QCOMPARE(finished.first().at(1).toBool(), true);
+}
+
+void TestStudio::HelpMenuListsShortcutsAndGuides()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  const QStringList shortcuts = KeyboardShortcuts(window->menuBar());
+  const QString all = shortcuts.join("\n");
+  QVERIFY2(all.contains("File > Save Project As...: Ctrl+Shift+S"), qPrintable(all));
+  QVERIFY2(all.contains("File > Open...: Ctrl+O"), qPrintable(all));
+  // The guides the menu opens are the ones in this tree.
+  const QString data = QFileInfo(DataFile("metrics")).absolutePath();
+  for (const char* name : { "Studio.md", "MetricFormat.md" })
+  {
+    QVERIFY2(QFileInfo::exists(DocumentationPath(data, name)), qPrintable(DocumentationPath(data, name)));
+  }
+  auto* help = window->findChild<QMenu*>("HelpMenu");
+  QVERIFY(help);
+  QStringList entries;
+  for (QAction* action : help->actions())
+  {
+    entries << QString(action->text()).remove('&');
+  }
+  QVERIFY2(entries.contains("Riemann Studio Guide") && entries.contains("Metric Format") &&
+      entries.contains("Keyboard Shortcuts"),
+    qPrintable(entries.join(", ")));
 }
