@@ -348,6 +348,16 @@ ProjectData CaptureProject(const StudioDocument& document)
 std::string ProjectFingerprint(const StudioDocument& document)
 {
   ProjectData project = CaptureProject(document);
+  // A slider at the text's own number is no change: the same document
+  // whether it was moved there or never moved.
+  const Json text = Json::parse(project.MetricText, nullptr, false);
+  for (auto value = project.ParameterValues.begin(); value != project.ParameterValues.end();)
+  {
+    const Json::json_pointer pointer(value->first);
+    const bool same = text.is_object() && text.contains(pointer) && text.at(pointer).is_number() &&
+      text.at(pointer).get<double>() == value->second;
+    value = same ? project.ParameterValues.erase(value) : std::next(value);
+  }
   Json json = ProjectToJson(project);
   json.erase("layout");
   return json.dump();

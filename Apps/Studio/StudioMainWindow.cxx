@@ -125,6 +125,14 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
 
   this->BuildDocks();
   this->BuildStatusBar();
+  // Undo and redo of every change to the document; after one, the editor
+  // shows the metric text the document holds again.
+  this->History = new DocumentHistory(this->Doc,
+    [this]() {
+      this->EditorWidget->SetText(QString::fromStdString(this->Doc->MetricText()));
+      this->UpdateTitle();
+    },
+    this);
   this->BuildMenus();
   // The modified mark follows the document whatever changed it (an item's
   // property, the observer, t, a slider): compared with the file's
@@ -419,6 +427,24 @@ void StudioMainWindow::BuildMenus()
   exports->addAction(this->TimeWidget->ExportAction());
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+
+  // Edit: undo and redo, named by the change ("Undo Add Geodesics").
+  QMenu* edit = this->menuBar()->addMenu("&Edit");
+  edit->setObjectName("EditMenu");
+  QAction* undo = this->History->Stack()->createUndoAction(this, "&Undo");
+  undo->setShortcuts(QKeySequence::Undo);
+  QAction* redo = this->History->Stack()->createRedoAction(this, "&Redo");
+  QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+  for (const char* key : { "Ctrl+Shift+Z", "Ctrl+Y" })
+  {
+    if (!redoKeys.contains(QKeySequence(key)))
+    {
+      redoKeys << QKeySequence(key);
+    }
+  }
+  redo->setShortcuts(redoKeys);
+  edit->addAction(undo);
+  edit->addAction(redo);
 
   // Pipeline: add items (menu and toolbar), delete.
   QMenu* pipeline = this->menuBar()->addMenu("&Pipeline");
@@ -726,6 +752,7 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
     return error;
   }
   this->ShowMessage("Opened " + path);
+  this->History->Reset(); // a new document: undo does not go back into the old one
   this->RememberFile(path);
   this->UpdateTitle();
   if (!restoredOutsideCamera)
@@ -953,6 +980,11 @@ bool StudioMainWindow::IsDocumentModified() const
 void StudioMainWindow::UpdateModifiedMark()
 {
   this->setWindowModified(this->IsDocumentModified());
+}
+
+QUndoStack* StudioMainWindow::UndoStack() const
+{
+  return this->History->Stack();
 }
 
 void StudioMainWindow::RememberFile(const QString& path)

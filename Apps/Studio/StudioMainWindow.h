@@ -8,6 +8,7 @@
 #ifndef RiemannStudio_StudioMainWindow_h
 #define RiemannStudio_StudioMainWindow_h
 
+#include "DocumentHistory.h"
 #include "ProjectSession.h"
 
 #include <QMainWindow>
@@ -108,6 +109,8 @@ public:
   /// differs from the file (the title's "*"), and whether closing the
   /// window with unsaved changes asks to save them (default on).
   const ProjectSession& Session() const { return this->Project; }
+  /// The undo stack of the document's changes (Edit > Undo, Redo).
+  QUndoStack* UndoStack() const;
   bool IsDocumentModified() const;
   void SetAskToSaveChanges(bool ask) { this->AskToSaveChanges = ask; }
   ///@}
@@ -152,6 +155,7 @@ private:
   QAction* PickAction = nullptr;
   Layout CurrentLayout = BothViews;
   ProjectSession Project;
+  DocumentHistory* History = nullptr;
   bool AskToSaveChanges = true;
   vtkNew<vtkPolyData> Picked;
   double LastUpdate = 0.0;

@@ -45,6 +45,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QUndoStack>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -228,6 +229,7 @@ private Q_SLOTS:
   void RecentFilesAndShippedProjects();
   void HiddenItemsDoNotCompute();
   void HelpMenuListsShortcutsAndGuides();
+  void UndoAndRedoEveryKindOfChange();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1437,4 +1439,72 @@ void TestStudio::HelpMenuListsShortcutsAndGuides()
   QVERIFY2(entries.contains("Riemann Studio Guide") && entries.contains("Metric Format") &&
       entries.contains("Keyboard Shortcuts"),
     qPrintable(entries.join(", ")));
+}
+
+void TestStudio::UndoAndRedoEveryKindOfChange()
+{
+  QTemporaryDir folder;
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QCOMPARE(window->OpenFile(WriteQuickScene(folder), false), QString()); // a new document: no history
+  StudioDocument* document = window->Document();
+  QUndoStack* stack = window->UndoStack();
+  QCOMPARE(stack->count(), 0);
+  std::vector<std::string> states = { ProjectFingerprint(*document) };
+  QStringList names;
+  // Each change, then the events after it: one command, named.
+  const auto changed = [&](const QString& name) {
+    QCoreApplication::processEvents();
+    states.push_back(ProjectFingerprint(*document));
+    names << name;
+    return stack->count() == int(states.size()) - 1 && stack->undoText() == name;
+  };
+  PipelineItem* item = document->AddItem("geodesics");
+  const QString first = item->Name(); // "Geodesics1"
+  QVERIFY2(changed("Add " + first), qPrintable(stack->undoText()));
+  item->SetName("Fan");
+  QVERIFY2(changed("Rename " + first + " to Fan"), qPrintable(stack->undoText()));
+  item->SetVisible(false);
+  QVERIFY2(changed("Hide Fan"), qPrintable(stack->undoText()));
+  QVERIFY(item->ApplySettings({ { "NumberOfDirections", 5 } }).isEmpty());
+  QVERIFY2(changed("Apply Fan Properties"), qPrintable(stack->undoText()));
+  // A slider dragged: its steps merge into one command.
+  QVERIFY(document->SetParameterValue("/parameters/a", 0.5).Ok());
+  QCoreApplication::processEvents();
+  QVERIFY(document->SetParameterValue("/parameters/a", 0.45).Ok());
+  QVERIFY2(changed("Set a"), qPrintable(stack->undoText()));
+  nlohmann::json metric = nlohmann::json::parse(document->MetricText());
+  metric["gaussians"][0]["sigma"] = 0.7;
+  window->Editor()->SetText(QString::fromStdString(metric.dump(2)));
+  QVERIFY2(changed("Edit Metric"), qPrintable(stack->undoText()));
+  document->Observer()->Azimuth(12.0);
+  document->ObserverChanged();
+  QVERIFY2(changed("Move Observer"), qPrintable(stack->undoText()));
+  document->RemoveItem(item);
+  QVERIFY2(changed("Delete Fan"), qPrintable(stack->undoText()));
+  // Undo to the start: after each, the document is the one before (its project text).
+  for (int i = int(states.size()) - 1; i > 0; --i)
+  {
+    QCOMPARE(stack->undoText(), names[i - 1]);
+    stack->undo();
+    QCoreApplication::processEvents();
+    QVERIFY2(ProjectFingerprint(*document) == states[i - 1],
+      qPrintable(names[i - 1] + "\nnow:    " + QString::fromStdString(ProjectFingerprint(*document)) +
+        "\nbefore: " + QString::fromStdString(states[i - 1])));
+  }
+  QCOMPARE(stack->count(), int(states.size()) - 1); // undoing recorded nothing new
+  // And redo to the end.
+  for (std::size_t i = 1; i < states.size(); ++i)
+  {
+    stack->redo();
+    QCoreApplication::processEvents();
+    QVERIFY2(ProjectFingerprint(*document) == states[i], qPrintable(names[int(i) - 1]));
+  }
+  // Edit > Undo names the change; Ctrl+Z and Ctrl+Shift+Z / Ctrl+Y are its keys.
+  auto* edit = window->findChild<QMenu*>("EditMenu");
+  QVERIFY(edit);
+  QCOMPARE(QString(edit->actions().at(0)->text()).remove('&'), QString("Undo Delete Fan"));
+  QVERIFY(edit->actions().at(0)->shortcuts().contains(QKeySequence("Ctrl+Z")));
+  QVERIFY(edit->actions().at(1)->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
+  QVERIFY(edit->actions().at(1)->shortcuts().contains(QKeySequence("Ctrl+Y")));
 }
