@@ -64,6 +64,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -836,6 +837,34 @@ QString StudioMainWindow::ExportItemData(PipelineItem* item, const QString& path
     }
   }
   return QString();
+}
+
+void StudioMainWindow::SetPictureSize(Shot what, int width, int height)
+{
+  // Widget sizes are in device-independent pixels; pictures in device pixels.
+  const qreal ratio = this->devicePixelRatioF();
+  const auto fix = [ratio](QWidget* view, int w, int h) {
+    view->setFixedSize(static_cast<int>(std::lround(w / ratio)), static_cast<int>(std::lround(h / ratio)));
+  };
+  switch (what)
+  {
+    case InsideShot:
+      this->SetViewLayout(InsideOnly);
+      fix(this->InsideWidget, width, height);
+      break;
+    case OutsideShot:
+      this->SetViewLayout(OutsideOnly);
+      fix(this->OutsideWidget, width, height);
+      break;
+    case BothShot:
+      this->SetViewLayout(BothViews);
+      fix(this->InsideWidget, width / 2, height);
+      fix(this->OutsideWidget, width - width / 2, height);
+      break;
+    case WindowShot:
+      this->resize(width, height);
+      break;
+  }
 }
 
 QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)

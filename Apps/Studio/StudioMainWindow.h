@@ -72,6 +72,14 @@ public:
   QString ExportFrames(const QString& folder, int count);
   ///@}
 
+  /**
+   * Make the picture SaveScreenshot(`what`) takes `width` x `height` pixels:
+   * the window's size for WindowShot, else the view's (both views side by
+   * side, each half the width, for BothShot), fixed; the window grows
+   * around them (the views render into their own framebuffers, so a
+   * picture larger than the screen is whole).
+   */
+  void SetPictureSize(Shot what, int width, int height);
   void SetViewLayout(Layout layout);
   Layout ViewLayout() const { return this->CurrentLayout; }
   /// Render both views now and let every pending job finish (for --screenshot).

@@ -46,7 +46,9 @@ int main(int argc, char* argv[])
   parser.addPositionalArgument("file", "A project, metric or scene file (JSON) to open.", "[file]");
   QCommandLineOption screenshot("screenshot", "Render the opened session, save it as PNG and exit.", "out.png");
   QCommandLineOption view("view", "What --screenshot captures: window (default), inside, outside or both.", "what", "window");
-  QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1500x900).", "WxH", "1500x900");
+  QCommandLineOption size("size",
+    "Size of the --screenshot picture, WxH: the window's for --view window (default 1500x900), "
+    "else the chosen view's, or both views' side by side.", "WxH", "1500x900");
   QCommandLineOption pick("pick", "Pick this pixel of the inside view (column,row from the "
                                   "bottom left) before the screenshot: its ray shows outside.", "column,row");
   parser.addOption(screenshot);
@@ -80,7 +82,14 @@ int main(int argc, char* argv[])
   const bool batch = parser.isSet(screenshot);
 
   StudioMainWindow window;
-  window.resize(width, height);
+  if (batch && parser.isSet(size))
+  {
+    window.SetPictureSize(shot, width, height);
+  }
+  else
+  {
+    window.resize(width, height);
+  }
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1)
   {

@@ -782,6 +782,15 @@ void TestStudio::CommandLineScreenshot()
   const QImage image(shot);
   QVERIFY(!image.isNull());
   QVERIFY(DistinctColors(image) > 50);
+  // --size is the picture's: both views side by side, 900 x 500 in all.
+  QCOMPARE(image.size(), QSize(900, 500));
+  // One view, larger than the screen (Xvfb's 1280 x 1024): whole.
+  const QString large = folder.filePath("large.png");
+  app.start(binary, { WriteQuickScene(folder), "--screenshot", large, "--view", "inside",
+                      "--size", "1400x1100" });
+  QVERIFY(app.waitForFinished(300000));
+  QVERIFY2(app.exitCode() == 0, app.readAllStandardError().constData());
+  QCOMPARE(QImage(large).size(), QSize(1400, 1100));
   // A bad file: exit status 1 and a message naming the file; no picture.
   QFile bad(folder.filePath("bad-metric.json"));
   QVERIFY(bad.open(QIODevice::WriteOnly));
