@@ -95,7 +95,6 @@ vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& input
 void ConjugateLocusItem::UpdateDisplay()
 {
   const std::string array = this->Text("ColorArray");
-  const std::string map = this->Text("ColorMap");
   const double opacity = this->Number("Opacity");
   const double pointColor[3] = { 1.0, 0.4, 0.3 };
   const double causticColor[3] = { 1.0, 0.6, 0.2 };
@@ -109,8 +108,8 @@ void ConjugateLocusItem::UpdateDisplay()
   {
     vtkPolyDataMapper::SafeDownCast(this->Caustics->GetMapper())->SetInputData(caustics);
   }
-  ApplyColoring(this->Points, points, array, map, opacity, pointColor);
-  ApplyColoring(this->Caustics, caustics, array, map, 0.7 * opacity, causticColor);
+  ApplyColoring(this->Points, points, this->Coloring(array, opacity), pointColor, this->ScalarBar());
+  ApplyColoring(this->Caustics, caustics, this->Coloring(array, 0.7 * opacity), causticColor);
   this->Points->SetVisibility(points != nullptr);
   this->Caustics->SetVisibility(caustics != nullptr);
 }

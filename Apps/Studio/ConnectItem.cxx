@@ -111,8 +111,8 @@ void ConnectItem::UpdateDisplay()
     this->Tubes->SetRadius(0.006 * size);
     this->End->SetRadius(0.02 * size);
   }
-  ApplyColoring(this->Lines, lines, this->Text("ColorArray"), this->Text("ColorMap"),
-    this->Number("Opacity"), PickedRayColor);
+  ApplyColoring(this->Lines, lines, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
+    PickedRayColor, this->ScalarBar());
   const bool shown = lines && lines->GetNumberOfLines() > 0;
   this->Lines->SetVisibility(shown);
   this->EndBall->SetVisibility(shown);

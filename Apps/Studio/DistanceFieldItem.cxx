@@ -142,8 +142,8 @@ void DistanceFieldItem::UpdateDisplay()
   const vtkSmartPointer<vtkPolyData> slice = this->SliceOf(image);
   vtkPolyDataMapper::SafeDownCast(this->Slice->GetMapper())->SetInputData(slice);
   const double white[3] = { 0.9, 0.9, 0.9 };
-  ApplyColoring(this->Slice, slice, this->Text("ColorArray"), this->Text("ColorMap"),
-    this->Number("Opacity"), white);
+  ApplyColoring(this->Slice, slice, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
+    white, this->ScalarBar());
 
   // The wavefronts: level sets of the distance on the slice.
   vtkNew<vtkContourFilter> fronts;

@@ -67,7 +67,6 @@ vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& input
 void ExponentialMapItem::UpdateDisplay()
 {
   const std::string array = this->Text("ColorArray");
-  const std::string map = this->Text("ColorMap");
   const double opacity = this->Number("Opacity");
   const double rayColor[3] = { 0.9, 0.9, 0.9 };
   const double frontColor[3] = { 0.3, 0.7, 1.0 };
@@ -82,8 +81,8 @@ void ExponentialMapItem::UpdateDisplay()
     vtkPolyDataMapper::SafeDownCast(this->Wavefronts->GetMapper())->SetInputData(fronts);
   }
   // The rays stay faint so the wavefronts read.
-  ApplyColoring(this->Rays, rays, array, map, 0.35 * opacity, rayColor);
-  ApplyColoring(this->Wavefronts, fronts, array, map, 0.8 * opacity, frontColor);
+  ApplyColoring(this->Rays, rays, this->Coloring(array, 0.35 * opacity), rayColor);
+  ApplyColoring(this->Wavefronts, fronts, this->Coloring(array, 0.8 * opacity), frontColor, this->ScalarBar());
   this->Rays->SetVisibility(rays != nullptr);
   this->Wavefronts->SetVisibility(fronts != nullptr);
 }

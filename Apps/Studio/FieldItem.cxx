@@ -208,7 +208,7 @@ void FieldItem::UpdateDisplay()
   }
   vtkPolyDataMapper::SafeDownCast(this->Surface->GetMapper())->SetInputData(shown);
   const double white[3] = { 0.9, 0.9, 0.9 };
-  ApplyColoring(this->Surface, shown, array, this->Text("ColorMap"), this->Number("Opacity"), white);
+  ApplyColoring(this->Surface, shown, this->Coloring(array, this->Number("Opacity")), white, this->ScalarBar());
 }
 
 std::vector<std::string> FieldItem::PythonLines(const std::string& var) const

@@ -137,8 +137,8 @@ void GeodesicsItem::UpdateDisplay()
     mapper->SetInputData(lines);
   }
   const double yellow[3] = { 1.0, 0.85, 0.2 };
-  ApplyColoring(this->Lines, lines, this->Text("ColorArray"), this->Text("ColorMap"),
-    this->Number("Opacity"), yellow);
+  ApplyColoring(this->Lines, lines, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
+    yellow, this->ScalarBar());
   this->Lines->SetVisibility(lines != nullptr);
 }
 

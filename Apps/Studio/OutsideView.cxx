@@ -162,6 +162,7 @@ OutsideView::~OutsideView()
 void OutsideView::AddItem(PipelineItem* item)
 {
   this->SceneRenderer->AddViewProp(item->Prop());
+  this->SceneRenderer->AddViewProp(item->ScalarBar());
   auto render = [this]() { this->ScheduleRender(); };
   QObject::connect(item, &PipelineItem::ResultChanged, this, render);
   QObject::connect(item, &PipelineItem::VisibilityChanged, this, render);
@@ -172,6 +173,7 @@ void OutsideView::AddItem(PipelineItem* item)
 void OutsideView::RemoveItem(PipelineItem* item)
 {
   this->SceneRenderer->RemoveViewProp(item->Prop());
+  this->SceneRenderer->RemoveViewProp(item->ScalarBar());
   QObject::disconnect(item, nullptr, this, nullptr);
   this->ScheduleRender();
 }

@@ -153,8 +153,33 @@ PipelineItem::PipelineItem(const QString& name, nlohmann::json defaults)
 {
   // Display settings every item has.
   this->Values.emplace("ColorArray", "Solid");
-  this->Values.emplace("ColorMap", "cool-to-warm");
+  // Perceptual and colour-blind safe by default (ColorMaps.h).
+  this->Values.emplace("ColorMap", "viridis");
   this->Values.emplace("Opacity", 1.0);
+  this->Values.emplace("ColorRange", "data");
+  this->Values.emplace("ColorRangeMinimum", 0.0);
+  this->Values.emplace("ColorRangeMaximum", 1.0);
+  this->Values.emplace("ColorSteps", 0);
+  this->Values.emplace("ScalarBar", false);
+  this->Bar->SetVisibility(false);
+  this->Bar->SetNumberOfLabels(5);
+  this->Bar->SetPosition(0.88, 0.1);
+  this->Bar->SetWidth(0.08);
+  this->Bar->SetHeight(0.8);
+}
+
+ColorScale PipelineItem::Coloring(const std::string& array, double opacity) const
+{
+  ColorScale scale;
+  scale.Array = array;
+  scale.Map = this->Text("ColorMap");
+  scale.Opacity = opacity;
+  scale.CustomRange = this->Text("ColorRange") == "custom";
+  scale.Minimum = this->Number("ColorRangeMinimum");
+  scale.Maximum = this->Number("ColorRangeMaximum");
+  scale.Steps = this->Integer("ColorSteps");
+  scale.ScalarBar = this->Values.at("ScalarBar").get<bool>();
+  return scale;
 }
 
 PipelineItem::~PipelineItem() = default;
@@ -174,6 +199,14 @@ void PipelineItem::SetVisible(bool visible)
   {
     this->Visible = visible;
     this->Assembly->SetVisibility(visible);
+    if (visible)
+    {
+      this->UpdateDisplay(); // the legend comes back with the colouring
+    }
+    else
+    {
+      this->Bar->SetVisibility(false);
+    }
     Q_EMIT this->VisibilityChanged();
   }
 }
@@ -310,7 +343,40 @@ std::vector<PropertySpec> PipelineItem::DisplayProperties() const
   opacity.Minimum = 0.0;
   opacity.Maximum = 1.0;
   opacity.Display = true;
-  return { array, map, opacity };
+
+  // The colour-map editor: range, steps and legend.
+  PropertySpec range;
+  range.Key = "ColorRange";
+  range.Label = "Colour range";
+  range.Type = PropertySpec::Choice;
+  range.Choices = QStringList{ "data", "custom" };
+  range.Help = "data: the array's own range (a diverging map centred on zero); custom: the "
+               "minimum and maximum below";
+  range.Display = true;
+  PropertySpec minimum;
+  minimum.Key = "ColorRangeMinimum";
+  minimum.Label = "Range minimum";
+  minimum.Help = "The value at the map's first colour (custom range)";
+  minimum.Display = true;
+  PropertySpec maximum = minimum;
+  maximum.Key = "ColorRangeMaximum";
+  maximum.Label = "Range maximum";
+  maximum.Help = "The value at the map's last colour (custom range; above the minimum)";
+  PropertySpec steps;
+  steps.Key = "ColorSteps";
+  steps.Label = "Discrete colours";
+  steps.Type = PropertySpec::Integer;
+  steps.Minimum = 0;
+  steps.Maximum = 256;
+  steps.Help = "0: a continuous map; N (2 to 256): N bands of equal width";
+  steps.Display = true;
+  PropertySpec bar;
+  bar.Key = "ScalarBar";
+  bar.Label = "Scalar bar";
+  bar.Type = PropertySpec::Boolean;
+  bar.Help = "Show the map's legend in the outside view";
+  bar.Display = true;
+  return { array, map, opacity, range, minimum, maximum, steps, bar };
 }
 
 double PipelineItem::Number(const char* key) const

@@ -26,7 +26,10 @@
 #include <QString>
 #include <QStringList>
 
+#include "ColorMaps.h"           // For ColorScale
 #include "vtkAssembly.h" // For the Prop() held by vtkSmartPointer
+#include "vtkNew.h"             // For the scalar bar
+#include "vtkScalarBarActor.h"  // For the scalar bar
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -158,6 +161,8 @@ public:
 
   /// What the outside view shows for this item.
   vtkAssembly* Prop() const { return this->Assembly; }
+  /// The item's legend (shown when its ScalarBar setting is on and an array colours it).
+  vtkScalarBarActor* ScalarBar() const { return this->Bar; }
 
   /// Python lines that build this item with `import riemann` (trace export):
   /// `var` is the filter's variable; `metric`, `scene`, `camera` exist.
@@ -189,7 +194,12 @@ protected:
 
   /// Rebuild the display (actors in Prop()) from the results and settings.
   virtual void UpdateDisplay() = 0;
-  /// The display settings every item has: ColorArray, ColorMap, Opacity.
+  /// How `array` colours the item at `opacity`: the colour-map settings
+  /// (ColorMap, ColorRange and its minimum and maximum, ColorSteps, ScalarBar).
+  ColorScale Coloring(const std::string& array, double opacity) const;
+  /// The display settings every item has: ColorArray, ColorMap, Opacity and
+  /// the colour-map editor's (ColorRange, ColorRangeMinimum,
+  /// ColorRangeMaximum, ColorSteps, ScalarBar).
   std::vector<PropertySpec> DisplayProperties() const;
   /// Shared helpers for the concrete items.
   double Number(const char* key) const;
@@ -226,6 +236,7 @@ protected:
 
   std::vector<vtkSmartPointer<vtkDataObject>> Results;
   vtkSmartPointer<vtkAssembly> Assembly;
+  vtkNew<vtkScalarBarActor> Bar;
 
 private:
   QString ItemName;

@@ -65,8 +65,8 @@ void RayBundleItem::UpdateDisplay()
     vtkPolyDataMapper::SafeDownCast(this->Rays->GetMapper())->SetInputData(rays);
   }
   const double grey[3] = { 0.8, 0.8, 0.8 };
-  ApplyColoring(this->Rays, rays, this->Text("ColorArray"), this->Text("ColorMap"),
-    this->Number("Opacity"), grey);
+  ApplyColoring(this->Rays, rays, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
+    grey, this->ScalarBar());
   this->Rays->SetVisibility(rays != nullptr);
 }
 

@@ -2,6 +2,7 @@
 // llvmpipe), each slot one feature of the app, checked against the
 // toolkit's own answers (the same classes the app is built on).
 #include "HelpMenu.h"
+#include "ColorMaps.h"
 #include "InsideView.h"
 #include "MetricEditor.h"
 #include "OutsideView.h"
@@ -38,6 +39,8 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProp3DCollection.h"
 #include "vtkRenderer.h"
+#include "vtkLookupTable.h"
+#include "vtkScalarBarActor.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <QAction>
@@ -230,6 +233,7 @@ private Q_SLOTS:
   void HiddenItemsDoNotCompute();
   void HelpMenuListsShortcutsAndGuides();
   void UndoAndRedoEveryKindOfChange();
+  void ColourMapEditorIsAppliedAndSaved();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1516,4 +1520,61 @@ void TestStudio::UndoAndRedoEveryKindOfChange()
   QVERIFY(edit->actions().at(0)->shortcuts().contains(QKeySequence("Ctrl+Z")));
   QVERIFY(edit->actions().at(1)->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
   QVERIFY(edit->actions().at(1)->shortcuts().contains(QKeySequence("Ctrl+Y")));
+}
+
+void TestStudio::ColourMapEditorIsAppliedAndSaved()
+{
+  QTemporaryDir folder;
+  const QString project = folder.filePath("colours.json");
+  const nlohmann::json colours = { { "ColorArray", "ArcLength" }, { "ColorMap", "magma" },
+    { "ColorRange", "custom" }, { "ColorRangeMinimum", 0.5 }, { "ColorRangeMaximum", 2.0 },
+    { "ColorSteps", 5 }, { "ScalarBar", true } };
+  // The lookup table and legend an item shows for `colours`.
+  const auto check = [](PipelineItem* item) {
+    vtkScalarBarActor* bar = item->ScalarBar();
+    QVERIFY(bar->GetVisibility());
+    auto* table = vtkLookupTable::SafeDownCast(bar->GetLookupTable());
+    QVERIFY(table);
+    QCOMPARE(int(table->GetNumberOfTableValues()), 5);
+    QCOMPARE(table->GetTableRange()[0], 0.5);
+    QCOMPARE(table->GetTableRange()[1], 2.0);
+    QCOMPARE(QString(bar->GetTitle()), QString("ArcLength"));
+    // magma's first band (its value at 0.1 of the range) is dark purple.
+    double rgb[4];
+    table->GetTableValue(0, rgb);
+    QVERIFY2(rgb[0] < 0.15 && rgb[1] < 0.1 && rgb[2] < 0.35, qPrintable(QString("%1 %2 %3").arg(rgb[0]).arg(rgb[1]).arg(rgb[2])));
+  };
+  {
+    auto window = OpenWindow();
+    QVERIFY(window);
+    QVERIFY(ColorMapNames().startsWith("viridis"));
+    for (const char* name : { "cividis", "magma", "cool-to-warm", "vtk-rainbow" })
+    {
+      QVERIFY(ColorMapNames().contains(name));
+    }
+    PipelineItem* geodesics = window->Document()->AddItem("geodesics");
+    QCOMPARE(QString::fromStdString(geodesics->Settings().at("ColorMap").get<std::string>()), QString("viridis"));
+    window->Settle();
+    QVERIFY(!geodesics->ScalarBar()->GetVisibility());
+    QCOMPARE(geodesics->ApplySettings(colours), QString());
+    window->Settle();
+    check(geodesics);
+    // Hidden item, hidden legend; shown again, back.
+    geodesics->SetVisible(false);
+    QVERIFY(!geodesics->ScalarBar()->GetVisibility());
+    geodesics->SetVisible(true);
+    window->Settle();
+    QVERIFY(geodesics->ScalarBar()->GetVisibility());
+    QCOMPARE(window->SaveProject(project), QString());
+  }
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QCOMPARE(window->OpenFile(project, false), QString());
+  window->Settle();
+  PipelineItem* reopened = window->Document()->Items().front().get();
+  for (const auto& setting : colours.items())
+  {
+    QVERIFY2(reopened->Settings().at(setting.key()) == setting.value(), setting.key().c_str());
+  }
+  check(reopened);
 }
