@@ -1,6 +1,8 @@
 #include "StudioMainWindow.h"
 
+#include "DataTable.h"
 #include "HelpMenu.h"
+#include "SpreadsheetView.h"
 
 #include "IntegrationValues.h"
 #include "PictureValues.h"
@@ -180,6 +182,10 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
     {
       this->ShowMessage(item->Name() + ": " + error, true);
     }
+    if (item == this->BrowserWidget->SelectedItem())
+    {
+      this->ShowSpreadsheet();
+    }
     if (item == this->BrowserWidget->SelectedItem() && !this->PropertiesWidget->HasPendingEdits())
     {
       this->ShowSelection(); // new colouring arrays
@@ -223,6 +229,22 @@ void StudioMainWindow::BuildDocks()
 
   this->TimeWidget = new TimeBar(this->Doc, this);
   this->addToolBar(Qt::BottomToolBarArea, this->TimeWidget);
+
+  // The spreadsheet: the selected item's points, else the picked ray's
+  // (hidden at first, as ParaView opens it on demand: View > Spreadsheet).
+  this->SheetWidget = new SpreadsheetView(this);
+  this->SheetDock = new QDockWidget(QStringLiteral("Spreadsheet"), this);
+  this->SheetDock->setObjectName("SpreadsheetDock");
+  this->SheetDock->setWidget(this->SheetWidget);
+  this->addDockWidget(Qt::BottomDockWidgetArea, this->SheetDock);
+  this->SheetDock->hide();
+  QObject::connect(this->SheetDock, &QDockWidget::visibilityChanged, this,
+    [this](bool shown) {
+      if (shown)
+      {
+        this->ShowSpreadsheet();
+      }
+    });
 
   QObject::connect(this->BrowserWidget, &PipelineBrowser::SelectionChanged, this,
     &StudioMainWindow::ShowSelection);
@@ -395,7 +417,9 @@ void StudioMainWindow::BuildMenus()
     }
     const bool image = item->Kind() == "field";
     const QString path = this->AskSavePath("Export " + item->Name(),
-      image ? "VTK image data (*.vti)" : "VTK poly data (*.vtp)", image ? "vti" : "vtp");
+      (image ? QStringLiteral("VTK image data (*.vti)") : QStringLiteral("VTK poly data (*.vtp)")) +
+        ";;CSV table of the points (*.csv)",
+      image ? "vti" : "vtp");
     if (!path.isEmpty())
     {
       const QString error = this->ExportItemData(item, path);
@@ -469,6 +493,9 @@ void StudioMainWindow::BuildMenus()
 
   // View: layout, cameras, picking, backend.
   QMenu* view = this->menuBar()->addMenu("&View");
+  QAction* sheet = this->SheetDock->toggleViewAction();
+  sheet->setText("Spread&sheet (the selected item's points)");
+  view->addAction(sheet);
   view->addAction("Both Views &Side by Side", this, [this]() { this->SetViewLayout(BothViews); });
   view->addAction("&Inside View Only", this, [this]() { this->SetViewLayout(InsideOnly); });
   view->addAction("&Outside View Only", this, [this]() { this->SetViewLayout(OutsideOnly); });
@@ -492,8 +519,29 @@ void StudioMainWindow::BuildMenus()
   AddHelpMenu(this, DataDirectory());
 }
 
+void StudioMainWindow::ShowSpreadsheet()
+{
+  if (!this->SheetDock || !this->SheetDock->isVisible())
+  {
+    return; // filled when shown
+  }
+  if (PipelineItem* item = this->BrowserWidget->SelectedItem())
+  {
+    this->SheetWidget->Show(item->Name(), item->Result(0));
+  }
+  else if (this->Picked->GetNumberOfPoints() > 0)
+  {
+    this->SheetWidget->Show(QStringLiteral("Picked ray"), this->Picked);
+  }
+  else
+  {
+    this->SheetWidget->Show(QString(), nullptr);
+  }
+}
+
 void StudioMainWindow::ShowSelection()
 {
+  this->ShowSpreadsheet();
   if (PipelineItem* item = this->BrowserWidget->SelectedItem())
   {
     this->PropertiesWidget->Show(
@@ -637,6 +685,7 @@ void StudioMainWindow::PickPixel(int column, int row)
   }
   this->Picked->DeepCopy(ray);
   this->OutsideWidget->ShowPickedRay(this->Picked);
+  this->ShowSpreadsheet();
   vtkCellData* cells = ray->GetCellData();
   const double length = cells->GetArray("Length")->GetTuple1(0);
   const int reason = static_cast<int>(cells->GetArray("ReasonForTermination")->GetTuple1(0));
@@ -803,6 +852,22 @@ QString StudioMainWindow::ExportItemData(PipelineItem* item, const QString& path
     return item->Name() + ": nothing to export yet (its job has not finished)";
   }
   const QFileInfo info(path);
+  if (info.suffix().toLower() == "csv")
+  {
+    // The points as the spreadsheet shows them; other outputs next to it.
+    for (int port = 0; port < item->NumberOfResults(); ++port)
+    {
+      const QString target = port == 0
+        ? path
+        : info.dir().filePath(info.completeBaseName() + QStringLiteral("-%1.csv").arg(port));
+      const QString error = WriteFileAtomically(target, TableCsv(PointTable(item->Result(port))));
+      if (!error.isEmpty())
+      {
+        return error;
+      }
+    }
+    return QString();
+  }
   for (int port = 0; port < item->NumberOfResults(); ++port)
   {
     vtkDataObject* data = item->Result(port);

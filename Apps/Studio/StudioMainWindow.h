@@ -10,12 +10,14 @@
 
 #include "DocumentHistory.h"
 #include "ProjectSession.h"
+#include "SpreadsheetView.h"
 
 #include <QMainWindow>
 
 #include "vtkNew.h"
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -96,6 +98,8 @@ public:
   ParameterPanel* Parameters() const { return this->ParameterWidget; }
   TimeBar* Time() const { return this->TimeWidget; }
   QPushButton* CancelButton() const { return this->Cancel; }
+  SpreadsheetView* Spreadsheet() const { return this->SheetWidget; }
+  QDockWidget* SpreadsheetDock() const { return this->SheetDock; }
   ///@}
 
   /// Pick pixel (column, row) of the inside view: trace its ray, show it.
@@ -131,6 +135,8 @@ private:
   void BuildMenus();
   void BuildStatusBar();
   void ShowSelection();
+  /// The spreadsheet shows the selected item's points, else the picked ray's.
+  void ShowSpreadsheet();
   void ShowInsideViewSettings();
   void ShowMessage(const QString& message, bool error = false);
   QString AskOpenPath(const QString& title, const QString& filter);
@@ -152,6 +158,8 @@ private:
   MetricEditor* EditorWidget;
   ParameterPanel* ParameterWidget;
   TimeBar* TimeWidget;
+  SpreadsheetView* SheetWidget = nullptr;
+  QDockWidget* SheetDock = nullptr;
   QLabel* Message;
   QLabel* FrameTime;
   /// "frame N ms" of the last still frame (shown again when moving stops).

@@ -4,6 +4,7 @@
 #include "HelpMenu.h"
 #include "ColorMaps.h"
 #include "InsideView.h"
+#include "SpreadsheetView.h"
 #include "MetricEditor.h"
 #include "OutsideView.h"
 #include "ParameterPanel.h"
@@ -56,6 +57,8 @@
 #include <QSignalSpy>
 #include <QPushButton>
 #include <QSlider>
+#include <QDockWidget>
+#include <QTableWidget>
 #include <QTimer>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -234,6 +237,7 @@ private Q_SLOTS:
   void HelpMenuListsShortcutsAndGuides();
   void UndoAndRedoEveryKindOfChange();
   void ColourMapEditorIsAppliedAndSaved();
+  void SpreadsheetAndCsvExportShowThePoints();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1577,4 +1581,42 @@ void TestStudio::ColourMapEditorIsAppliedAndSaved()
     QVERIFY2(reopened->Settings().at(setting.key()) == setting.value(), setting.key().c_str());
   }
   check(reopened);
+}
+
+void TestStudio::SpreadsheetAndCsvExportShowThePoints()
+{
+  QTemporaryDir folder;
+  auto window = OpenWindow();
+  QVERIFY(window);
+  PipelineItem* geodesics = window->Document()->AddItem("geodesics");
+  QVERIFY(geodesics->ApplySettings({ { "NumberOfDirections", 3 }, { "MaximumPropagation", 1.0 } }).isEmpty());
+  window->Settle();
+  auto* lines = vtkPolyData::SafeDownCast(geodesics->Result(0));
+  QVERIFY(lines && lines->GetNumberOfPoints() > 10);
+  // View > Spreadsheet, the item selected: one row per point, coordinates and arrays.
+  window->SpreadsheetDock()->show();
+  window->Browser()->Select(geodesics);
+  QCoreApplication::processEvents();
+  QTableWidget* table = window->Spreadsheet()->Table();
+  QCOMPARE(table->rowCount(), int(lines->GetNumberOfPoints()));
+  QStringList columns;
+  for (int c = 0; c < table->columnCount(); ++c)
+  {
+    columns << table->horizontalHeaderItem(c)->text();
+  }
+  QVERIFY2(columns.mid(0, 3) == QStringList({ "Points_X", "Points_Y", "Points_Z" }), qPrintable(columns.join(",")));
+  QVERIFY2(columns.contains("ArcLength") && columns.contains("Velocity_0"), qPrintable(columns.join(",")));
+  double p[3];
+  lines->GetPoint(5, p);
+  QCOMPARE(table->item(5, 1)->text().toDouble(), QString::number(p[1], 'g', 8).toDouble());
+  QVERIFY(window->Spreadsheet()->Title().contains(QString::number(lines->GetNumberOfPoints()) + " points"));
+  // Exported as CSV: a header, then the same rows, whole.
+  const QString csv = folder.filePath("fan.csv");
+  QCOMPARE(window->ExportItemData(geodesics, csv), QString());
+  QFile file(csv);
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  const QStringList rows = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+  QCOMPARE(rows.size(), int(lines->GetNumberOfPoints()) + 1);
+  QVERIFY2(rows.first().startsWith("Points_X,Points_Y,Points_Z"), qPrintable(rows.first()));
+  QCOMPARE(rows.at(6).split(',').at(1).toDouble(), p[1]);
 }
