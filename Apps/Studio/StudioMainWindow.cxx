@@ -2,6 +2,7 @@
 
 #include "DataTable.h"
 #include "HelpMenu.h"
+#include "RayMeasure.h"
 #include "SpreadsheetView.h"
 
 #include "IntegrationValues.h"
@@ -69,6 +70,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 namespace riemann
 {
@@ -645,8 +647,15 @@ void StudioMainWindow::PlacePoint(double x, double y, double z)
   const double point[3] = { x, y, z };
   if (!item || !item->TakePickedPoint(point))
   {
+    if (!item && this->Picked->GetNumberOfPoints() > 0)
+    {
+      this->MeasureOnPickedRay(point);
+      return;
+    }
     this->ShowMessage(QStringLiteral("Ctrl+click places the points of a Connection (From, then "
-                                     "To) or a Distance Field (its seed): select one first"),
+                                     "To) or a Distance Field (its seed): select one first; "
+                                     "with nothing selected, two points on the picked ray "
+                                     "measure its arc length"),
       false);
     return;
   }
@@ -657,6 +666,28 @@ void StudioMainWindow::PlacePoint(double x, double y, double z)
                       .arg(z, 0, 'g', 4),
     false);
   this->ShowSelection(); // the form shows the new point
+}
+
+void StudioMainWindow::MeasureOnPickedRay(const double point[3])
+{
+  // Ctrl+click twice: the ray's points nearest to each click, and the arc
+  // length the ray travelled between them.
+  const vtkIdType nearest = NearestRayPoint(this->Picked, point);
+  if (this->MeasureStart < 0)
+  {
+    this->MeasureStart = nearest;
+    this->Measured = std::numeric_limits<double>::quiet_NaN();
+    this->ShowMessage(QStringLiteral("Measuring on the picked ray: from its point %1; Ctrl+click "
+                                     "the second point")
+                        .arg(nearest));
+    return;
+  }
+  this->Measured = ArcLengthBetween(this->Picked, this->MeasureStart, nearest);
+  this->ShowMessage(QStringLiteral("Arc length along the picked ray from its point %1 to %2: %3")
+                      .arg(this->MeasureStart)
+                      .arg(nearest)
+                      .arg(this->Measured, 0, 'g', 6));
+  this->MeasureStart = -1;
 }
 
 void StudioMainWindow::PickPixel(int column, int row)
@@ -684,6 +715,7 @@ void StudioMainWindow::PickPixel(int column, int row)
     return;
   }
   this->Picked->DeepCopy(ray);
+  this->MeasureStart = -1; // a new ray: a new measure
   this->OutsideWidget->ShowPickedRay(this->Picked);
   this->ShowSpreadsheet();
   vtkCellData* cells = ray->GetCellData();

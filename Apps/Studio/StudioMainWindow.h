@@ -14,6 +14,8 @@
 
 #include <QMainWindow>
 
+#include <limits>
+
 #include "vtkNew.h"
 
 class QAction;
@@ -108,6 +110,9 @@ public:
   void PlacePoint(double x, double y, double z);
   /// The last picked ray (vtkRiemannRayBundle's output for that pixel).
   vtkPolyData* PickedRay() const { return this->Picked; }
+  /// The last arc length measured on the picked ray (two Ctrl+clicks in the
+  /// outside view with no item selected); NaN before one.
+  double MeasuredArcLength() const { return this->Measured; }
   /// The status bar's text.
   QString StatusText() const;
   /// The status bar's frame label: "frame N ms", or while the view moves
@@ -137,6 +142,8 @@ private:
   void ShowSelection();
   /// The spreadsheet shows the selected item's points, else the picked ray's.
   void ShowSpreadsheet();
+  /// A Ctrl+click with no item selected: one end of a measure on the picked ray.
+  void MeasureOnPickedRay(const double point[3]);
   void ShowInsideViewSettings();
   void ShowMessage(const QString& message, bool error = false);
   QString AskOpenPath(const QString& title, const QString& filter);
@@ -174,6 +181,9 @@ private:
   DocumentHistory* History = nullptr;
   bool AskToSaveChanges = true;
   vtkNew<vtkPolyData> Picked;
+  /// The first end of a measure on the picked ray (-1: none yet), and the last result.
+  vtkIdType MeasureStart = -1;
+  double Measured = std::numeric_limits<double>::quiet_NaN();
   double LastUpdate = 0.0;
 };
 }

@@ -238,6 +238,7 @@ private Q_SLOTS:
   void UndoAndRedoEveryKindOfChange();
   void ColourMapEditorIsAppliedAndSaved();
   void SpreadsheetAndCsvExportShowThePoints();
+  void TwoPointsOnThePickedRayMeasureItsArcLength();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1619,4 +1620,29 @@ void TestStudio::SpreadsheetAndCsvExportShowThePoints()
   QCOMPARE(rows.size(), int(lines->GetNumberOfPoints()) + 1);
   QVERIFY2(rows.first().startsWith("Points_X,Points_Y,Points_Z"), qPrintable(rows.first()));
   QCOMPARE(rows.at(6).split(',').at(1).toDouble(), p[1]);
+}
+
+void TestStudio::TwoPointsOnThePickedRayMeasureItsArcLength()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  int width, height;
+  window->Inside()->PixelSize(width, height);
+  window->PickPixel(width / 2, height / 2);
+  vtkPolyData* ray = window->PickedRay();
+  QVERIFY(ray->GetNumberOfPoints() > 30);
+  vtkDataArray* arc = ray->GetPointData()->GetArray("ArcLength");
+  QVERIFY(arc);
+  QVERIFY(std::isnan(window->MeasuredArcLength()));
+  // Nothing selected: two Ctrl+clicks (near points 5 and 25 of the ray) measure.
+  window->Browser()->SelectMetric();
+  double a[3], b[3];
+  ray->GetPoint(5, a);
+  ray->GetPoint(25, b);
+  window->PlacePoint(a[0] + 1e-4, a[1], a[2]);
+  QVERIFY(std::isnan(window->MeasuredArcLength()));
+  window->PlacePoint(b[0], b[1] - 1e-4, b[2]);
+  QCOMPARE(window->MeasuredArcLength(), std::abs(arc->GetComponent(25, 0) - arc->GetComponent(5, 0)));
+  QVERIFY2(window->StatusText().contains("Arc length along the picked ray from its point 5 to 25"),
+    qPrintable(window->StatusText()));
 }
