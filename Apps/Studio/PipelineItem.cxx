@@ -216,6 +216,17 @@ std::vector<PropertySpec> PipelineItem::Properties() const
   return this->DisplayProperties();
 }
 
+void PipelineItem::RevertSettings(const nlohmann::json& settings)
+{
+  if (!settings.is_object() || settings == this->Values)
+  {
+    return;
+  }
+  this->Values = settings;
+  this->UpdateDisplay();
+  Q_EMIT this->SettingsChanged(false);
+}
+
 QString PipelineItem::ApplySettings(const nlohmann::json& settings)
 {
   if (!settings.is_object())

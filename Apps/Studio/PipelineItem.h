@@ -143,6 +143,12 @@ public:
    * were taken. Emits SettingsChanged(needsRun) on success.
    */
   QString ApplySettings(const nlohmann::json& settings);
+  /**
+   * Put back `settings` (the ones the shown result was computed with, after
+   * a cancelled job) without asking for a run: the properties say what the
+   * view shows, and nothing restarts by itself.
+   */
+  void RevertSettings(const nlohmann::json& settings);
 
   /// The toolkit filter for these settings, ready to Update() on any thread.
   virtual vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const = 0;

@@ -296,6 +296,8 @@ void StudioDocument::RemoveItem(PipelineItem* item)
     return;
   }
   this->Stale.erase(item);
+  this->Computed.erase(item);
+  this->UserCancelled.erase(item);
   this->Runner.Cancel(item);
   std::unique_ptr<PipelineItem> removed = std::move(this->ItemList[index]);
   this->ItemList.erase(this->ItemList.begin() + index);
@@ -367,16 +369,23 @@ void StudioDocument::Run(PipelineItem* item)
   }
   this->Stale.erase(item);
   vtkSmartPointer<vtkAlgorithm> job = item->MakeJob(this->MakeJobInputs());
+  const nlohmann::json started = item->Settings();
   this->Runner.Start(item, job, item->Name(),
-    [this, item](vtkAlgorithm* finished, bool ok, const QString& error) {
+    [this, item, started](vtkAlgorithm* finished, bool ok, const QString& error) {
       if (this->IndexOf(item) < 0)
       {
         return; // removed meanwhile
       }
+      const bool cancelledByUser = this->UserCancelled.erase(item) > 0;
       if (ok)
       {
         this->Errors.erase(item);
+        this->Computed[item] = started;
         item->TakeResult(finished);
+      }
+      else if (cancelledByUser && error.isEmpty() && this->Computed.count(item) > 0)
+      {
+        item->RevertSettings(this->Computed.at(item));
       }
       else if (!error.isEmpty())
       {
@@ -384,6 +393,18 @@ void StudioDocument::Run(PipelineItem* item)
       }
       Q_EMIT this->ItemFinished(item, ok);
     });
+}
+
+void StudioDocument::CancelAll()
+{
+  for (const auto& item : this->ItemList)
+  {
+    if (this->Runner.IsRunning(item.get()))
+    {
+      this->UserCancelled.insert(item.get());
+    }
+  }
+  this->Runner.CancelAll();
 }
 
 void StudioDocument::RunAll()

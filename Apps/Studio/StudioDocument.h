@@ -123,6 +123,13 @@ public:
   JobRunner* Jobs() { return &this->Runner; }
   /// Why the item's last run failed ("" when it did not).
   QString ItemError(const PipelineItem* item) const;
+  /**
+   * Cancel every job (the window's Cancel): each cancelled item keeps its
+   * last result and goes back to the settings that result was computed
+   * with, so its properties say what the views show and a later change
+   * does not restart the cancelled work by itself.
+   */
+  void CancelAll();
   /// Whether a hidden item missed a run (it computes when shown again).
   bool IsStale(const PipelineItem* item) const { return this->Stale.count(item) > 0; }
   ///@}
@@ -159,6 +166,10 @@ private:
   std::map<const PipelineItem*, QString> Errors;
   /// Hidden items that missed a run.
   std::set<const PipelineItem*> Stale;
+  /// The settings each item's shown result was computed with.
+  std::map<const PipelineItem*, nlohmann::json> Computed;
+  /// Items whose job the user cancelled (CancelAll), until its end is seen.
+  std::set<const PipelineItem*> UserCancelled;
   JobRunner Runner;
 };
 }

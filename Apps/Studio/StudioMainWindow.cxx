@@ -318,8 +318,9 @@ void StudioMainWindow::BuildStatusBar()
     }
   });
   QObject::connect(this->Cancel, &QPushButton::clicked, this, [this]() {
-    this->Doc->Jobs()->CancelAll();
-    this->ShowMessage("Cancelled: the items keep their last results");
+    this->Doc->CancelAll();
+    this->ShowMessage("Cancelled: the items keep their last results and the settings they were "
+                      "computed with");
   });
 }
 
