@@ -51,6 +51,7 @@ void DocumentHistory::Reset()
 {
   this->Undo.clear();
   this->Known = ProjectFingerprint(*this->Doc);
+  Q_EMIT this->Compared();
 }
 
 void DocumentHistory::ScheduleRecord()
@@ -73,14 +74,14 @@ void DocumentHistory::Record()
     return;
   }
   const std::string now = ProjectFingerprint(*this->Doc);
-  if (now == this->Known)
+  if (now != this->Known)
   {
-    return;
+    auto change = MakeDocumentChange(
+      this->Known, now, [this](const std::string& json) { this->Restore(json); });
+    this->Known = now;
+    this->Undo.push(change.release());
   }
-  auto change = MakeDocumentChange(
-    this->Known, now, [this](const std::string& json) { this->Restore(json); });
-  this->Known = now;
-  this->Undo.push(change.release());
+  Q_EMIT this->Compared();
 }
 
 void DocumentHistory::Restore(const std::string& json)
@@ -117,6 +118,7 @@ void DocumentHistory::Restore(const std::string& json)
     this->Restored();
   }
   this->Restoring = false;
+  Q_EMIT this->Compared();
 }
 } // namespace studio
 } // namespace riemann

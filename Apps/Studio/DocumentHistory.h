@@ -49,6 +49,13 @@ public:
   void Reset();
   /// Compare the document with the last known state and record a change (now).
   void Record();
+  /// The document's fingerprint as of the last comparison (ProjectFingerprint).
+  const std::string& Fingerprint() const { return this->Known; }
+
+Q_SIGNALS:
+  /// The document was compared with its last state (after any change,
+  /// undo or redo): Fingerprint() is current.
+  void Compared();
 
 private:
   void ScheduleRecord();

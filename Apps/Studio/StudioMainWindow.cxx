@@ -138,13 +138,11 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
       this->UpdateTitle();
     },
     this);
-  this->BuildMenus();
   // The modified mark follows the document whatever changed it (an item's
-  // property, the observer, t, a slider): compared with the file's
-  // fingerprint twice a second, a few kilobytes of JSON.
-  auto* modifiedPoll = new QTimer(this);
-  QObject::connect(modifiedPoll, &QTimer::timeout, this, &StudioMainWindow::UpdateModifiedMark);
-  modifiedPoll->start(500);
+  // property, the observer, t, a slider): the history compares it with its
+  // last state after every change, undo and redo.
+  QObject::connect(this->History, &DocumentHistory::Compared, this, &StudioMainWindow::UpdateModifiedMark);
+  this->BuildMenus();
   this->Project.MarkClean(ProjectFingerprint(*this->Doc));
 
   // Ctrl+click in the outside view places the selected item's points.
@@ -1106,7 +1104,7 @@ bool StudioMainWindow::IsDocumentModified() const
 
 void StudioMainWindow::UpdateModifiedMark()
 {
-  this->setWindowModified(this->IsDocumentModified());
+  this->setWindowModified(this->Project.IsModified(this->History->Fingerprint()));
 }
 
 QUndoStack* StudioMainWindow::UndoStack() const

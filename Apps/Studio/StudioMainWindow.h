@@ -149,7 +149,7 @@ private:
   QString AskOpenPath(const QString& title, const QString& filter);
   QString AskSavePath(const QString& title, const QString& filter, const QString& suffix);
   void UpdateTitle();
-  /// The title's modified mark from the document (polled, see the constructor).
+  /// The title's modified mark, from the history's last comparison (DocumentHistory::Compared).
   void UpdateModifiedMark();
   /// The document is the file's now (opened or saved): clean, and a recent file.
   void RememberFile(const QString& path);

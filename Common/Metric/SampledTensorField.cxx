@@ -146,14 +146,6 @@ Vec3 SampledTensorField::GridCoordinates(const Vec3& p) const
   return this->WorldToGrid * (p - this->Grid.Origin);
 }
 
-namespace
-{
-/// The samples' extent, faces included: a voxel centre on a face maps to
-/// grid coordinate 0 or n - 1 only up to the rounding of the affine maps (a
-/// mask's placement and the tensors' are each read from float32 numbers),
-/// so this much (in voxels) beyond a face is on it.
-constexpr double FaceTolerance = 1e-6;
-} // namespace
 
 bool SampledTensorField::Inside(const Vec3& p) const
 {

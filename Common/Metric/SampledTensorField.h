@@ -97,6 +97,14 @@ public:
   /// Whether p is in the grid's box, where the samples define g.
   bool Inside(const Vec3& p) const;
   /// Inside() when rays stop outside the box, else true (g = I is data too).
+  /**
+   * The samples' extent, faces included: a voxel centre on a face maps to
+   * grid coordinate 0 or n - 1 only up to the rounding of the affine maps (a
+   * mask's placement and the tensors' are each read from float32 numbers),
+   * so this much (in voxels) beyond a face is on it.
+   */
+  static constexpr double FaceTolerance = 1e-6;
+
   bool InsideData(const Vec3& p) const override { return !this->StopOutside || this->Inside(p); }
   bool GetStopOutside() const { return this->StopOutside; }
   /// The grid coordinates (i, j, k as reals) of world point p.

@@ -48,12 +48,9 @@ double FractionalAnisotropy(const Vec3& eigenvalues)
   return std::sqrt(1.5) * deviation.norm() / norm;
 }
 
-namespace
-{
-/// The q of FractionalAnisotropyOfMetric: a sampled metric's (through the
-/// fast path's wrapper too), else -1.
 double DiffusionExponentOf(const Metric& metric)
 {
+  // A sampled metric's (through the fast path's wrapper too), else -1.
   const Metric* exact = &metric;
   if (const auto* voxels = dynamic_cast<const VoxelChristoffelMetric*>(exact))
   {
@@ -69,6 +66,8 @@ double DiffusionExponentOf(const Metric& metric)
   return -1.0;
 }
 
+namespace
+{
 /// FA of a symmetric positive definite m from its invariants (no eigensolver):
 /// sqrt(3/2) |m - tr(m)/3 I| / |m|, Frobenius norms.
 double FractionalAnisotropyOfMatrix(const Mat3& m)
@@ -85,6 +84,12 @@ double FractionalAnisotropyOfMatrix(const Mat3& m)
 
 bool FractionalAnisotropyOfMetric(const Metric& metric, const Vec3& x, double& anisotropy)
 {
+  return FractionalAnisotropyOfMetric(metric, DiffusionExponentOf(metric), x, anisotropy);
+}
+
+bool FractionalAnisotropyOfMetric(
+  const Metric& metric, double exponent, const Vec3& x, double& anisotropy)
+{
   Mat3 g;
   if (!metric.Tensor(x, g) || !g.allFinite() || !(g.determinant() > 0.0) || !(g(0, 0) > 0.0))
   {
@@ -92,7 +97,6 @@ bool FractionalAnisotropyOfMetric(const Metric& metric, const Vec3& x, double& a
   }
   // Every step of a tract asks this (--stop-fa): the inverse and the tensor
   // itself, the usual metrics, need no eigenvalues.
-  const double exponent = DiffusionExponentOf(metric);
   if (exponent == -1.0 || exponent == 1.0)
   {
     anisotropy = FractionalAnisotropyOfMatrix(exponent == 1.0 ? g : Mat3(g.inverse()));
@@ -117,7 +121,7 @@ int TractStopRules::ReasonToStop(const Vec3& x) const
   if (this->MinimumAnisotropy > 0.0)
   {
     double anisotropy = 0.0;
-    if (!FractionalAnisotropyOfMetric(this->TheMetric, x, anisotropy) ||
+    if (!FractionalAnisotropyOfMetric(this->TheMetric, this->Exponent, x, anisotropy) ||
       anisotropy < this->MinimumAnisotropy)
     {
       return LowAnisotropy;

@@ -57,6 +57,14 @@ RIEMANNCOMMONMETRIC_EXPORT double FractionalAnisotropy(const Vec3& eigenvalues);
 RIEMANNCOMMONMETRIC_EXPORT bool FractionalAnisotropyOfMetric(
   const Metric& metric, const Vec3& x, double& anisotropy);
 
+/// The q of FractionalAnisotropyOfMetric for `metric` (found once: the
+/// stops ask for the anisotropy at every step).
+RIEMANNCOMMONMETRIC_EXPORT double DiffusionExponentOf(const Metric& metric);
+
+/// FractionalAnisotropyOfMetric with the metric's q already known.
+RIEMANNCOMMONMETRIC_EXPORT bool FractionalAnisotropyOfMetric(
+  const Metric& metric, double exponent, const Vec3& x, double& anisotropy);
+
 /**
  * The stops that are properties of a point: StopMask (stop where it is 0,
  * StoppedByMask; outside its grid counts as 0) and MinimumAnisotropy (stop
@@ -68,6 +76,7 @@ class RIEMANNCOMMONMETRIC_EXPORT TractStopRules : public StopCondition
 public:
   explicit TractStopRules(const Metric& metric)
     : TheMetric(metric)
+    , Exponent(DiffusionExponentOf(metric))
   {
   }
   /// Empty: no stop mask.
@@ -81,6 +90,7 @@ public:
 
 private:
   const Metric& TheMetric;
+  double Exponent;
 };
 
 /**

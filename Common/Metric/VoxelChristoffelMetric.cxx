@@ -15,8 +15,6 @@ constexpr int Values = 24;
 /// The index pairs (i, j) of the six independent components of g and of each d_k g, in storage order.
 constexpr int PairI[6] = { 0, 1, 2, 0, 1, 0 };
 constexpr int PairJ[6] = { 0, 1, 2, 1, 2, 2 };
-/// Beyond a face by this much (in voxels) is still on it, as SampledTensorField says.
-constexpr double FaceTolerance = 1e-6;
 } // namespace
 
 VoxelChristoffelMetric::VoxelChristoffelMetric(
@@ -73,7 +71,9 @@ bool VoxelChristoffelMetric::Interpolate(const Vec3& p, int first, int count, fl
   float t[3];
   for (int a = 0; a < 3; ++a)
   {
-    if (!(u[a] >= -FaceTolerance && u[a] <= n[a] - 1 + FaceTolerance))
+    // The box the samples' own field has (SampledTensorField::Inside).
+    constexpr double tolerance = SampledTensorField::FaceTolerance;
+    if (!(u[a] >= -tolerance && u[a] <= n[a] - 1 + tolerance))
     {
       return false;
     }
