@@ -9,6 +9,7 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "Distributed.h"
+#include "FilmFrames.h"
 #include "PictureOptions.h"
 #include "ProgressBar.h"
 
@@ -93,6 +94,8 @@ struct RenderArguments
   double MaximumLength = 0.0;
   double Tolerance = 0.0;
   int Frames = 1;
+  /// A camera path file (CameraPathFile.h): the observer's flight over the frames.
+  std::string CameraPath;
   int Samples = PictureDefaultCount(riemann::PictureSettingId::Samples);
   bool HitError = false;
   std::string HitErrorImage;
@@ -103,15 +106,6 @@ struct RenderArguments
   double Threshold = 1.0;
   std::string Output;
 };
-
-/// "out.png", 3 -> "out_0003.png".
-std::string FramePath(const std::string& path, int frame)
-{
-  const size_t dot = path.find_last_of('.');
-  char number[16];
-  std::snprintf(number, sizeof(number), "_%04d", frame);
-  return path.substr(0, dot) + number + path.substr(dot);
-}
 
 /// The window's colour buffer as an image (row 0 at the top).
 Image Grab(vtkRenderWindow* window)
@@ -428,9 +422,22 @@ void ApplyCameraOptions(vtkCamera* camera, const RenderArguments& args)
 void CheckRenderOptions(const RenderArguments& args)
 {
   const std::string extension = Extension(args.Output);
-  if (extension != "png" && extension != "exr")
+  if (extension != "png" && extension != "exr" && extension != "ogv")
   {
-    throw Failure("-o " + args.Output + ": the output must end in .png or .exr", 2);
+    throw Failure("-o " + args.Output + ": the output must end in .png, .exr or .ogv (a film)", 2);
+  }
+  if (extension == "ogv" && (!args.Reference.empty() || !args.HitErrorImage.empty()))
+  {
+    throw Failure("-o " + args.Output + ": a film cannot be compared with --reference or carry "
+                  "--hit-error-image; write .png frames",
+      2);
+  }
+  // Theora codes colour on 2 x 2 blocks.
+  if (extension == "ogv" && (args.Width % 2 || args.Height % 2))
+  {
+    throw Failure("-o " + args.Output + ": a film's frames need even sides, not " +
+        std::to_string(args.Width) + "x" + std::to_string(args.Height),
+      2);
   }
   if (args.Backend != "cpu" && (args.Samples > 1 || args.HitError || !args.HitErrorImage.empty()))
   {
@@ -775,7 +782,8 @@ void CompareWithReference(const Image& picture, const Image& reference, const Re
 void RunRender(const RenderArguments& args)
 {
   CheckRenderOptions(args);
-  CheckFilePaths({ { "-m", args.Metric }, { "-s", args.Scene }, { "--reference", args.Reference } },
+  CheckFilePaths({ { "-m", args.Metric }, { "-s", args.Scene }, { "--reference", args.Reference },
+                   { "--camera-path", args.CameraPath } },
     { { "-o", args.Output }, { "--hit-error-image", args.HitErrorImage } });
   const Image reference = ReadReference(args);
   vtkNew<vtkRiemannScene> scene;
@@ -802,13 +810,17 @@ void RunRender(const RenderArguments& args)
   {
     frames.reset(new GpuFrames(metric, scene, camera, rays, args, errors));
   }
+  // What each frame shows (t, and the flight of --camera-path), and where it goes.
+  const FilmPlan plan(args.CameraPath, args.Frames, metric);
+  FrameSink sink(args.Output, args.Frames);
   for (int frame = 0; frame < args.Frames; ++frame)
   {
-    const double t = args.Frames > 1 ? static_cast<double>(frame) / (args.Frames - 1) : 0.0;
+    const double t = plan.TimeAt(frame);
     if (!metric->SetTime(t))
     {
       throw Failure(std::string("bad metric: ") + metric->GetLastError());
     }
+    plan.PlaceCamera(frame, camera);
     Image picture = frames->RenderFrame(frame, args.Frames);
     if (Rank() != 0)
     {
@@ -818,8 +830,7 @@ void RunRender(const RenderArguments& args)
     {
       picture = SideBySide(picture, RenderOutside(metric, scene, camera, rays, args, errors));
     }
-    const std::string path = args.Frames > 1 ? FramePath(args.Output, frame) : args.Output;
-    WritePicture(path, picture);
+    const std::string path = sink.Add(frame, picture);
     if (args.Frames > 1)
     {
       std::cerr << "riemann render: frame " << frame + 1 << "/" << args.Frames << " (t = " << t
@@ -829,6 +840,10 @@ void RunRender(const RenderArguments& args)
     {
       CompareWithReference(picture, reference, args);
     }
+  }
+  if (Rank() == 0)
+  {
+    sink.Finish();
   }
 }
 } // namespace
@@ -875,8 +890,14 @@ void RegisterRenderCommand(CLI::App& app)
   AddIntegrationOptions(command, integration);
   command
     ->add_option("--frames", args->Frames,
-      "Animate the metric's time t from 0 to 1 over N frames, written as OUT_0000.png, ...")
+      "Animate over N frames: the metric's time t from 0 to 1 (or the camera path's times) and "
+      "the camera along --camera-path; written as OUT_0000.png, ... or one film -o OUT.ogv")
     ->check(WholeNumber(1, 100000));
+  command
+    ->add_option("--camera-path", args->CameraPath,
+      "Fly the observer along a geodesic or a spline of key positions (JSON, see "
+      "Documentation/CameraPaths.md), its view frame transported by the metric, over --frames")
+    ->check(CLI::ExistingFile);
   command
     ->add_option("--bundle", args->Bundle,
       "Also draw an outside view with an N x N bundle of the rays, side by side")
@@ -888,7 +909,10 @@ void RegisterRenderCommand(CLI::App& app)
     ->add_option("--threshold", args->Threshold,
       "Largest accepted mean per-pixel difference to the reference, 0-255 (default 1)")
     ->check(FiniteNumber(0.0, 255.0));
-  command->add_option("--output,-o", args->Output, "Output picture: .png or .exr")->required();
+  command
+    ->add_option("--output,-o", args->Output,
+      "Output picture: .png or .exr; or a film, .ogv (Ogg Theora, 24 frames per second)")
+    ->required();
   command->callback([args]() { RunRender(*args); });
 }
 } // namespace cli

@@ -147,6 +147,7 @@ CameraPathFile ParseCameraPathFile(const std::string& text, const std::string& w
   if (root.contains(fov))
   {
     settings.Start.ViewAngle = Positive(root.at(fov), where + "." + fov);
+    file.ViewAngleGiven = true;
   }
   if (root.contains("step"))
   {

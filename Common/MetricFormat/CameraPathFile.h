@@ -37,6 +37,8 @@ struct CameraPathFile
   /// The metric's time at the first and last frame.
   double TimeFrom = 0.0;
   double TimeTo = 1.0;
+  /// Whether the file gives "fov" (else the picture's own view angle stays).
+  bool ViewAngleGiven = false;
 };
 
 /// Parses the text of a camera path file; `where` names it in errors.
