@@ -67,9 +67,18 @@ void DocumentHistory::ScheduleRecord()
   });
 }
 
+void DocumentHistory::SetPaused(bool paused)
+{
+  this->Paused = paused;
+  if (!paused)
+  {
+    this->Record();
+  }
+}
+
 void DocumentHistory::Record()
 {
-  if (this->Restoring)
+  if (this->Restoring || this->Paused)
   {
     return;
   }

@@ -49,6 +49,12 @@ public:
   void Reset();
   /// Compare the document with the last known state and record a change (now).
   void Record();
+  /**
+   * While paused (an animation export moving t and the observer frame by
+   * frame, then putting them back) changes are not recorded; resuming
+   * compares once, so what is left changed is one step.
+   */
+  void SetPaused(bool paused);
   /// The document's fingerprint as of the last comparison (ProjectFingerprint).
   const std::string& Fingerprint() const { return this->Known; }
 
@@ -69,6 +75,7 @@ private:
   std::string Known;
   bool Restoring = false;
   bool Pending = false;
+  bool Paused = false;
 };
 } // namespace studio
 } // namespace riemann

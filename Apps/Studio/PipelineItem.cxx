@@ -142,6 +142,20 @@ QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value
         return QStringLiteral("expected 1 to 1000 numbers");
       }
       return CheckList(spec, value, static_cast<int>(value.size()), false);
+    case PropertySpec::PointList:
+      if (!value.is_array() || value.size() > 1000)
+      {
+        return QStringLiteral("expected up to 1000 points");
+      }
+      for (std::size_t i = 0; i < value.size(); ++i)
+      {
+        const QString why = CheckList(spec, value[i], 3, false);
+        if (!why.isEmpty())
+        {
+          return QStringLiteral("point %1: %2").arg(i + 1).arg(why);
+        }
+      }
+      return QString();
   }
   return QStringLiteral("unknown kind of setting");
 }

@@ -60,7 +60,8 @@ struct PropertySpec
     Integers3,///< three whole numbers (grid dimensions)
     Choice,   ///< one of Choices (stored as the string)
     Boolean,
-    NumberList ///< one or more real numbers in [Minimum, Maximum] (radii), typed "1, 2.5, 4"
+    NumberList, ///< one or more real numbers in [Minimum, Maximum] (radii), typed "1, 2.5, 4"
+    PointList  ///< zero or more points [x, y, z] (key positions), typed "x, y, z; x, y, z"
   };
   std::string Key;
   QString Label;

@@ -7,7 +7,7 @@ namespace studio
 std::vector<std::string> PipelineItemKinds()
 {
   return { "geodesics", "ray-bundle", "exponential-map", "conjugate-locus", "field",
-    "distance-field", "connect" };
+    "distance-field", "connect", "camera-path" };
 }
 
 QString PipelineItemLabel(const std::string& kind)
@@ -39,6 +39,10 @@ QString PipelineItemLabel(const std::string& kind)
   if (kind == "connect")
   {
     return QStringLiteral("Connection");
+  }
+  if (kind == "camera-path")
+  {
+    return QStringLiteral("Camera Path");
   }
   return QString();
 }
@@ -74,6 +78,10 @@ std::unique_ptr<PipelineItem> MakePipelineItem(const std::string& kind, const QS
   if (kind == "distance-field")
   {
     return std::make_unique<DistanceFieldItem>(name);
+  }
+  if (kind == "camera-path")
+  {
+    return std::make_unique<CameraPathItem>(name);
   }
   if (kind == "connect")
   {

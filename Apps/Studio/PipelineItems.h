@@ -11,6 +11,7 @@
  * | field             | vtkRiemannCurvatureField / VolumeForm / MetricTensorField | slice, isosurface or tensor glyphs |
  * | distance-field    | vtkRiemannDistanceField (+ vtkRiemannCutLocus) | a slice coloured by distance, its wavefronts, the cut locus |
  * | connect           | vtkRiemannGeodesicConnector             | every geodesic between two points, as the picked ray |
+ * | camera-path       | vtkRiemannCameraPath                    | the observer's flight: a tube, cones where it looks |
  */
 #ifndef RiemannStudio_PipelineItems_h
 #define RiemannStudio_PipelineItems_h
@@ -18,11 +19,14 @@
 #include "PipelineItem.h"
 
 #include "vtkActor.h" // For vtkNew<vtkActor>
+#include "vtkGlyph3D.h" // For vtkNew<vtkGlyph3D>
 #include "vtkNew.h"
 #include "vtkSphereSource.h" // For vtkNew<vtkSphereSource>
 #include "vtkTubeFilter.h"   // For vtkNew<vtkTubeFilter>
 
 #include <memory>
+
+class vtkRiemannCameraPath;
 
 
 namespace riemann
@@ -181,6 +185,31 @@ private:
   vtkNew<vtkActor> EndBall;
   /// The next Ctrl+click sets To (else From).
   bool PickTo = false;
+};
+
+class CameraPathItem : public PipelineItem
+{
+  Q_OBJECT
+public:
+  explicit CameraPathItem(const QString& name);
+  std::string Kind() const override { return "camera-path"; }
+  std::string FilterClass() const override { return "vtkRiemannCameraPath"; }
+  std::vector<PropertySpec> Properties() const override;
+  vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
+  std::vector<std::string> PythonLines(const std::string& var) const override;
+  bool TakePickedPoint(const double point[3]) override;
+  /// Sets a vtkRiemannCameraPath's path settings from this item's (all
+  /// but the metric): what Export Animation flies along.
+  void Configure(vtkRiemannCameraPath* path) const;
+
+protected:
+  void UpdateDisplay() override;
+
+private:
+  vtkNew<vtkTubeFilter> Tubes;
+  vtkNew<vtkActor> Path;
+  vtkNew<vtkGlyph3D> Heading;
+  vtkNew<vtkActor> Cones;
 };
 }
 }

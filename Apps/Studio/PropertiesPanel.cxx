@@ -30,6 +30,36 @@ int ComponentCount(const PropertySpec& spec)
   }
 }
 
+/// "x, y, z; x, y, z" as [[x, y, z], [x, y, z]]; empty text is no points.
+nlohmann::json ReadPoints(const QString& text, QString& problem)
+{
+  nlohmann::json points = nlohmann::json::array();
+  const QStringList parts = text.split(';', Qt::SkipEmptyParts);
+  for (int i = 0; i < parts.size(); ++i)
+  {
+    const QStringList xyz = parts[i].split(',', Qt::SkipEmptyParts);
+    nlohmann::json point = nlohmann::json::array();
+    for (const QString& coordinate : xyz)
+    {
+      bool ok = false;
+      const double number = coordinate.trimmed().toDouble(&ok);
+      if (!ok)
+      {
+        problem = QStringLiteral("point %1: \"%2\" is not a number").arg(i + 1).arg(coordinate.trimmed());
+        return nlohmann::json();
+      }
+      point.push_back(number);
+    }
+    if (point.size() != 3)
+    {
+      problem = QStringLiteral("point %1: expected x, y, z").arg(i + 1);
+      return nlohmann::json();
+    }
+    points.push_back(point);
+  }
+  return points;
+}
+
 QString NumberText(const nlohmann::json& value)
 {
   return value.is_number() ? QString::number(value.get<double>(), 'g', 12) : QString();
@@ -127,6 +157,25 @@ QWidget* PropertiesPanel::MakeEditor(const PropertySpec& spec, const nlohmann::j
     QObject::connect(check, &QCheckBox::toggled, this, [this, spec]() { this->Edited(spec, true); });
     editors.push_back(check);
   }
+  else if (spec.Type == PropertySpec::PointList)
+  {
+    auto* line = new QLineEdit(host);
+    QStringList points;
+    for (const nlohmann::json& point : value.is_array() ? value : nlohmann::json::array())
+    {
+      QStringList xyz;
+      for (const nlohmann::json& number : point)
+      {
+        xyz << NumberText(number);
+      }
+      points << xyz.join(", ");
+    }
+    line->setText(points.join("; "));
+    line->setPlaceholderText("x, y, z; x, y, z");
+    QObject::connect(line, &QLineEdit::textEdited, this, [this, spec]() { this->Edited(spec, false); });
+    QObject::connect(line, &QLineEdit::editingFinished, this, [this, spec]() { this->Edited(spec, true); });
+    editors.push_back(line);
+  }
   else if (spec.Type == PropertySpec::NumberList)
   {
     auto* line = new QLineEdit(host);
@@ -173,6 +222,10 @@ nlohmann::json PropertiesPanel::ReadEditor(const PropertySpec& spec, QString& pr
   if (auto* check = qobject_cast<QCheckBox*>(editors.front()))
   {
     return check->isChecked();
+  }
+  if (spec.Type == PropertySpec::PointList)
+  {
+    return ReadPoints(static_cast<QLineEdit*>(editors.front())->text(), problem);
   }
   // A list is one field of comma-separated numbers; a vector, one field each.
   QStringList texts;

@@ -1,5 +1,7 @@
 #include "StudioMainWindow.h"
 
+#include "AnimationExport.h"
+
 #include "DataTable.h"
 #include "HelpMenu.h"
 #include "RayMeasure.h"
@@ -39,6 +41,7 @@
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTable.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -60,6 +63,7 @@
 #include <QCoreApplication>
 #include <QPainter>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStatusBar>
@@ -268,22 +272,8 @@ void StudioMainWindow::BuildDocks()
         this->ShowMessage("Time: " + message, true);
       }
     });
-  QObject::connect(this->TimeWidget, &TimeBar::ExportFramesRequested, this, [this]() {
-    const QString folder = QFileDialog::getExistingDirectory(this, "Export Frames To");
-    if (folder.isEmpty())
-    {
-      return;
-    }
-    bool ok = false;
-    const int count = QInputDialog::getInt(this, "Export Frames", "Number of frames (t from 0 to 1):",
-      25, 2, 10000, 1, &ok);
-    if (ok)
-    {
-      const QString error = this->ExportFrames(folder, count);
-      this->ShowMessage(error.isEmpty() ? QStringLiteral("%1 frames written to %2").arg(count).arg(folder)
-                                        : error, !error.isEmpty());
-    }
-  });
+  QObject::connect(
+    this->TimeWidget, &TimeBar::ExportFramesRequested, this, &StudioMainWindow::AskExportAnimation);
 }
 
 void StudioMainWindow::BuildStatusBar()
@@ -427,21 +417,19 @@ void StudioMainWindow::BuildMenus()
       this->ShowMessage(error.isEmpty() ? item->Name() + " written to " + path : error, !error.isEmpty());
     }
   });
-  const std::pair<const char*, Shot> shots[] = { { "Screenshot of the &Inside View...", InsideShot },
-    { "Screenshot of the &Outside View...", OutsideShot }, { "Screenshot of &Both Views...", BothShot },
-    { "Screenshot of the &Window...", WindowShot } };
-  for (const auto& shot : shots)
-  {
-    const Shot what = shot.second;
-    exports->addAction(shot.first, this, [this, what]() {
-      const QString path = this->AskSavePath("Save Screenshot", "PNG image (*.png)", "png");
-      if (!path.isEmpty())
-      {
-        const QString error = this->SaveScreenshot(path, what);
-        this->ShowMessage(error.isEmpty() ? "Screenshot saved to " + path : error, !error.isEmpty());
-      }
-    });
-  }
+  // Pictures and films at the size asked for, of the view(s) chosen.
+  exports->addAction("&Screenshot...", this, &StudioMainWindow::AskSaveScreenshot,
+    QKeySequence(Qt::CTRL | Qt::Key_P));
+  exports->addAction("&Animation...", this, &StudioMainWindow::AskExportAnimation,
+    QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+  exports->addAction("Screenshot of the &Window...", this, [this]() {
+    const QString path = this->AskSavePath("Save Screenshot", "PNG image (*.png)", "png");
+    if (!path.isEmpty())
+    {
+      const QString error = this->SaveScreenshot(path, WindowShot);
+      this->ShowMessage(error.isEmpty() ? "Screenshot saved to " + path : error, !error.isEmpty());
+    }
+  });
   exports->addAction("&Python Script...", this, [this]() {
     const QString path = this->AskSavePath("Export Python Script", "Python (*.py)", "py");
     if (!path.isEmpty())
@@ -963,7 +951,17 @@ void StudioMainWindow::SetPictureSize(Shot what, int width, int height)
   }
 }
 
-QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
+void StudioMainWindow::ReleasePictureSize(Layout layout)
+{
+  for (QWidget* view : { static_cast<QWidget*>(this->InsideWidget), static_cast<QWidget*>(this->OutsideWidget) })
+  {
+    view->setMinimumSize(0, 0);
+    view->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+  }
+  this->SetViewLayout(layout);
+}
+
+QImage StudioMainWindow::CapturePicture(Shot what)
 {
   QImage image;
   if (what == InsideShot)
@@ -993,6 +991,12 @@ QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
     QCoreApplication::processEvents();
     image = this->grab().toImage();
   }
+  return image;
+}
+
+QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
+{
+  const QImage image = this->CapturePicture(what);
   if (image.isNull())
   {
     return "nothing to capture (is the window shown?)";
@@ -1007,39 +1011,38 @@ QString StudioMainWindow::SaveScreenshot(const QString& path, Shot what)
   return WriteFileAtomically(path, bytes);
 }
 
-QString StudioMainWindow::ExportFrames(const QString& folder, int count)
+void StudioMainWindow::AskExportAnimation()
 {
-  if (count < 2)
+  AnimationDialog dialog(this->Doc, true, this);
+  if (dialog.exec() != QDialog::Accepted)
   {
-    return "export frames: at least 2 frames are needed (t = 0 and t = 1)";
+    return;
   }
-  if (!QDir().mkpath(folder))
+  const AnimationSettings settings = dialog.Settings();
+  QProgressDialog progress("Exporting the animation...", "Cancel", 0, settings.Frames, this);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(0);
+  const QString error = ExportAnimation(*this, settings, [&progress](int done, int) {
+    progress.setValue(done);
+    QCoreApplication::processEvents();
+    return !progress.wasCanceled();
+  });
+  this->ShowMessage(error.isEmpty()
+      ? QStringLiteral("%1 frames written to %2").arg(settings.Frames).arg(settings.Output)
+      : error == "cancelled" ? QStringLiteral("Export cancelled: nothing written") : error,
+    !error.isEmpty() && error != "cancelled");
+}
+
+void StudioMainWindow::AskSaveScreenshot()
+{
+  AnimationDialog dialog(this->Doc, false, this);
+  if (dialog.exec() != QDialog::Accepted)
   {
-    return folder + ": cannot create the folder";
+    return;
   }
-  const double before = this->Doc->Time();
-  QString error;
-  for (int k = 0; k < count && error.isEmpty(); ++k)
-  {
-    const MetricStatus status = this->Doc->SetTime(static_cast<double>(k) / (count - 1));
-    if (!status.Ok())
-    {
-      error = QStringLiteral("frame %1: %2").arg(k).arg(status.Message);
-      break;
-    }
-    this->InsideWidget->RenderNow();
-    if (this->InsideWidget->GetBackend() == InsideView::CPU)
-    {
-      this->Settle();
-    }
-    error = this->SaveScreenshot(QDir(folder).filePath(QString::asprintf("frame-%04d.png", k)), InsideShot);
-    this->Progress->setVisible(true);
-    this->Progress->setValue(1000 * (k + 1) / count);
-    QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-  }
-  this->Progress->setVisible(this->Doc->Jobs()->NumberOfRunningJobs() > 0);
-  this->Doc->SetTime(before);
-  return error;
+  const AnimationSettings settings = dialog.Settings();
+  const QString error = ExportAnimation(*this, settings);
+  this->ShowMessage(error.isEmpty() ? "Screenshot saved to " + settings.Output : error, !error.isEmpty());
 }
 
 void StudioMainWindow::SetViewLayout(Layout layout)

@@ -12,11 +12,13 @@
 #include "ProjectSession.h"
 #include "SpreadsheetView.h"
 
+#include <QImage>
 #include <QMainWindow>
 
 #include <limits>
 
 #include "vtkNew.h"
+#include "vtkType.h" // For vtkIdType
 
 class QAction;
 class QDockWidget;
@@ -71,9 +73,6 @@ public:
   QString ExportPythonScript(const QString& path);
   QString ExportItemData(PipelineItem* item, const QString& path);
   QString SaveScreenshot(const QString& path, Shot what);
-  /// Write `count` frames of the inside view at t = k / (count - 1) as
-  /// folder/frame-0000.png ...
-  QString ExportFrames(const QString& folder, int count);
   ///@}
 
   /**
@@ -84,6 +83,10 @@ public:
    * picture larger than the screen is whole).
    */
   void SetPictureSize(Shot what, int width, int height);
+  /// Undo SetPictureSize: the views size with the window again, in `layout`.
+  void ReleasePictureSize(Layout layout);
+  /// The picture SaveScreenshot(`what`) writes (null when nothing is shown).
+  QImage CapturePicture(Shot what);
   void SetViewLayout(Layout layout);
   Layout ViewLayout() const { return this->CurrentLayout; }
   /// Render both views now and let every pending job finish (for --screenshot).
@@ -92,6 +95,7 @@ public:
   ///@{
   /// Parts of the window (tests, scripting).
   StudioDocument* Document() const { return this->Doc; }
+  DocumentHistory* UndoHistory() const { return this->History; }
   InsideView* Inside() const { return this->InsideWidget; }
   OutsideView* Outside() const { return this->OutsideWidget; }
   PipelineBrowser* Browser() const { return this->BrowserWidget; }
@@ -145,6 +149,10 @@ private:
   /// A Ctrl+click with no item selected: one end of a measure on the picked ray.
   void MeasureOnPickedRay(const double point[3]);
   void ShowInsideViewSettings();
+  /// File > Export > Animation and Screenshot: the dialog, then the export
+  /// (AnimationExport.h) with progress and Cancel.
+  void AskExportAnimation();
+  void AskSaveScreenshot();
   void ShowMessage(const QString& message, bool error = false);
   QString AskOpenPath(const QString& title, const QString& filter);
   QString AskSavePath(const QString& title, const QString& filter, const QString& suffix);

@@ -38,8 +38,8 @@ TimeBar::TimeBar(StudioDocument* document, QWidget* parent)
   this->TimeSpin->setKeyboardTracking(false);
   this->addWidget(this->TimeSpin);
   this->Export = this->addAction(
-    this->style()->standardIcon(QStyle::SP_DialogSaveButton), "Export Frames...");
-  this->Export->setToolTip("Write the inside view at evenly spaced t to PNG files");
+    this->style()->standardIcon(QStyle::SP_DialogSaveButton), "Export Animation...");
+  this->Export->setToolTip("A film of t from 0 to 1 and/or a camera path: PNG pictures or an .ogv film");
 
   this->Ticker->setInterval(40);
   QObject::connect(this->Ticker, &QTimer::timeout, this, &TimeBar::Step);

@@ -15,6 +15,7 @@
 #include "ProjectSession.h"
 #include "PropertiesPanel.h"
 #include "StudioDocument.h"
+#include "AnimationExport.h"
 #include "StudioMainWindow.h"
 
 #include "vtkRiemannIntegrationSettings.h"
@@ -59,7 +60,9 @@
 #include <QSlider>
 #include <QDockWidget>
 #include <QTableWidget>
+#include <QDir>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QTimer>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -240,6 +243,7 @@ private Q_SLOTS:
   void ColourMapEditorIsAppliedAndSaved();
   void SpreadsheetAndCsvExportShowThePoints();
   void TwoPointsOnThePickedRayMeasureItsArcLength();
+  void AnimationFliesAlongACameraPathToFramesAndAFilm();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -886,12 +890,18 @@ void TestStudio::ExportsWriteWholeFiles()
   window->Editor()->SetText(
     R"json({"type": "graph", "parameters": {"a": {"from": 0, "to": 1.5}},)json"
     R"json( "f": "a * exp(-(x^2 + y^2 + z^2) / 0.5)"})json");
-  QCOMPARE(window->ExportFrames(folder.filePath("frames"), 3), QString());
+  AnimationSettings animation;
+  animation.Frames = 3;
+  animation.Width = 160;
+  animation.Height = 120;
+  animation.Output = folder.filePath("frame.png");
+  QCOMPARE(ExportAnimation(*window, animation), QString());
   QImage frames[3];
   for (int k = 0; k < 3; ++k)
   {
-    frames[k] = QImage(folder.filePath(QString::asprintf("frames/frame-%04d.png", k)));
+    frames[k] = QImage(folder.filePath(QString::asprintf("frame_%04d.png", k)));
     QVERIFY(!frames[k].isNull());
+    QCOMPARE(frames[k].size(), QSize(160, 120));
   }
   QVERIFY(DifferentPixels(frames[0], frames[2]) > 0.01);
   QCOMPARE(window->Document()->Time(), 0.0); // back where it was
@@ -1679,4 +1689,127 @@ void TestStudio::TwoPointsOnThePickedRayMeasureItsArcLength()
   QCOMPARE(window->MeasuredArcLength(), std::abs(arc->GetComponent(25, 0) - arc->GetComponent(5, 0)));
   QVERIFY2(window->StatusText().contains("Arc length along the picked ray from its point 5 to 25"),
     qPrintable(window->StatusText()));
+}
+
+void TestStudio::AnimationFliesAlongACameraPathToFramesAndAFilm()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  StudioDocument* document = window->Document();
+  // A camera path item: Ctrl+clicks add keys and make it a spline flight.
+  PipelineItem* path = document->AddItem("camera-path");
+  QVERIFY(path);
+  for (const auto& key : { std::array<double, 3>{ 0.5, 0.5, 3.6 }, std::array<double, 3>{ 0.3, 0.4, 2.6 },
+         std::array<double, 3>{ 0.6, 0.2, 1.6 } })
+  {
+    QVERIFY(path->TakePickedPoint(key.data()));
+  }
+  QCOMPARE(QString::fromStdString(path->Settings().at("PathType").get<std::string>()), QString("spline"));
+  QCOMPARE(path->Settings().at("KeyPositions").size(), std::size_t(3));
+  path->ApplySettings({ { "NumberOfFrames", 12 } });
+  QVERIFY(WaitForJobs(*window));
+  // Its frames: g-orthonormal along the path (the transport keeps them so).
+  auto* frames = vtkPolyData::SafeDownCast(path->Result(0));
+  QVERIFY(frames);
+  QCOMPARE(frames->GetNumberOfPoints(), vtkIdType(12));
+  double worst = 0.0;
+  for (vtkIdType k = 0; k < frames->GetNumberOfPoints(); ++k)
+  {
+    double p[3], g[9], e[3][3];
+    frames->GetPoint(k, p);
+    QVERIFY(document->Metric()->EvaluateMetricTensor(p, g));
+    const char* names[3] = { "Forward", "Up", "Right" };
+    for (int i = 0; i < 3; ++i)
+    {
+      frames->GetPointData()->GetArray(names[i])->GetTuple(k, e[i]);
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        double gij = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          for (int b = 0; b < 3; ++b)
+          {
+            gij += e[i][a] * g[3 * a + b] * e[j][b];
+          }
+        }
+        worst = std::max(worst, std::abs(gij - (i == j ? 1.0 : 0.0)));
+      }
+    }
+  }
+  QVERIFY2(worst < 1e-9, qPrintable(QString("g-orthonormality error %1").arg(worst)));
+
+  // The animation along it: a film read back by the Theora decoder.
+  double observer[3];
+  document->Observer()->GetPosition(observer);
+  const double time = document->Time();
+  const int steps = window->UndoStack()->count();
+  QTemporaryDir folder;
+  AnimationSettings animation;
+  animation.Frames = 5;
+  animation.Width = 96;
+  animation.Height = 64;
+  animation.CameraPath = path->Name();
+  animation.Output = folder.filePath("flight.ogv");
+  int reported = 0;
+  QCOMPARE(ExportAnimation(*window, animation, [&reported](int done, int total) {
+    reported = done;
+    return total == 5;
+  }),
+    QString());
+  QCOMPARE(reported, 5);
+  const QString reader = QCoreApplication::applicationDirPath() + "/riemann-film-frames";
+  if (QFileInfo::exists(reader))
+  {
+    QProcess decode;
+    decode.start(reader, { animation.Output });
+    QVERIFY(decode.waitForFinished(60000));
+    QCOMPARE(decode.exitCode(), 0);
+    const QStringList lines = QString::fromUtf8(decode.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);
+    QVERIFY(!lines.isEmpty());
+    QCOMPARE(lines.first(), QString("frames 5 width 96 height 64"));
+    QVERIFY(lines.at(1) != lines.at(5)); // the first and last frames differ: the observer flew
+  }
+  else
+  {
+    qWarning("riemann-film-frames not built: the film's frames are not read back");
+  }
+  // Everything put back: the observer, t, and no undo steps for the export.
+  double after[3];
+  document->Observer()->GetPosition(after);
+  QCOMPARE(after[0], observer[0]);
+  QCOMPARE(after[1], observer[1]);
+  QCOMPARE(after[2], observer[2]);
+  QCOMPARE(document->Time(), time);
+  QCOMPARE(window->UndoStack()->count(), steps);
+
+  // Both views at a chosen size, as numbered pictures; the first frame is
+  // the flight's start.
+  animation.Frames = 2;
+  animation.View = StudioMainWindow::BothShot;
+  animation.Width = 200;
+  animation.Height = 80;
+  animation.Output = folder.filePath("both.png");
+  QCOMPARE(ExportAnimation(*window, animation), QString());
+  QCOMPARE(QImage(folder.filePath("both_0000.png")).size(), QSize(200, 80));
+  QCOMPARE(QImage(folder.filePath("both_0001.png")).size(), QSize(200, 80));
+
+  // Cancelled after the first frame: nothing is left, neither film nor pictures.
+  QTemporaryDir empty;
+  for (const char* name : { "cancelled.ogv", "cancelled.png" })
+  {
+    animation.Frames = 4;
+    animation.Output = empty.filePath(name);
+    QCOMPARE(ExportAnimation(*window, animation, [](int done, int) { return done < 1; }),
+      QString("cancelled"));
+  }
+  QCOMPARE(QDir(empty.path()).entryList(QDir::Files | QDir::Hidden | QDir::NoDotAndDotDot), QStringList());
+  // Bad requests are refused before anything moves.
+  animation.Output = empty.filePath("film.avi");
+  QVERIFY(ExportAnimation(*window, animation).contains(".png pictures or one .ogv film"));
+  animation.Output = empty.filePath("odd.ogv");
+  animation.Width = 101;
+  QVERIFY(ExportAnimation(*window, animation).contains("even sides"));
 }
