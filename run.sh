@@ -47,6 +47,10 @@ export CCACHE_BASEDIR="$ROOT" CCACHE_NOHASHDIR=1
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libvtk9-dev python3-vtk9 vtk9
+  # Named although libvtk9-dev brings them: the Theora and Ogg headers
+  # (riemann-film-frames reads films back) and Python's embedding library
+  # (riemann-studio's Python shell).
+  libtheora-dev libogg-dev libpython3-dev
   libeigen3-dev libembree-dev libopenimageio-dev openimageio-tools libginac-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libhwy-dev
   python3-numpy xvfb xauth libgl1-mesa-dri
