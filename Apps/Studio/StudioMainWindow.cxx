@@ -1,6 +1,7 @@
 #include "StudioMainWindow.h"
 
 #include "AnimationExport.h"
+#include "PythonShell.h"
 
 #include "DataTable.h"
 #include "HelpMenu.h"
@@ -242,6 +243,13 @@ void StudioMainWindow::BuildDocks()
   this->SheetDock->setWidget(this->SheetWidget);
   this->addDockWidget(Qt::BottomDockWidgetArea, this->SheetDock);
   this->SheetDock->hide();
+  // The Python shell: the studio module and riemann, as in scripts.
+  this->ShellWidget = new PythonShell(this, this);
+  this->ShellDock = new QDockWidget(QStringLiteral("Python Shell"), this);
+  this->ShellDock->setObjectName("PythonShellDock");
+  this->ShellDock->setWidget(this->ShellWidget);
+  this->addDockWidget(Qt::BottomDockWidgetArea, this->ShellDock);
+  this->ShellDock->hide();
   QObject::connect(this->SheetDock, &QDockWidget::visibilityChanged, this,
     [this](bool shown) {
       if (shown)
@@ -485,6 +493,10 @@ void StudioMainWindow::BuildMenus()
   QAction* sheet = this->SheetDock->toggleViewAction();
   sheet->setText("Spread&sheet (the selected item's points)");
   view->addAction(sheet);
+  QAction* shell = this->ShellDock->toggleViewAction();
+  shell->setText("&Python Shell");
+  shell->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+  view->addAction(shell);
   view->addAction("Both Views &Side by Side", this, [this]() { this->SetViewLayout(BothViews); });
   view->addAction("&Inside View Only", this, [this]() { this->SetViewLayout(InsideOnly); });
   view->addAction("&Outside View Only", this, [this]() { this->SetViewLayout(OutsideOnly); });

@@ -40,6 +40,7 @@ class PipelineBrowser;
 class PipelineItem;
 class PropertiesPanel;
 class StudioDocument;
+class PythonShell;
 class TimeBar;
 
 class StudioMainWindow : public QMainWindow
@@ -106,6 +107,8 @@ public:
   QPushButton* CancelButton() const { return this->Cancel; }
   SpreadsheetView* Spreadsheet() const { return this->SheetWidget; }
   QDockWidget* SpreadsheetDock() const { return this->SheetDock; }
+  QDockWidget* PythonShellDock() const { return this->ShellDock; }
+  PythonShell* Shell() const { return this->ShellWidget; }
   ///@}
 
   /// Pick pixel (column, row) of the inside view: trace its ray, show it.
@@ -175,6 +178,8 @@ private:
   TimeBar* TimeWidget;
   SpreadsheetView* SheetWidget = nullptr;
   QDockWidget* SheetDock = nullptr;
+  QDockWidget* ShellDock = nullptr;
+  PythonShell* ShellWidget = nullptr;
   QLabel* Message;
   QLabel* FrameTime;
   /// "frame N ms" of the last still frame (shown again when moving stops).

@@ -3,17 +3,24 @@
 //   riemann-studio [project.json | metric.json | scene.json]
 //   riemann-studio FILE --screenshot out.png [--view window|inside|outside|both] [--size WxH]
 //                  [--pick COLUMN,ROW]
+//   riemann-studio [FILE] --script S.py [--exit]
 //
 // --screenshot renders the opened session (after every item has been
 // computed), writes the PNG and exits: 0 on success, 1 when the file could
-// not be opened or the picture not written, 2 for bad options.
+// not be opened or the picture not written, 2 for bad options. --script runs
+// S.py in the Python shell once FILE is open (the studio module drives the
+// window, StudioPython.h); with --exit the app then exits with the script's
+// status, so every Studio test can be a script.
 #include "InsideView.h"
 #include "StudioMainWindow.h"
+#include "StudioPython.h"
 
 #include "QVTKOpenGLNativeWidget.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
+#include <QFileInfo>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -51,6 +58,14 @@ int main(int argc, char* argv[])
     "else the chosen view's, or both views' side by side.", "WxH", "1500x900");
   QCommandLineOption pick("pick", "Pick this pixel of the inside view (column,row from the "
                                   "bottom left) before the screenshot: its ray shows outside.", "column,row");
+  QCommandLineOption script("script",
+    "Run this Python script in the Python shell once the file is open (the studio module drives "
+    "the window; print goes to the shell and this terminal). The window stays open after it.",
+    "S.py");
+  QCommandLineOption exitAfter("exit", "With --script: exit with the script's status when it ends "
+                                       "(0, SystemExit's code, 1 after an uncaught exception).");
+  parser.addOption(script);
+  parser.addOption(exitAfter);
   parser.addOption(screenshot);
   parser.addOption(pick);
   parser.addOption(view);
@@ -80,6 +95,22 @@ int main(int argc, char* argv[])
     return 2;
   }
   const bool batch = parser.isSet(screenshot);
+  if (parser.isSet(exitAfter) && !parser.isSet(script))
+  {
+    std::fprintf(stderr, "riemann-studio: --exit ends a --script run: give --script S.py\n");
+    return 2;
+  }
+  if (parser.isSet(script) && batch)
+  {
+    std::fprintf(stderr, "riemann-studio: --script and --screenshot: take the screenshot in the "
+                         "script (studio.screenshot(path, view=..., size=(w, h)))\n");
+    return 2;
+  }
+  if (parser.isSet(script) && !QFileInfo(parser.value(script)).isFile())
+  {
+    std::fprintf(stderr, "riemann-studio: --script %s: no such file\n", qPrintable(parser.value(script)));
+    return 2;
+  }
 
   StudioMainWindow window;
   if (batch && parser.isSet(size))
@@ -108,6 +139,23 @@ int main(int argc, char* argv[])
   // Shown once the file is open: the first frame is the file's, not the
   // default scene's (renders are scheduled, and run once the window shows).
   window.show();
+  if (parser.isSet(script))
+  {
+    // The script's prints show in the shell and in this terminal.
+    riemann::studio::StudioPython& python = riemann::studio::StudioPython::Instance();
+    python.SetMirror(true);
+    const QString path = parser.value(script);
+    if (parser.isSet(exitAfter))
+    {
+      window.Settle();
+      return python.RunScript(path);
+    }
+    window.PythonShellDock()->show();
+    QTimer::singleShot(0, &window, [&window, &python, path]() {
+      window.Settle();
+      python.RunScript(path);
+    });
+  }
   if (!batch)
   {
     return app.exec();

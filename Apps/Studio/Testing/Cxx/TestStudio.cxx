@@ -16,6 +16,7 @@
 #include "PropertiesPanel.h"
 #include "StudioDocument.h"
 #include "AnimationExport.h"
+#include "PythonShell.h"
 #include "StudioMainWindow.h"
 
 #include "vtkRiemannIntegrationSettings.h"
@@ -62,6 +63,7 @@
 #include <QTableWidget>
 #include <QDir>
 #include <QEventLoop>
+#include <QFile>
 #include <QFileInfo>
 #include <QTimer>
 #include <QWheelEvent>
@@ -244,6 +246,7 @@ private Q_SLOTS:
   void SpreadsheetAndCsvExportShowThePoints();
   void TwoPointsOnThePickedRayMeasureItsArcLength();
   void AnimationFliesAlongACameraPathToFramesAndAFilm();
+  void PythonShellRunsLinesAndScripts();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1812,4 +1815,56 @@ void TestStudio::AnimationFliesAlongACameraPathToFramesAndAFilm()
   animation.Output = empty.filePath("odd.ogv");
   animation.Width = 101;
   QVERIFY(ExportAnimation(*window, animation).contains("even sides"));
+}
+
+void TestStudio::PythonShellRunsLinesAndScripts()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  PythonShell* shell = window->Shell();
+  QVERIFY(shell);
+  QVERIFY2(shell->Input()->isEnabled(), qPrintable(shell->Transcript()));
+  // Lines as typed: an expression shows its value, a block waits for its end.
+  QVERIFY(!shell->Enter("x = 6 * 7"));
+  QVERIFY(!shell->Enter("x"));
+  QVERIFY2(shell->Transcript().contains("\n42\n"), qPrintable(shell->Transcript()));
+  QVERIFY(shell->Enter("for i in range(2):"));
+  QVERIFY(shell->Enter("    print('line', i)"));
+  QVERIFY(!shell->Enter(""));
+  QVERIFY(shell->Transcript().contains("line 0\nline 1\n"));
+  // The studio module drives this window; errors show as tracebacks.
+  QVERIFY(!shell->Enter("studio.add('geodesics', NumberOfDirections=3)"));
+  QCOMPARE(window->Document()->Items().size(), std::size_t(1));
+  QVERIFY(shell->Transcript().contains("'Geodesics1'"));
+  QVERIFY(!shell->Enter("studio.set('Geodesics1', ConeAngle=400)"));
+  QVERIFY(shell->Transcript().contains("StudioError: Geodesics1: Cone angle: must be in [0, 180]"));
+  QVERIFY(!shell->Enter("1 / 0"));
+  QVERIFY(shell->Transcript().contains("ZeroDivisionError"));
+  QVERIFY(!shell->Enter("studio.undo()"));
+  QCOMPARE(window->Document()->Items().size(), std::size_t(0));
+  // The same modules as scripts.
+  QVERIFY(!shell->Enter("import riemann; print(riemann.vtkRiemannCameraPath.__name__)"));
+  QVERIFY2(shell->Transcript().contains("\nvtkRiemannCameraPath\n"), qPrintable(shell->Transcript()));
+  // Up brings the last line back.
+  QTest::keyClick(shell->Input(), Qt::Key_Up);
+  QCOMPARE(shell->Input()->text(), QString("import riemann; print(riemann.vtkRiemannCameraPath.__name__)"));
+
+  // --script ... --exit: the script's status, its traceback on stderr.
+  const QString studio = QCoreApplication::applicationDirPath() + "/riemann-studio";
+  QTemporaryDir folder;
+  const QString failing = folder.filePath("failing.py");
+  QFile file(failing);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.write("import studio\nprint('items', studio.items())\n1 / 0\n");
+  file.close();
+  QProcess run;
+  run.start(studio, { "--size", "320x240", "--script", failing, "--exit" });
+  QVERIFY(run.waitForFinished(120000));
+  QCOMPARE(run.exitCode(), 1);
+  QVERIFY(QString::fromUtf8(run.readAllStandardOutput()).contains("items []"));
+  QVERIFY(QString::fromUtf8(run.readAllStandardError()).contains("ZeroDivisionError"));
+  run.start(studio, { "--exit" });
+  QVERIFY(run.waitForFinished(60000));
+  QCOMPARE(run.exitCode(), 2);
+  QVERIFY(QString::fromUtf8(run.readAllStandardError()).contains("--exit ends a --script run"));
 }

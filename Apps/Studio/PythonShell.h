@@ -1,0 +1,54 @@
+/**
+ * @class riemann::studio::PythonShell
+ * @brief The Python shell docked in riemann-studio (View > Python Shell):
+ * a console on the app's embedded interpreter (StudioPython.h) with the
+ * `studio` module already imported, `import riemann` and VTK's modules as
+ * in scripts, the output of print and of tracebacks, and the lines typed
+ * before (Up and Down).
+ */
+#ifndef RiemannStudio_PythonShell_h
+#define RiemannStudio_PythonShell_h
+
+#include <QStringList>
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+
+namespace riemann
+{
+namespace studio
+{
+class StudioMainWindow;
+
+class PythonShell : public QWidget
+{
+  Q_OBJECT
+public:
+  PythonShell(StudioMainWindow* window, QWidget* parent = nullptr);
+  ~PythonShell() override;
+
+  /// Runs `line` as if typed and entered; returns whether a block needs more.
+  bool Enter(const QString& line);
+  /// Everything the console shows.
+  QString Transcript() const;
+  QLineEdit* Input() const { return this->Line; }
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+  void Append(const QString& text, bool error);
+
+  StudioMainWindow* Window;
+  QPlainTextEdit* Output;
+  QLabel* Prompt;
+  QLineEdit* Line;
+  QStringList History;
+  int HistoryAt = 0;
+};
+}
+}
+
+#endif

@@ -1,0 +1,370 @@
+#include "StudioScripting.h"
+
+#include "AnimationExport.h"
+#include "DocumentHistory.h"
+#include "MetricEditor.h"
+#include "PipelineItem.h"
+#include "ProjectFile.h"
+#include "StudioDocument.h"
+#include "StudioMainWindow.h"
+
+#include "vtkCamera.h"
+
+#include <QUndoStack>
+
+#include <stdexcept>
+
+namespace riemann
+{
+namespace studio
+{
+namespace
+{
+using Json = nlohmann::json;
+
+[[noreturn]] void Fail(const QString& message)
+{
+  throw std::runtime_error(message.toStdString());
+}
+
+const Json& Argument(const Json& args, size_t index)
+{
+  static const Json none;
+  return index < args.size() ? args[index] : none;
+}
+
+QString Text(const Json& args, size_t index, const char* what)
+{
+  const Json& value = Argument(args, index);
+  if (!value.is_string())
+  {
+    Fail(QStringLiteral("%1: expected a string, got %2").arg(what).arg(QString::fromStdString(value.dump())));
+  }
+  return QString::fromStdString(value.get<std::string>());
+}
+
+PipelineItem* ItemNamed(StudioDocument* document, const QString& name)
+{
+  for (const auto& item : document->Items())
+  {
+    if (item->Name() == name)
+    {
+      return item.get();
+    }
+  }
+  QStringList names;
+  for (const auto& item : document->Items())
+  {
+    names << "\"" + item->Name() + "\"";
+  }
+  Fail("no item named \"" + name + "\"" +
+    (names.isEmpty() ? QStringLiteral(" (the pipeline is empty)") : "; items: " + names.join(", ")));
+}
+
+/// Properties applied as the properties panel applies them: all or none.
+void Apply(PipelineItem* item, const Json& properties)
+{
+  if (!properties.is_object())
+  {
+    Fail("properties must be keyword arguments");
+  }
+  if (properties.empty())
+  {
+    return;
+  }
+  const QString error = item->ApplySettings(properties);
+  if (!error.isEmpty())
+  {
+    Fail(item->Name() + ": " + error);
+  }
+}
+
+StudioMainWindow::Shot ShotNamed(const QString& view)
+{
+  if (view == "inside")
+  {
+    return StudioMainWindow::InsideShot;
+  }
+  if (view == "outside")
+  {
+    return StudioMainWindow::OutsideShot;
+  }
+  if (view == "both")
+  {
+    return StudioMainWindow::BothShot;
+  }
+  if (view == "window")
+  {
+    return StudioMainWindow::WindowShot;
+  }
+  Fail("view \"" + view + "\": expected \"inside\", \"outside\", \"both\" or \"window\"");
+}
+
+void ReadSize(const Json& size, AnimationSettings& settings)
+{
+  if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer())
+  {
+    Fail(QStringLiteral("size: expected (width, height), got %1").arg(QString::fromStdString(size.dump())));
+  }
+  settings.Width = size[0].get<int>();
+  settings.Height = size[1].get<int>();
+}
+
+/// The history knows every change made so far (it compares after events).
+void Settled(StudioMainWindow& window)
+{
+  window.UndoHistory()->Record();
+}
+} // namespace
+
+Json CallStudio(StudioMainWindow& window, const std::string& name, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  if (name == "open")
+  {
+    const QString error = window.OpenFile(Text(args, 0, "path"), false);
+    if (!error.isEmpty())
+    {
+      Fail(error);
+    }
+    return nullptr;
+  }
+  if (name == "items")
+  {
+    Json names = Json::array();
+    for (const auto& item : document->Items())
+    {
+      names.push_back(item->Name().toStdString());
+    }
+    return names;
+  }
+  if (name == "add")
+  {
+    const std::string kind = Text(args, 0, "kind").toStdString();
+    PipelineItem* item = document->AddItem(kind);
+    if (!item)
+    {
+      Fail(QString::fromStdString("unknown kind \"" + kind + "\""));
+    }
+    try
+    {
+      Apply(item, Argument(args, 1).is_null() ? Json::object() : Argument(args, 1));
+    }
+    catch (const std::runtime_error&)
+    {
+      document->RemoveItem(item);
+      throw;
+    }
+    Settled(window);
+    return item->Name().toStdString();
+  }
+  if (name == "set")
+  {
+    Apply(ItemNamed(document, Text(args, 0, "item")), Argument(args, 1));
+    Settled(window);
+    return nullptr;
+  }
+  if (name == "get")
+  {
+    PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
+    Json settings = item->Settings();
+    settings["kind"] = item->Kind();
+    settings["visible"] = item->IsVisible();
+    return settings;
+  }
+  if (name == "remove")
+  {
+    document->RemoveItem(ItemNamed(document, Text(args, 0, "item")));
+    Settled(window);
+    return nullptr;
+  }
+  if (name == "show")
+  {
+    ItemNamed(document, Text(args, 0, "item"))->SetVisible(Argument(args, 1).get<bool>());
+    Settled(window);
+    return nullptr;
+  }
+  if (name == "metric")
+  {
+    if (!Argument(args, 0).is_null())
+    {
+      const QString error = window.Editor()->SetText(Text(args, 0, "text"));
+      if (!error.isEmpty())
+      {
+        Fail("metric: " + error);
+      }
+      Settled(window);
+    }
+    return document->MetricText();
+  }
+  if (name == "time")
+  {
+    const Json& t = Argument(args, 0);
+    if (!t.is_null())
+    {
+      if (!t.is_number())
+      {
+        Fail("time: expected a number");
+      }
+      const MetricStatus status = document->SetTime(t.get<double>());
+      if (!status.Ok())
+      {
+        Fail("time: " + status.Message);
+      }
+      Settled(window);
+    }
+    return document->Time();
+  }
+  if (name == "rename")
+  {
+    PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
+    const QString newName = Text(args, 1, "name").trimmed();
+    if (newName.isEmpty())
+    {
+      Fail("rename: an item's name cannot be empty");
+    }
+    item->SetName(newName);
+    Settled(window);
+    return item->Name().toStdString();
+  }
+  if (name == "parameter")
+  {
+    const std::string pointer = Text(args, 0, "parameter").toStdString();
+    bool known = false;
+    for (const MetricParameter& parameter : document->Parameters())
+    {
+      known = known || parameter.Pointer == pointer;
+    }
+    if (!known)
+    {
+      Fail(QString::fromStdString("no parameter \"" + pointer +
+        "\" in the metric (parameters are named by their JSON pointer, e.g. \"/parameters/a\")"));
+    }
+    const Json& value = Argument(args, 1);
+    if (value.is_number())
+    {
+      const MetricStatus status = document->SetParameterValue(pointer, value.get<double>());
+      if (!status.Ok())
+      {
+        Fail("parameter: " + status.Message);
+      }
+      Settled(window);
+    }
+    return document->ParameterValue(pointer);
+  }
+  if (name == "observer")
+  {
+    vtkCamera* observer = document->Observer();
+    const char* keys[3] = { "position", "look_at", "view_up" };
+    const Json& given = Argument(args, 0);
+    bool moved = false;
+    for (const char* key : keys)
+    {
+      if (given.is_object() && given.contains(key) && !given.at(key).is_null())
+      {
+        const Json& v = given.at(key);
+        if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+        {
+          Fail(QStringLiteral("observer: %1: expected (x, y, z)").arg(key));
+        }
+        const double xyz[3] = { v[0].get<double>(), v[1].get<double>(), v[2].get<double>() };
+        key == keys[0] ? observer->SetPosition(xyz)
+          : key == keys[1] ? observer->SetFocalPoint(xyz)
+                           : observer->SetViewUp(xyz);
+        moved = true;
+      }
+    }
+    if (moved)
+    {
+      document->ObserverChanged();
+      Settled(window);
+    }
+    const auto vector = [](const double* v) { return Json::array({ v[0], v[1], v[2] }); };
+    return { { "position", vector(observer->GetPosition()) },
+      { "look_at", vector(observer->GetFocalPoint()) }, { "view_up", vector(observer->GetViewUp()) } };
+  }
+  if (name == "undo" || name == "redo")
+  {
+    Settled(window);
+    QUndoStack* stack = window.UndoStack();
+    const bool can = name == "undo" ? stack->canUndo() : stack->canRedo();
+    const std::string text = (name == "undo" ? stack->undoText() : stack->redoText()).toStdString();
+    if (can)
+    {
+      name == "undo" ? stack->undo() : stack->redo();
+    }
+    return can ? Json(text) : Json(nullptr);
+  }
+  if (name == "save")
+  {
+    const QString error = window.SaveProject(Text(args, 0, "path"));
+    if (!error.isEmpty())
+    {
+      Fail(error);
+    }
+    return nullptr;
+  }
+  if (name == "project")
+  {
+    return Json::parse(ProjectFingerprint(*document));
+  }
+  if (name == "screenshot")
+  {
+    const QString path = Text(args, 0, "path");
+    const StudioMainWindow::Shot view = ShotNamed(Text(args, 1, "view"));
+    QString error;
+    if (Argument(args, 2).is_null() || view == StudioMainWindow::WindowShot)
+    {
+      error = window.SaveScreenshot(path, view);
+    }
+    else
+    {
+      AnimationSettings picture;
+      picture.Frames = 1;
+      picture.AnimateTime = false;
+      picture.View = view;
+      picture.Output = path;
+      ReadSize(Argument(args, 2), picture);
+      error = ExportAnimation(window, picture);
+    }
+    if (!error.isEmpty())
+    {
+      Fail(error);
+    }
+    return nullptr;
+  }
+  if (name == "export_animation")
+  {
+    AnimationSettings animation;
+    animation.Output = Text(args, 0, "path");
+    const Json& options = Argument(args, 1);
+    animation.Frames = options.value("frames", animation.Frames);
+    animation.View = ShotNamed(QString::fromStdString(options.value("view", std::string("inside"))));
+    if (options.contains("size"))
+    {
+      ReadSize(options.at("size"), animation);
+    }
+    const Json time = options.value("time", Json::array({ 0.0, 1.0 }));
+    animation.AnimateTime = !time.is_null();
+    if (animation.AnimateTime)
+    {
+      animation.TimeFrom = time.at(0).get<double>();
+      animation.TimeTo = time.at(1).get<double>();
+    }
+    animation.CameraPath = QString::fromStdString(options.value("camera_path", std::string()));
+    const QString error = ExportAnimation(window, animation);
+    if (!error.isEmpty())
+    {
+      Fail(error);
+    }
+    return nullptr;
+  }
+  if (name == "render")
+  {
+    window.Settle();
+    return nullptr;
+  }
+  Fail(QString::fromStdString("studio has no function \"" + name + "\""));
+}
+}
+}
