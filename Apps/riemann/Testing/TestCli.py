@@ -1472,7 +1472,7 @@ BAD_INPUTS = [
      "-m", "METRIC", "-o", "OUT.png"], '{"type": "euclidean"}', "no exact reference"),
     ("render: mesh scene on the GPU", ["render", "--scene", "METRIC", "-o", "OUT.png"],
      '{"objects": [{"type": "mesh", "file": "nowhere.ply"}]}', "not found"),
-    ("render: wrong extension", ["render", "-o", "OUT.txt"], None, "must end in .png or .exr"),
+    ("render: wrong extension", ["render", "-o", "OUT.txt"], None, "must end in .png, .exr or .ogv"),
     ("render: bad scene", ["render", "--scene", "METRIC", "-o", "OUT.png"], '{"objects": [{"type": "sphere"}]}',
      "bad scene"),
     ("render: reference with frames", ["render", "--frames", "2", "--reference", "METRIC", "-o", "OUT.png"],
