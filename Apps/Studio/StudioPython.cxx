@@ -136,6 +136,21 @@ def export_animation(path, frames=60, view="inside", size=(640, 480), time=(0, 1
 def render():
     """Draw the views and wait until every item has computed."""
     _call("render")
+
+
+def wait(seconds):
+    """Let the window go on (events, jobs finishing, pictures) for `seconds`."""
+    _call("wait", float(seconds))
+
+
+def cancel():
+    """The Cancel button: every running job stops, its item keeps its last result."""
+    _call("cancel")
+
+
+def running():
+    """How many jobs are running now (items computing, a CPU picture)."""
+    return _call("running")
 )PY";
 
 /// The console, the output streams and the script runner.

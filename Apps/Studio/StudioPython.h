@@ -19,6 +19,8 @@
  *   studio.export_animation(path, frames=60, view="inside", size=(640, 480),
  *                           time=(0, 1), camera_path=None)
  *   studio.render()                   (draw, and wait for every job)
+ *   studio.cancel()                   studio.running() -> jobs running
+ *   studio.wait(seconds)              (the window goes on meanwhile)
  *
  * Failures raise studio.StudioError with the window's message. One
  * interpreter per process (CPython's rule); it drives whichever window was

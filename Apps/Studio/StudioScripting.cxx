@@ -2,6 +2,7 @@
 
 #include "AnimationExport.h"
 #include "DocumentHistory.h"
+#include "JobRunner.h"
 #include "MetricEditor.h"
 #include "PipelineItem.h"
 #include "ProjectFile.h"
@@ -10,6 +11,8 @@
 
 #include "vtkCamera.h"
 
+#include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QUndoStack>
 
 #include <stdexcept>
@@ -358,6 +361,32 @@ Json CallStudio(StudioMainWindow& window, const std::string& name, const Json& a
       Fail(error);
     }
     return nullptr;
+  }
+  if (name == "wait")
+  {
+    const Json& seconds = Argument(args, 0);
+    if (!seconds.is_number() || !(seconds.get<double>() >= 0) || seconds.get<double>() > 3600)
+    {
+      Fail("wait: expected seconds from 0 to 3600");
+    }
+    // The window goes on meanwhile: events, finished jobs, pictures.
+    QElapsedTimer timer;
+    timer.start();
+    const qint64 milliseconds = static_cast<qint64>(seconds.get<double>() * 1000.0);
+    do
+    {
+      QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    } while (timer.elapsed() < milliseconds);
+    return nullptr;
+  }
+  if (name == "cancel")
+  {
+    document->CancelAll();
+    return nullptr;
+  }
+  if (name == "running")
+  {
+    return document->Jobs()->NumberOfRunningJobs();
   }
   if (name == "render")
   {
