@@ -17,6 +17,9 @@
 #include "StudioDocument.h"
 #include "AnimationExport.h"
 #include "PythonShell.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkRenderWindow.h"
 #include "StudioMainWindow.h"
 
 #include "vtkRiemannIntegrationSettings.h"
@@ -247,6 +250,7 @@ private Q_SLOTS:
   void TwoPointsOnThePickedRayMeasureItsArcLength();
   void AnimationFliesAlongACameraPathToFramesAndAFilm();
   void PythonShellRunsLinesAndScripts();
+  void CancelledCpuRenderKeepsThePicture();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1867,4 +1871,49 @@ void TestStudio::PythonShellRunsLinesAndScripts()
   QVERIFY(run.waitForFinished(60000));
   QCOMPARE(run.exitCode(), 2);
   QVERIFY(QString::fromUtf8(run.readAllStandardError()).contains("--exit ends a --script run"));
+}
+
+namespace
+{
+/// Every message VTK would print (errors, warnings) while it is installed.
+class MessageCatcher : public vtkOutputWindow
+{
+public:
+  static MessageCatcher* New();
+  vtkTypeMacro(MessageCatcher, vtkOutputWindow);
+  void DisplayText(const char* text) override { this->Messages << QString::fromUtf8(text); }
+  QStringList Messages;
+};
+vtkStandardNewMacro(MessageCatcher);
+}
+
+void TestStudio::CancelledCpuRenderKeepsThePicture()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  InsideView* inside = window->Inside();
+  inside->SetBackend(InsideView::CPU);
+  window->Settle();
+  const QImage before = inside->grabFramebuffer();
+  QVERIFY(DistinctColors(before) > 5); // a traced picture, not a cleared view
+  vtkNew<MessageCatcher> catcher;
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(catcher);
+  // A new picture asked for (the observer moved, 16 samples a pixel: long),
+  // then cancelled at once: the last picture stays, and VTK says nothing.
+  inside->SetSamplesPerPixel(16);
+  double position[3];
+  window->Document()->Observer()->GetPosition(position);
+  window->Document()->Observer()->SetPosition(position[0] + 0.05, position[1], position[2]);
+  window->Document()->ObserverChanged();
+  QTRY_VERIFY(window->Document()->Jobs()->NumberOfRunningJobs() > 0);
+  window->Document()->CancelAll();
+  QTRY_COMPARE_WITH_TIMEOUT(window->Document()->Jobs()->NumberOfRunningJobs(), 0, 30000);
+  QCoreApplication::processEvents();
+  inside->renderWindow()->Render();
+  const QImage after = inside->grabFramebuffer();
+  vtkOutputWindow::SetInstance(previous);
+  QVERIFY2(catcher->Messages.isEmpty(), qPrintable(catcher->Messages.join("\n")));
+  QCOMPARE(after.size(), before.size());
+  QCOMPARE(DifferentPixels(before, after), 0.0);
 }
