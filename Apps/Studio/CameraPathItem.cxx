@@ -167,8 +167,8 @@ void CameraPathItem::UpdateDisplay()
     path->GetBounds(bounds);
     const double size =
       std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-    this->Tubes->SetRadius(0.004 * size);
-    this->Heading->SetScaleFactor(0.03 * size);
+    this->Tubes->SetRadius(0.01 * size);
+    this->Heading->SetScaleFactor(0.06 * size);
   }
   const double cyan[3] = { 0.3, 0.85, 0.95 };
   ApplyColoring(this->Path, path, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),

@@ -138,6 +138,16 @@ def render():
     _call("render")
 
 
+def select(item=None):
+    """Select the item in the pipeline browser (its properties show); None: the metric."""
+    _call("select", item)
+
+
+def dock(which, visible=True, height=None):
+    """Show or hide a dock: "python" (this shell) or "spreadsheet"; `height` in pixels."""
+    _call("dock", which, bool(visible), None if height is None else int(height))
+
+
 def wait(seconds):
     """Let the window go on (events, jobs finishing, pictures) for `seconds`."""
     _call("wait", float(seconds))
@@ -173,7 +183,8 @@ class _StudioStream:
 _sys.stdout = _StudioStream(False)
 _sys.stderr = _StudioStream(True)
 _studio_module = _types.ModuleType("studio")
-exec(_studio_source, _studio_module.__dict__)
+_studio_module.__file__ = "studio.py"
+exec(compile(_studio_source, "studio.py", "exec"), _studio_module.__dict__)
 _sys.modules["studio"] = _studio_module
 
 import code as _code

@@ -21,6 +21,7 @@
  *   studio.render()                   (draw, and wait for every job)
  *   studio.cancel()                   studio.running() -> jobs running
  *   studio.wait(seconds)              (the window goes on meanwhile)
+ *   studio.select(item=None)          studio.dock("python"|"spreadsheet", visible)
  *
  * Failures raise studio.StudioError with the window's message. One
  * interpreter per process (CPython's rule); it drives whichever window was

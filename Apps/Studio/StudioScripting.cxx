@@ -4,6 +4,7 @@
 #include "DocumentHistory.h"
 #include "JobRunner.h"
 #include "MetricEditor.h"
+#include "PipelineBrowser.h"
 #include "PipelineItem.h"
 #include "ProjectFile.h"
 #include "StudioDocument.h"
@@ -12,6 +13,7 @@
 #include "vtkCamera.h"
 
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QUndoStack>
 
@@ -359,6 +361,37 @@ Json CallStudio(StudioMainWindow& window, const std::string& name, const Json& a
     if (!error.isEmpty())
     {
       Fail(error);
+    }
+    return nullptr;
+  }
+  if (name == "select")
+  {
+    const Json& item = Argument(args, 0);
+    if (item.is_null())
+    {
+      window.Browser()->SelectMetric();
+    }
+    else
+    {
+      window.Browser()->Select(ItemNamed(document, Text(args, 0, "item")));
+    }
+    return nullptr;
+  }
+  if (name == "dock")
+  {
+    const QString which = Text(args, 0, "dock");
+    QDockWidget* dock = which == "python" ? window.PythonShellDock()
+      : which == "spreadsheet"            ? window.SpreadsheetDock()
+                                          : nullptr;
+    if (!dock)
+    {
+      Fail("dock \"" + which + "\": expected \"python\" or \"spreadsheet\"");
+    }
+    dock->setVisible(Argument(args, 1).get<bool>());
+    const Json& height = Argument(args, 2);
+    if (height.is_number_integer() && height.get<int>() > 0)
+    {
+      window.resizeDocks({ dock }, { height.get<int>() }, Qt::Vertical);
     }
     return nullptr;
   }

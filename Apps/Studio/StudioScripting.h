@@ -4,7 +4,7 @@
  * call by name with JSON arguments (StudioPython.h turns Python calls into
  * these): open, items, add, set, get, remove, show, rename, metric, time,
  * parameter, observer, undo, redo, save, project, screenshot,
- * export_animation, render, wait, cancel, running. Every change
+ * export_animation, render, wait, cancel, running, select, dock. Every change
  * goes through the same paths as the mouse (so it is undoable and marks the
  * document modified). Errors are thrown as std::runtime_error with the
  * message the window would show.
