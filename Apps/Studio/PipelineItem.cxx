@@ -191,12 +191,33 @@ ColorScale PipelineItem::Coloring(const std::string& array, double opacity) cons
   scale.CustomRange = this->Text("ColorRange") == "custom";
   scale.Minimum = this->Number("ColorRangeMinimum");
   scale.Maximum = this->Number("ColorRangeMaximum");
+  // Over time: the sampled range once there is one (until then, the data's).
+  if (this->Text("ColorRange") == "over time" && !this->TimeRangeFor.empty())
+  {
+    scale.CustomRange = true;
+    scale.Minimum = this->TimeRange[0];
+    scale.Maximum = this->TimeRange[1];
+  }
   scale.Steps = this->Integer("ColorSteps");
   scale.ScalarBar = this->Values.at("ScalarBar").get<bool>();
   return scale;
 }
 
 PipelineItem::~PipelineItem() = default;
+
+bool PipelineItem::NeedsTimeRange(const std::string& source) const
+{
+  return this->Text("ColorRange") == "over time" && this->Text("ColorArray") != "Solid" &&
+    source != this->TimeRangeFor;
+}
+
+void PipelineItem::SetTimeRange(const double range[2], const std::string& source)
+{
+  this->TimeRange[0] = range[0];
+  this->TimeRange[1] = range[1] > range[0] ? range[1] : range[0] + 1e-12;
+  this->TimeRangeFor = source;
+  this->UpdateDisplay();
+}
 
 void PipelineItem::SetName(const QString& name)
 {
@@ -374,9 +395,10 @@ std::vector<PropertySpec> PipelineItem::DisplayProperties() const
   range.Key = "ColorRange";
   range.Label = "Colour range";
   range.Type = PropertySpec::Choice;
-  range.Choices = QStringList{ "data", "custom" };
+  range.Choices = QStringList{ "data", "custom", "over time" };
   range.Help = "data: the array's own range (a diverging map centred on zero); custom: the "
-               "minimum and maximum below";
+               "minimum and maximum below; over time: the array's range over t = 0, 1/8, ..., 1 "
+               "(the same colours in every frame of a film)";
   range.Display = true;
   PropertySpec minimum;
   minimum.Key = "ColorRangeMinimum";

@@ -177,6 +177,24 @@ public:
 
   /// Names of the result's arrays that colouring may use.
   QStringList ColorArrays() const;
+  /// The colouring as the display applies it now.
+  ColorScale CurrentColoring() const
+  {
+    return this->Coloring(this->Text("ColorArray"), this->Number("Opacity"));
+  }
+
+  ///@{
+  /**
+   * Colour range "over time": `source` names what the range was sampled
+   * for (the item's job settings, its colouring array and the metric:
+   * StudioDocument's TimeRangeSource). NeedsTimeRange: the item wants a
+   * range for `source` and has none. SetTimeRange keeps it and redraws.
+   */
+  bool NeedsTimeRange(const std::string& source) const;
+  void SetTimeRange(const double range[2], const std::string& source);
+  /// The JobRunner key of the item's range sampling (distinct from its own job).
+  const void* TimeRangeKey() const { return &this->TimeRange; }
+  ///@}
 
   /**
    * A point Ctrl+clicked in the outside view while this item is selected.
@@ -246,6 +264,8 @@ protected:
   vtkNew<vtkScalarBarActor> Bar;
 
 private:
+  double TimeRange[2] = { 0.0, 1.0 };
+  std::string TimeRangeFor;
   QString ItemName;
   bool Visible = true;
   nlohmann::json Values;

@@ -1,5 +1,7 @@
 #include "StudioDocument.h"
 
+#include "TimeRangeSampler.h"
+
 #include "PipelineItems.h"
 
 #include "vtkRiemannIntegrationSettings.h"
@@ -271,6 +273,10 @@ PipelineItem* StudioDocument::AddItem(std::unique_ptr<PipelineItem> item)
     {
       this->Run(added);
     }
+    else
+    {
+      this->SampleTimeRange(added); // the colouring array or range may have changed
+    }
   });
   QObject::connect(added, &PipelineItem::VisibilityChanged, this, [this, added]() {
     if (added->IsVisible() && this->Stale.count(added) > 0)
@@ -299,6 +305,7 @@ void StudioDocument::RemoveItem(PipelineItem* item)
   this->Computed.erase(item);
   this->UserCancelled.erase(item);
   this->Runner.Cancel(item);
+  this->Runner.Cancel(item->TimeRangeKey());
   std::unique_ptr<PipelineItem> removed = std::move(this->ItemList[index]);
   this->ItemList.erase(this->ItemList.begin() + index);
   this->Errors.erase(item);
@@ -382,6 +389,7 @@ void StudioDocument::Run(PipelineItem* item)
         this->Errors.erase(item);
         this->Computed[item] = started;
         item->TakeResult(finished);
+        this->SampleTimeRange(item);
       }
       else if (cancelledByUser && error.isEmpty() && this->Computed.count(item) > 0)
       {
@@ -392,6 +400,57 @@ void StudioDocument::Run(PipelineItem* item)
         this->Errors[item] = error;
       }
       Q_EMIT this->ItemFinished(item, ok);
+    });
+}
+
+namespace
+{
+/// What an item's range over time depends on: its job's settings (not the
+/// display's), its colouring array, and the metric with its parameter
+/// values (not t).
+std::string TimeRangeSource(const PipelineItem& item, const std::string& metric)
+{
+  nlohmann::json settings = item.Settings();
+  for (const PropertySpec& spec : item.Properties())
+  {
+    if (spec.Display && spec.Key != "ColorArray")
+    {
+      settings.erase(spec.Key);
+    }
+  }
+  return settings.dump() + "\n" + metric;
+}
+}
+
+void StudioDocument::SampleTimeRange(PipelineItem* item)
+{
+  const std::string source = TimeRangeSource(*item, this->EffectiveMetricText());
+  if (!item->NeedsTimeRange(source) || !item->IsVisible() || !this->CurrentMetric->HasDefinition())
+  {
+    return;
+  }
+  // One filter per t, made here on the GUI thread, each with its own metric.
+  auto sampler = vtkSmartPointer<TimeRangeSampler>::New();
+  sampler->SetArrayName(item->Settings().at("ColorArray").get<std::string>());
+  for (int k = 0; k < TimeRangeSampler::NumberOfTimes; ++k)
+  {
+    vtkNew<vtkRiemannMetric> metric;
+    metric->ShallowCopy(this->CurrentMetric);
+    if (!metric->SetTime(static_cast<double>(k) / (TimeRangeSampler::NumberOfTimes - 1)))
+    {
+      return;
+    }
+    JobInputs inputs = this->MakeJobInputs();
+    inputs.Metric = metric;
+    sampler->AddJob(item->MakeJob(inputs));
+  }
+  this->Runner.Start(item->TimeRangeKey(), sampler, item->Name() + ": colour range over t",
+    [this, item, source](vtkAlgorithm* finished, bool ok, const QString&) {
+      double range[2];
+      if (ok && this->IndexOf(item) >= 0 && TimeRangeSampler::GetRange(finished->GetOutputDataObject(0), range))
+      {
+        item->SetTimeRange(range, source);
+      }
     });
 }
 

@@ -119,6 +119,12 @@ public:
   ///@{
   /// Run an item's job now (also done on every change it depends on).
   void Run(PipelineItem* item);
+  /**
+   * An item coloured "over time" gets its range sampled (TimeRangeSampler)
+   * when it has none for what it shows now: after it computes, and when its
+   * colouring array changes. t alone never resamples (the range is over all t).
+   */
+  void SampleTimeRange(PipelineItem* item);
   void RunAll();
   JobRunner* Jobs() { return &this->Runner; }
   /// Why the item's last run failed ("" when it did not).

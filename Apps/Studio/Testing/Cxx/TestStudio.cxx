@@ -251,6 +251,7 @@ private Q_SLOTS:
   void AnimationFliesAlongACameraPathToFramesAndAFilm();
   void PythonShellRunsLinesAndScripts();
   void CancelledCpuRenderKeepsThePicture();
+  void ColourRangeOverTimeSpansEveryT();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1916,4 +1917,66 @@ void TestStudio::CancelledCpuRenderKeepsThePicture()
   QVERIFY2(catcher->Messages.isEmpty(), qPrintable(catcher->Messages.join("\n")));
   QCOMPARE(after.size(), before.size());
   QCOMPARE(DifferentPixels(before, after), 0.0);
+}
+
+void TestStudio::ColourRangeOverTimeSpansEveryT()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  StudioDocument* document = window->Document();
+  // The bump grows with t: its curvature's range too.
+  QCOMPARE(window->Editor()->SetText(
+             R"json({"type": "graph", "parameters": {"a": {"from": 0.2, "to": 1.5}},)json"
+             R"json( "f": "a * exp(-(x^2 + y^2 + z^2) / 0.5)"})json"),
+    QString());
+  PipelineItem* field = document->AddItem("field");
+  QVERIFY(field->ApplySettings({ { "Dimensions", { 9, 9, 9 } } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  // The range the item's results take at t = 0, 1/8, ..., 1, one t at a time.
+  double expected[2] = { 1e300, -1e300 };
+  double atZero[2] = { 0.0, 0.0 };
+  for (int k = 0; k < 9; ++k)
+  {
+    QVERIFY(document->SetTime(k / 8.0).Ok());
+    QVERIFY(WaitForJobs(*window));
+    auto* image = vtkImageData::SafeDownCast(field->Result(0));
+    QVERIFY(image);
+    double range[2];
+    image->GetPointData()->GetArray("ScalarCurvature")->GetRange(range);
+    if (k == 0)
+    {
+      atZero[0] = range[0];
+      atZero[1] = range[1];
+    }
+    expected[0] = std::min(expected[0], range[0]);
+    expected[1] = std::max(expected[1], range[1]);
+  }
+  QVERIFY(document->SetTime(0.0).Ok());
+  QVERIFY(WaitForJobs(*window));
+  QVERIFY(!field->CurrentColoring().CustomRange); // "data" so far
+  // Over time: sampled in the background, then the colouring's range.
+  QVERIFY(field->ApplySettings({ { "ColorRange", "over time" } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  ColorScale scale = field->CurrentColoring();
+  QVERIFY(scale.CustomRange);
+  QVERIFY2(std::abs(scale.Minimum - expected[0]) < 1e-12 && std::abs(scale.Maximum - expected[1]) < 1e-12,
+    qPrintable(QString("over time [%1, %2], expected [%3, %4]")
+                 .arg(scale.Minimum).arg(scale.Maximum).arg(expected[0]).arg(expected[1])));
+  QVERIFY(scale.Maximum > atZero[1] + 1e-3 || scale.Minimum < atZero[0] - 1e-3); // wider than t = 0's
+  // t alone changes the data, not the range over time, and samples nothing.
+  QVERIFY(document->SetTime(0.5).Ok());
+  QVERIFY(!document->Jobs()->IsRunning(field->TimeRangeKey()));
+  QVERIFY(WaitForJobs(*window));
+  QCOMPARE(field->CurrentColoring().Minimum, scale.Minimum);
+  QCOMPARE(field->CurrentColoring().Maximum, scale.Maximum);
+  // Saved and opened again: still over time.
+  QTemporaryDir folder;
+  const QString project = folder.filePath("range.json");
+  QCOMPARE(window->SaveProject(project), QString());
+  QVERIFY(window->OpenFile(project, false).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  QCOMPARE(QString::fromStdString(
+             document->Items().front()->Settings().at("ColorRange").get<std::string>()),
+    QString("over time"));
+  QVERIFY(document->Items().front()->CurrentColoring().CustomRange);
 }
