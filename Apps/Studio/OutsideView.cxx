@@ -157,6 +157,78 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
 OutsideView::~OutsideView()
 {
   this->EyeHandle->Off();
+  this->EditKeys({}, nullptr);
+}
+
+void OutsideView::EditKeys(const Keys& keys, std::function<void(const Keys&)> moved)
+{
+  this->KeysMoved = std::move(moved);
+  // Same count: the handles move (a drag's end must not rebuild the widget
+  // it came from); else they are made again.
+  if (keys.size() != this->KeyHandles.size())
+  {
+    for (const auto& handle : this->KeyHandles)
+    {
+      handle->Off();
+    }
+    this->KeyHandles.clear();
+    for (size_t k = 0; k < keys.size(); ++k)
+    {
+      vtkNew<vtkPointHandleRepresentation3D> representation;
+      representation->SetHandleSize(10);
+      representation->GetProperty()->SetColor(0.3, 0.85, 0.95);
+      representation->GetSelectedProperty()->SetColor(1.0, 1.0, 1.0);
+      auto handle = vtkSmartPointer<vtkHandleWidget>::New();
+      handle->SetInteractor(this->interactor());
+      handle->SetRepresentation(representation);
+      handle->SetCurrentRenderer(this->SceneRenderer);
+      vtkNew<vtkCallbackCommand> released;
+      released->SetClientData(this);
+      released->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+        static_cast<OutsideView*>(clientData)->KeysDragged();
+      });
+      handle->AddObserver(vtkCommand::EndInteractionEvent, released);
+      this->KeyHandles.push_back(handle);
+    }
+  }
+  for (size_t k = 0; k < keys.size(); ++k)
+  {
+    double position[3] = { keys[k][0], keys[k][1], keys[k][2] };
+    vtkHandleRepresentation::SafeDownCast(this->KeyHandles[k]->GetRepresentation())
+      ->SetWorldPosition(position);
+    this->KeyHandles[k]->On();
+  }
+  this->ScheduleRender();
+}
+
+void OutsideView::KeysDragged()
+{
+  if (!this->KeysMoved)
+  {
+    return;
+  }
+  Keys keys;
+  for (const auto& handle : this->KeyHandles)
+  {
+    double position[3];
+    vtkHandleRepresentation::SafeDownCast(handle->GetRepresentation())->GetWorldPosition(position);
+    keys.push_back({ position[0], position[1], position[2] });
+  }
+  // A copy: the callback may edit the keys again (and so this view's handles).
+  const std::function<void(const Keys&)> moved = this->KeysMoved;
+  moved(keys);
+}
+
+void OutsideView::DragKey(int key, const double position[3])
+{
+  if (key < 0 || key >= this->NumberOfKeyHandles())
+  {
+    return;
+  }
+  double moved[3] = { position[0], position[1], position[2] };
+  vtkHandleRepresentation::SafeDownCast(this->KeyHandles[static_cast<size_t>(key)]->GetRepresentation())
+    ->SetWorldPosition(moved);
+  this->KeysDragged();
 }
 
 void OutsideView::AddItem(PipelineItem* item)

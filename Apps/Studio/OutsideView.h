@@ -17,9 +17,14 @@
 
 #include "vtkCallbackCommand.h" // For vtkNew<vtkCallbackCommand>
 #include "vtkNew.h"
+#include "vtkSmartPointer.h" // For the key handles
 #include "vtkTubeFilter.h" // For vtkNew<vtkTubeFilter>
 
 #include <QImage>
+
+#include <array>
+#include <functional>
+#include <vector>
 
 class vtkActor;
 class vtkHandleWidget;
@@ -66,6 +71,19 @@ public:
    */
   void PickPoint(int x, int y);
 
+  ///@{
+  /**
+   * Key positions edited in this view (a camera path's): a handle at each of
+   * `keys`, dragged with the mouse; when a drag ends, `moved` gets every
+   * key's position. No keys hides the handles.
+   */
+  using Keys = std::vector<std::array<double, 3>>;
+  void EditKeys(const Keys& keys, std::function<void(const Keys&)> moved);
+  int NumberOfKeyHandles() const { return static_cast<int>(this->KeyHandles.size()); }
+  /// Moves handle `key` to `position` as a drag ending there would (tests).
+  void DragKey(int key, const double position[3]);
+  ///@}
+
 Q_SIGNALS:
   void PointPicked(double x, double y, double z);
 
@@ -74,6 +92,7 @@ private:
   void RemoveItem(PipelineItem* item);
   void UpdateObserver();
   void MoveObserverToHandle();
+  void KeysDragged();
 
   StudioDocument* Document;
   vtkNew<vtkRenderer> SceneRenderer;
@@ -90,6 +109,8 @@ private:
   vtkNew<vtkSphereSource> RayEnd;
   vtkNew<vtkActor> RayEndActor;
   vtkNew<vtkCallbackCommand> PickCommand;
+  std::vector<vtkSmartPointer<vtkHandleWidget>> KeyHandles;
+  std::function<void(const Keys&)> KeysMoved;
   bool MovingEye = false;
   bool RenderPending = false;
 };

@@ -540,9 +540,43 @@ void StudioMainWindow::ShowSpreadsheet()
   }
 }
 
+void StudioMainWindow::UpdateKeyHandles()
+{
+  // A selected spline camera path's keys are handles in the outside view;
+  // a drag applies them as the properties panel would (one undo step).
+  PipelineItem* item = this->BrowserWidget->SelectedItem();
+  OutsideView::Keys keys;
+  if (item && item->Kind() == "camera-path" && item->Settings().at("PathType") == "spline")
+  {
+    for (const nlohmann::json& key : item->Settings().at("KeyPositions"))
+    {
+      keys.push_back({ key[0].get<double>(), key[1].get<double>(), key[2].get<double>() });
+    }
+  }
+  if (keys.empty())
+  {
+    this->OutsideWidget->EditKeys({}, nullptr);
+    return;
+  }
+  this->OutsideWidget->EditKeys(keys, [this, item](const OutsideView::Keys& moved) {
+    nlohmann::json positions = nlohmann::json::array();
+    for (const auto& key : moved)
+    {
+      positions.push_back({ key[0], key[1], key[2] });
+    }
+    const QString error = item->ApplySettings({ { "KeyPositions", positions } });
+    if (!error.isEmpty())
+    {
+      this->ShowMessage(item->Name() + ": " + error, true);
+    }
+    this->ShowSelection();
+  });
+}
+
 void StudioMainWindow::ShowSelection()
 {
   this->ShowSpreadsheet();
+  this->UpdateKeyHandles();
   if (PipelineItem* item = this->BrowserWidget->SelectedItem())
   {
     this->PropertiesWidget->Show(

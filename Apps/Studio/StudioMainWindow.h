@@ -147,6 +147,8 @@ private:
   void BuildMenus();
   void BuildStatusBar();
   void ShowSelection();
+  /// The selected spline camera path's keys as handles in the outside view.
+  void UpdateKeyHandles();
   /// The spreadsheet shows the selected item's points, else the picked ray's.
   void ShowSpreadsheet();
   /// A Ctrl+click with no item selected: one end of a measure on the picked ray.

@@ -252,6 +252,7 @@ private Q_SLOTS:
   void PythonShellRunsLinesAndScripts();
   void CancelledCpuRenderKeepsThePicture();
   void ColourRangeOverTimeSpansEveryT();
+  void CameraPathKeysAreDraggedInTheOutsideView();
 };
 
 void TestStudio::WindowOpensWithDefaultScene()
@@ -1979,4 +1980,46 @@ void TestStudio::ColourRangeOverTimeSpansEveryT()
              document->Items().front()->Settings().at("ColorRange").get<std::string>()),
     QString("over time"));
   QVERIFY(document->Items().front()->CurrentColoring().CustomRange);
+}
+
+void TestStudio::CameraPathKeysAreDraggedInTheOutsideView()
+{
+  auto window = OpenWindow();
+  QVERIFY(window);
+  StudioDocument* document = window->Document();
+  PipelineItem* path = document->AddItem("camera-path");
+  QVERIFY(path->ApplySettings({ { "PathType", "spline" },
+                                { "KeyPositions", { { 0.5, 0.5, 3.6 }, { 0.4, 0.4, 2.0 }, { 0.6, 0.3, 1.0 } } } })
+            .isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  OutsideView* outside = window->Outside();
+  window->Browser()->SelectMetric();
+  QCOMPARE(outside->NumberOfKeyHandles(), 0); // not selected
+  window->Browser()->Select(path);
+  QCOMPARE(outside->NumberOfKeyHandles(), 3);
+  // A drag of the middle key's handle: the item's key, and its flight, follow.
+  const std::string before = ProjectFingerprint(*document);
+  const double to[3] = { 1.2, -0.3, 2.2 };
+  outside->DragKey(1, to);
+  const nlohmann::json keys = path->Settings().at("KeyPositions");
+  QCOMPARE(keys[1][0].get<double>(), 1.2);
+  QCOMPARE(keys[1][1].get<double>(), -0.3);
+  QCOMPARE(keys[1][2].get<double>(), 2.2);
+  QCOMPARE(keys[0][2].get<double>(), 3.6);
+  QVERIFY(WaitForJobs(*window));
+  // A Ctrl+click adds a fourth key, and a fourth handle.
+  window->PlacePoint(0.5, 0.2, 0.0);
+  QVERIFY(WaitForJobs(*window));
+  QCOMPARE(path->Settings().at("KeyPositions").size(), std::size_t(4));
+  QCOMPARE(outside->NumberOfKeyHandles(), 4);
+  // Undo twice: the document before the drag.
+  QCoreApplication::processEvents();
+  window->UndoHistory()->Record();
+  window->UndoStack()->undo();
+  window->UndoStack()->undo();
+  QVERIFY(WaitForJobs(*window));
+  QCOMPARE(ProjectFingerprint(*document), before);
+  // Another selection: no handles.
+  window->Browser()->SelectMetric();
+  QCOMPARE(outside->NumberOfKeyHandles(), 0);
 }
