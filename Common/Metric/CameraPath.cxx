@@ -97,6 +97,36 @@ bool Report(const std::function<bool(double)>& progress, int frame, int frames)
   return !progress || progress(static_cast<double>(frame + 1) / frames);
 }
 
+/**
+ * The frames of a flight of g-length `length`: `y` advanced by `flow` from
+ * one frame's arc length to the next (evenly spaced), `frameOf(y)` read at
+ * each; progress after each frame.
+ */
+template <class State, class Flow, class FrameOf>
+std::vector<CameraFrame> Fly(const Flow& flow, State y, double length,
+  const CameraPathSettings& settings, const FrameOf& frameOf,
+  const std::function<bool(double)>& progress)
+{
+  std::vector<CameraFrame> frames;
+  const int count = settings.Frames;
+  for (int k = 0; k < count; ++k)
+  {
+    const double s = count > 1 ? length * k / (count - 1) : 0.0;
+    if (k > 0)
+    {
+      Advance(flow, y, frames.back().ArcLength, s, settings.Step);
+    }
+    CameraFrame frame = frameOf(y);
+    frame.ArcLength = s;
+    frames.push_back(frame);
+    if (!Report(progress, k, count))
+    {
+      throw CameraPathError("cancelled");
+    }
+  }
+  return frames;
+}
+
 /// Along the geodesic: y = (x, v, up, right), all parallel-transported.
 std::vector<CameraFrame> GeodesicFlight(const Metric& metric, const CameraPathSettings& settings,
   const std::function<bool(double)>& progress)
@@ -118,28 +148,15 @@ std::vector<CameraFrame> GeodesicFlight(const Metric& metric, const CameraPathSe
     ds.segment<3>(9) = -Contract(gamma, v, s.segment<3>(9));
     return ds.allFinite();
   };
-  std::vector<CameraFrame> frames;
-  const int count = settings.Frames;
-  for (int k = 0; k < count; ++k)
-  {
-    const double s = count > 1 ? settings.Length * k / (count - 1) : 0.0;
-    if (k > 0)
-    {
-      Advance(flow, y, frames.back().ArcLength, s, settings.Step);
-    }
+  const auto frameOf = [](const State& at) {
     CameraFrame frame;
-    frame.Position = y.segment<3>(0);
-    frame.Forward = y.segment<3>(3);
-    frame.Up = y.segment<3>(6);
-    frame.Right = y.segment<3>(9);
-    frame.ArcLength = s;
-    frames.push_back(frame);
-    if (!Report(progress, k, count))
-    {
-      throw CameraPathError("cancelled");
-    }
-  }
-  return frames;
+    frame.Position = at.segment<3>(0);
+    frame.Forward = at.segment<3>(3);
+    frame.Up = at.segment<3>(6);
+    frame.Right = at.segment<3>(9);
+    return frame;
+  };
+  return Fly(flow, y, settings.Length, settings, frameOf, progress);
 }
 
 /// The spline's point, tangent c' and c'' at u, clamped to [0, 1].
@@ -254,33 +271,20 @@ std::vector<CameraFrame> SplineFlight(const Metric& metric, const CameraPathSett
     return ds.allFinite();
   };
 
-  std::vector<CameraFrame> frames;
-  const int count = settings.Frames;
-  for (int k = 0; k < count; ++k)
-  {
-    const double s = count > 1 ? length * k / (count - 1) : 0.0;
-    if (k > 0)
-    {
-      Advance(flow, y, frames.back().ArcLength, s, settings.Step);
-    }
-    Tangent at;
-    if (!tangent(y(0), at))
+  const auto frameOf = [&tangent](const State& at) {
+    Tangent here;
+    if (!tangent(at(0), here))
     {
       throw CameraPathError("the metric is degenerate on the spline camera path");
     }
     CameraFrame frame;
-    frame.Position = at.Point;
-    frame.Forward = at.T;
-    frame.Up = y.segment<3>(1);
-    frame.Right = y.segment<3>(4);
-    frame.ArcLength = s;
-    frames.push_back(frame);
-    if (!Report(progress, k, count))
-    {
-      throw CameraPathError("cancelled");
-    }
-  }
-  return frames;
+    frame.Position = here.Point;
+    frame.Forward = here.T;
+    frame.Up = at.segment<3>(1);
+    frame.Right = at.segment<3>(4);
+    return frame;
+  };
+  return Fly(flow, y, length, settings, frameOf, progress);
 }
 } // namespace
 
