@@ -289,6 +289,14 @@ void CheckFilePaths(const std::vector<NamedPath>& inputs, const std::vector<Name
           "; outputs are written whole, as a temporary file renamed over the name: give a file name",
         2);
     }
+    // Before any work: a long render or trace once failed only at its end.
+    const fs::path folder = fs::path(output.Path).parent_path();
+    if (!folder.empty() && !fs::is_directory(folder, error))
+    {
+      throw Failure(output.Option + " " + output.Path + ": the folder " + folder.string() +
+          " does not exist; create it first",
+        2);
+    }
     for (const NamedPath& input : inputs)
     {
       if (!input.Path.empty() && SamePath(input.Path, output.Path))

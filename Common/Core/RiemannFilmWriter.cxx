@@ -65,6 +65,12 @@ FilmWriter::FilmWriter(const std::string& path, int width, int height, int frame
   {
     throw FilmWriterError(path + ": frames per second must be 1 to 240");
   }
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code exists;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, exists))
+  {
+    throw FilmWriterError(path + ": the folder " + folder.string() + " does not exist");
+  }
   vtkImageData* frame = this->Internal->Frame;
   frame->SetDimensions(width, height, 1);
   frame->AllocateScalars(VTK_UNSIGNED_CHAR, 3);

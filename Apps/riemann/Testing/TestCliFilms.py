@@ -9,8 +9,9 @@ numbered pictures or one .ogv film.
   the path's start and its last the still picture from start + length *
   direction (same view up), to within rendering noise (--reference).
 - Bad input loses nothing: a bad path file (status 2, the key named), a
-  spline with coinciding keys (status 1), odd sides for a film (status 2)
-  leave no film and no partial file behind.
+  spline with coinciding keys (status 1), odd sides for a film or a folder
+  that does not exist (status 2, before any frame is drawn) leave no film
+  and no partial file behind.
 """
 import os
 import sys
@@ -92,6 +93,10 @@ class FilmTests(TempDirTest):
                              "--frames", "2", "-o", film)
         self.assertEqual(status, 2, err)
         self.assertIn("even sides", err)
+        missing = os.path.join(self.dir, "no-such-folder", "film.ogv")
+        status, _, err = self.render("--frames", "2", "-o", missing)
+        self.assertEqual(status, 2, err)
+        self.assertIn("no-such-folder does not exist", err)
         self.assertEqual(self.leftovers(), [])
 
 
