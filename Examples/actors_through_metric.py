@@ -23,7 +23,7 @@ from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource, vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkTextActor,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkTextActor,
                                          vtkWindowToImageFilter)
 from vtkmodules.vtkImagingCore import vtkImageShiftScale
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
@@ -44,6 +44,15 @@ FLOOR_SCENE = {
 }
 
 
+def viridis(low, high):
+    """viridis (perceptual, colour-blind safe) from low to high, as riemann-studio's default map."""
+    lut = vtkColorTransferFunction()
+    for x, r, g, b in ((0.0, 0.267, 0.005, 0.329), (0.25, 0.254, 0.265, 0.530), (0.5, 0.164, 0.471, 0.558),
+                       (0.75, 0.135, 0.659, 0.518), (0.875, 0.478, 0.821, 0.318), (1.0, 0.993, 0.906, 0.144)):
+        lut.AddRGBPoint(low + x * (high - low), r, g, b)
+    return lut
+
+
 def make_actors():
     """A torus coloured by z through the mapper's lookup table, and a transformed sphere."""
     torus = vtkParametricTorus()
@@ -57,6 +66,8 @@ def make_actors():
     torus_mapper = vtkPolyDataMapper()
     torus_mapper.SetInputConnection(source.GetOutputPort())
     torus_mapper.SetScalarRange(-0.35, 0.35)
+    torus_mapper.SetLookupTable(viridis(-0.35, 0.35))
+    torus_mapper.UseLookupTableScalarRangeOff()
     torus_actor = vtkActor()
     torus_actor.SetMapper(torus_mapper)
     torus_actor.SetPosition(-0.9, -0.3, -1.5)
