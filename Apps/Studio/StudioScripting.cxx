@@ -17,6 +17,7 @@
 #include <QElapsedTimer>
 #include <QUndoStack>
 
+#include <map>
 #include <stdexcept>
 
 namespace riemann
@@ -120,313 +121,402 @@ void Settled(StudioMainWindow& window)
 {
   window.UndoHistory()->Record();
 }
+
+using StudioFunction = Json (*)(StudioMainWindow&, const Json&);
+
+Json StudioOpen(StudioMainWindow& window, const Json& args)
+{
+  const QString error = window.OpenFile(Text(args, 0, "path"), false);
+  if (!error.isEmpty())
+  {
+    Fail(error);
+  }
+  return nullptr;
+}
+
+Json StudioItems(StudioMainWindow& window, const Json&)
+{
+  StudioDocument* document = window.Document();
+  Json names = Json::array();
+  for (const auto& item : document->Items())
+  {
+    names.push_back(item->Name().toStdString());
+  }
+  return names;
+}
+
+Json StudioAdd(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  const std::string kind = Text(args, 0, "kind").toStdString();
+  PipelineItem* item = document->AddItem(kind);
+  if (!item)
+  {
+    Fail(QString::fromStdString("unknown kind \"" + kind + "\""));
+  }
+  try
+  {
+    Apply(item, Argument(args, 1).is_null() ? Json::object() : Argument(args, 1));
+  }
+  catch (const std::runtime_error&)
+  {
+    document->RemoveItem(item);
+    throw;
+  }
+  Settled(window);
+  return item->Name().toStdString();
+}
+
+Json StudioSet(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  Apply(ItemNamed(document, Text(args, 0, "item")), Argument(args, 1));
+  Settled(window);
+  return nullptr;
+}
+
+Json StudioGet(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
+  Json settings = item->Settings();
+  settings["kind"] = item->Kind();
+  settings["visible"] = item->IsVisible();
+  return settings;
+}
+
+Json StudioRemove(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  document->RemoveItem(ItemNamed(document, Text(args, 0, "item")));
+  Settled(window);
+  return nullptr;
+}
+
+Json StudioShow(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  ItemNamed(document, Text(args, 0, "item"))->SetVisible(Argument(args, 1).get<bool>());
+  Settled(window);
+  return nullptr;
+}
+
+Json StudioMetric(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  if (!Argument(args, 0).is_null())
+  {
+    const QString error = window.Editor()->SetText(Text(args, 0, "text"));
+    if (!error.isEmpty())
+    {
+      Fail("metric: " + error);
+    }
+    Settled(window);
+  }
+  return document->MetricText();
+}
+
+Json StudioTime(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  const Json& t = Argument(args, 0);
+  if (!t.is_null())
+  {
+    if (!t.is_number())
+    {
+      Fail("time: expected a number");
+    }
+    const MetricStatus status = document->SetTime(t.get<double>());
+    if (!status.Ok())
+    {
+      Fail("time: " + status.Message);
+    }
+    Settled(window);
+  }
+  return document->Time();
+}
+
+Json StudioRename(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
+  const QString newName = Text(args, 1, "name").trimmed();
+  if (newName.isEmpty())
+  {
+    Fail("rename: an item's name cannot be empty");
+  }
+  item->SetName(newName);
+  Settled(window);
+  return item->Name().toStdString();
+}
+
+Json StudioParameter(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  const std::string pointer = Text(args, 0, "parameter").toStdString();
+  bool known = false;
+  for (const MetricParameter& parameter : document->Parameters())
+  {
+    known = known || parameter.Pointer == pointer;
+  }
+  if (!known)
+  {
+    Fail(QString::fromStdString("no parameter \"" + pointer +
+      "\" in the metric (parameters are named by their JSON pointer, e.g. \"/parameters/a\")"));
+  }
+  const Json& value = Argument(args, 1);
+  if (value.is_number())
+  {
+    const MetricStatus status = document->SetParameterValue(pointer, value.get<double>());
+    if (!status.Ok())
+    {
+      Fail("parameter: " + status.Message);
+    }
+    Settled(window);
+  }
+  return document->ParameterValue(pointer);
+}
+
+Json StudioObserver(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  vtkCamera* observer = document->Observer();
+  const char* keys[3] = { "position", "look_at", "view_up" };
+  const Json& given = Argument(args, 0);
+  bool moved = false;
+  for (const char* key : keys)
+  {
+    if (given.is_object() && given.contains(key) && !given.at(key).is_null())
+    {
+      const Json& v = given.at(key);
+      if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      {
+        Fail(QStringLiteral("observer: %1: expected (x, y, z)").arg(key));
+      }
+      const double xyz[3] = { v[0].get<double>(), v[1].get<double>(), v[2].get<double>() };
+      key == keys[0] ? observer->SetPosition(xyz)
+        : key == keys[1] ? observer->SetFocalPoint(xyz)
+                         : observer->SetViewUp(xyz);
+      moved = true;
+    }
+  }
+  if (moved)
+  {
+    document->ObserverChanged();
+    Settled(window);
+  }
+  const auto vector = [](const double* v) { return Json::array({ v[0], v[1], v[2] }); };
+  return { { "position", vector(observer->GetPosition()) },
+    { "look_at", vector(observer->GetFocalPoint()) }, { "view_up", vector(observer->GetViewUp()) } };
+}
+
+/// undo() and redo(): the step's name, or null when there is none.
+Json UndoOrRedo(StudioMainWindow& window, bool undo)
+{
+  Settled(window);
+  QUndoStack* stack = window.UndoStack();
+  const bool can = undo ? stack->canUndo() : stack->canRedo();
+  const std::string text = (undo ? stack->undoText() : stack->redoText()).toStdString();
+  if (can)
+  {
+    undo ? stack->undo() : stack->redo();
+  }
+  return can ? Json(text) : Json(nullptr);
+}
+
+Json StudioUndo(StudioMainWindow& window, const Json&)
+{
+  return UndoOrRedo(window, true);
+}
+
+Json StudioRedo(StudioMainWindow& window, const Json&)
+{
+  return UndoOrRedo(window, false);
+}
+
+Json StudioSave(StudioMainWindow& window, const Json& args)
+{
+  const QString error = window.SaveProject(Text(args, 0, "path"));
+  if (!error.isEmpty())
+  {
+    Fail(error);
+  }
+  return nullptr;
+}
+
+Json StudioProject(StudioMainWindow& window, const Json&)
+{
+  StudioDocument* document = window.Document();
+  return Json::parse(ProjectFingerprint(*document));
+}
+
+Json StudioScreenshot(StudioMainWindow& window, const Json& args)
+{
+  const QString path = Text(args, 0, "path");
+  const StudioMainWindow::Shot view = ShotNamed(Text(args, 1, "view"));
+  QString error;
+  if (Argument(args, 2).is_null() || view == StudioMainWindow::WindowShot)
+  {
+    error = window.SaveScreenshot(path, view);
+  }
+  else
+  {
+    AnimationSettings picture;
+    picture.Frames = 1;
+    picture.AnimateTime = false;
+    picture.View = view;
+    picture.Output = path;
+    ReadSize(Argument(args, 2), picture);
+    error = ExportAnimation(window, picture);
+  }
+  if (!error.isEmpty())
+  {
+    Fail(error);
+  }
+  return nullptr;
+}
+
+Json StudioExportAnimation(StudioMainWindow& window, const Json& args)
+{
+  AnimationSettings animation;
+  animation.Output = Text(args, 0, "path");
+  const Json& options = Argument(args, 1);
+  animation.Frames = options.value("frames", animation.Frames);
+  animation.View = ShotNamed(QString::fromStdString(options.value("view", std::string("inside"))));
+  if (options.contains("size"))
+  {
+    ReadSize(options.at("size"), animation);
+  }
+  const Json time = options.value("time", Json::array({ 0.0, 1.0 }));
+  animation.AnimateTime = !time.is_null();
+  if (animation.AnimateTime)
+  {
+    animation.TimeFrom = time.at(0).get<double>();
+    animation.TimeTo = time.at(1).get<double>();
+  }
+  animation.CameraPath = QString::fromStdString(options.value("camera_path", std::string()));
+  const QString error = ExportAnimation(window, animation);
+  if (!error.isEmpty())
+  {
+    Fail(error);
+  }
+  return nullptr;
+}
+
+Json StudioSelect(StudioMainWindow& window, const Json& args)
+{
+  StudioDocument* document = window.Document();
+  const Json& item = Argument(args, 0);
+  if (item.is_null())
+  {
+    window.Browser()->SelectMetric();
+  }
+  else
+  {
+    window.Browser()->Select(ItemNamed(document, Text(args, 0, "item")));
+  }
+  return nullptr;
+}
+
+Json StudioDock(StudioMainWindow& window, const Json& args)
+{
+  const QString which = Text(args, 0, "dock");
+  QDockWidget* dock = which == "python" ? window.PythonShellDock()
+    : which == "spreadsheet"            ? window.SpreadsheetDock()
+                                        : nullptr;
+  if (!dock)
+  {
+    Fail("dock \"" + which + "\": expected \"python\" or \"spreadsheet\"");
+  }
+  dock->setVisible(Argument(args, 1).get<bool>());
+  const Json& height = Argument(args, 2);
+  if (height.is_number_integer() && height.get<int>() > 0)
+  {
+    window.resizeDocks({ dock }, { height.get<int>() }, Qt::Vertical);
+  }
+  return nullptr;
+}
+
+Json StudioWait(StudioMainWindow&, const Json& args)
+{
+  const Json& seconds = Argument(args, 0);
+  if (!seconds.is_number() || !(seconds.get<double>() >= 0) || seconds.get<double>() > 3600)
+  {
+    Fail("wait: expected seconds from 0 to 3600");
+  }
+  // The window goes on meanwhile: events, finished jobs, pictures.
+  QElapsedTimer timer;
+  timer.start();
+  const qint64 milliseconds = static_cast<qint64>(seconds.get<double>() * 1000.0);
+  do
+  {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+  } while (timer.elapsed() < milliseconds);
+  return nullptr;
+}
+
+Json StudioCancel(StudioMainWindow& window, const Json&)
+{
+  StudioDocument* document = window.Document();
+  document->CancelAll();
+  return nullptr;
+}
+
+Json StudioRunning(StudioMainWindow& window, const Json&)
+{
+  StudioDocument* document = window.Document();
+  return document->Jobs()->NumberOfRunningJobs();
+}
+
+Json StudioRender(StudioMainWindow& window, const Json&)
+{
+  window.Settle();
+  return nullptr;
+}
+
+/// The studio module's functions, by name (StudioPython.cxx's Python side
+/// calls them with its arguments as a JSON list).
+const std::map<std::string, StudioFunction>& StudioFunctions()
+{
+  static const std::map<std::string, StudioFunction> functions{
+    { "open", StudioOpen },
+    { "items", StudioItems },
+    { "add", StudioAdd },
+    { "set", StudioSet },
+    { "get", StudioGet },
+    { "remove", StudioRemove },
+    { "show", StudioShow },
+    { "metric", StudioMetric },
+    { "time", StudioTime },
+    { "rename", StudioRename },
+    { "parameter", StudioParameter },
+    { "observer", StudioObserver },
+    { "undo", StudioUndo },
+    { "redo", StudioRedo },
+    { "save", StudioSave },
+    { "project", StudioProject },
+    { "screenshot", StudioScreenshot },
+    { "export_animation", StudioExportAnimation },
+    { "select", StudioSelect },
+    { "dock", StudioDock },
+    { "wait", StudioWait },
+    { "cancel", StudioCancel },
+    { "running", StudioRunning },
+    { "render", StudioRender },
+  };
+  return functions;
+}
 } // namespace
 
 Json CallStudio(StudioMainWindow& window, const std::string& name, const Json& args)
 {
-  StudioDocument* document = window.Document();
-  if (name == "open")
+  const auto& functions = StudioFunctions();
+  const auto function = functions.find(name);
+  if (function == functions.end())
   {
-    const QString error = window.OpenFile(Text(args, 0, "path"), false);
-    if (!error.isEmpty())
-    {
-      Fail(error);
-    }
-    return nullptr;
+    Fail(QString::fromStdString("studio has no function \"" + name + "\""));
   }
-  if (name == "items")
-  {
-    Json names = Json::array();
-    for (const auto& item : document->Items())
-    {
-      names.push_back(item->Name().toStdString());
-    }
-    return names;
-  }
-  if (name == "add")
-  {
-    const std::string kind = Text(args, 0, "kind").toStdString();
-    PipelineItem* item = document->AddItem(kind);
-    if (!item)
-    {
-      Fail(QString::fromStdString("unknown kind \"" + kind + "\""));
-    }
-    try
-    {
-      Apply(item, Argument(args, 1).is_null() ? Json::object() : Argument(args, 1));
-    }
-    catch (const std::runtime_error&)
-    {
-      document->RemoveItem(item);
-      throw;
-    }
-    Settled(window);
-    return item->Name().toStdString();
-  }
-  if (name == "set")
-  {
-    Apply(ItemNamed(document, Text(args, 0, "item")), Argument(args, 1));
-    Settled(window);
-    return nullptr;
-  }
-  if (name == "get")
-  {
-    PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
-    Json settings = item->Settings();
-    settings["kind"] = item->Kind();
-    settings["visible"] = item->IsVisible();
-    return settings;
-  }
-  if (name == "remove")
-  {
-    document->RemoveItem(ItemNamed(document, Text(args, 0, "item")));
-    Settled(window);
-    return nullptr;
-  }
-  if (name == "show")
-  {
-    ItemNamed(document, Text(args, 0, "item"))->SetVisible(Argument(args, 1).get<bool>());
-    Settled(window);
-    return nullptr;
-  }
-  if (name == "metric")
-  {
-    if (!Argument(args, 0).is_null())
-    {
-      const QString error = window.Editor()->SetText(Text(args, 0, "text"));
-      if (!error.isEmpty())
-      {
-        Fail("metric: " + error);
-      }
-      Settled(window);
-    }
-    return document->MetricText();
-  }
-  if (name == "time")
-  {
-    const Json& t = Argument(args, 0);
-    if (!t.is_null())
-    {
-      if (!t.is_number())
-      {
-        Fail("time: expected a number");
-      }
-      const MetricStatus status = document->SetTime(t.get<double>());
-      if (!status.Ok())
-      {
-        Fail("time: " + status.Message);
-      }
-      Settled(window);
-    }
-    return document->Time();
-  }
-  if (name == "rename")
-  {
-    PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
-    const QString newName = Text(args, 1, "name").trimmed();
-    if (newName.isEmpty())
-    {
-      Fail("rename: an item's name cannot be empty");
-    }
-    item->SetName(newName);
-    Settled(window);
-    return item->Name().toStdString();
-  }
-  if (name == "parameter")
-  {
-    const std::string pointer = Text(args, 0, "parameter").toStdString();
-    bool known = false;
-    for (const MetricParameter& parameter : document->Parameters())
-    {
-      known = known || parameter.Pointer == pointer;
-    }
-    if (!known)
-    {
-      Fail(QString::fromStdString("no parameter \"" + pointer +
-        "\" in the metric (parameters are named by their JSON pointer, e.g. \"/parameters/a\")"));
-    }
-    const Json& value = Argument(args, 1);
-    if (value.is_number())
-    {
-      const MetricStatus status = document->SetParameterValue(pointer, value.get<double>());
-      if (!status.Ok())
-      {
-        Fail("parameter: " + status.Message);
-      }
-      Settled(window);
-    }
-    return document->ParameterValue(pointer);
-  }
-  if (name == "observer")
-  {
-    vtkCamera* observer = document->Observer();
-    const char* keys[3] = { "position", "look_at", "view_up" };
-    const Json& given = Argument(args, 0);
-    bool moved = false;
-    for (const char* key : keys)
-    {
-      if (given.is_object() && given.contains(key) && !given.at(key).is_null())
-      {
-        const Json& v = given.at(key);
-        if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
-        {
-          Fail(QStringLiteral("observer: %1: expected (x, y, z)").arg(key));
-        }
-        const double xyz[3] = { v[0].get<double>(), v[1].get<double>(), v[2].get<double>() };
-        key == keys[0] ? observer->SetPosition(xyz)
-          : key == keys[1] ? observer->SetFocalPoint(xyz)
-                           : observer->SetViewUp(xyz);
-        moved = true;
-      }
-    }
-    if (moved)
-    {
-      document->ObserverChanged();
-      Settled(window);
-    }
-    const auto vector = [](const double* v) { return Json::array({ v[0], v[1], v[2] }); };
-    return { { "position", vector(observer->GetPosition()) },
-      { "look_at", vector(observer->GetFocalPoint()) }, { "view_up", vector(observer->GetViewUp()) } };
-  }
-  if (name == "undo" || name == "redo")
-  {
-    Settled(window);
-    QUndoStack* stack = window.UndoStack();
-    const bool can = name == "undo" ? stack->canUndo() : stack->canRedo();
-    const std::string text = (name == "undo" ? stack->undoText() : stack->redoText()).toStdString();
-    if (can)
-    {
-      name == "undo" ? stack->undo() : stack->redo();
-    }
-    return can ? Json(text) : Json(nullptr);
-  }
-  if (name == "save")
-  {
-    const QString error = window.SaveProject(Text(args, 0, "path"));
-    if (!error.isEmpty())
-    {
-      Fail(error);
-    }
-    return nullptr;
-  }
-  if (name == "project")
-  {
-    return Json::parse(ProjectFingerprint(*document));
-  }
-  if (name == "screenshot")
-  {
-    const QString path = Text(args, 0, "path");
-    const StudioMainWindow::Shot view = ShotNamed(Text(args, 1, "view"));
-    QString error;
-    if (Argument(args, 2).is_null() || view == StudioMainWindow::WindowShot)
-    {
-      error = window.SaveScreenshot(path, view);
-    }
-    else
-    {
-      AnimationSettings picture;
-      picture.Frames = 1;
-      picture.AnimateTime = false;
-      picture.View = view;
-      picture.Output = path;
-      ReadSize(Argument(args, 2), picture);
-      error = ExportAnimation(window, picture);
-    }
-    if (!error.isEmpty())
-    {
-      Fail(error);
-    }
-    return nullptr;
-  }
-  if (name == "export_animation")
-  {
-    AnimationSettings animation;
-    animation.Output = Text(args, 0, "path");
-    const Json& options = Argument(args, 1);
-    animation.Frames = options.value("frames", animation.Frames);
-    animation.View = ShotNamed(QString::fromStdString(options.value("view", std::string("inside"))));
-    if (options.contains("size"))
-    {
-      ReadSize(options.at("size"), animation);
-    }
-    const Json time = options.value("time", Json::array({ 0.0, 1.0 }));
-    animation.AnimateTime = !time.is_null();
-    if (animation.AnimateTime)
-    {
-      animation.TimeFrom = time.at(0).get<double>();
-      animation.TimeTo = time.at(1).get<double>();
-    }
-    animation.CameraPath = QString::fromStdString(options.value("camera_path", std::string()));
-    const QString error = ExportAnimation(window, animation);
-    if (!error.isEmpty())
-    {
-      Fail(error);
-    }
-    return nullptr;
-  }
-  if (name == "select")
-  {
-    const Json& item = Argument(args, 0);
-    if (item.is_null())
-    {
-      window.Browser()->SelectMetric();
-    }
-    else
-    {
-      window.Browser()->Select(ItemNamed(document, Text(args, 0, "item")));
-    }
-    return nullptr;
-  }
-  if (name == "dock")
-  {
-    const QString which = Text(args, 0, "dock");
-    QDockWidget* dock = which == "python" ? window.PythonShellDock()
-      : which == "spreadsheet"            ? window.SpreadsheetDock()
-                                          : nullptr;
-    if (!dock)
-    {
-      Fail("dock \"" + which + "\": expected \"python\" or \"spreadsheet\"");
-    }
-    dock->setVisible(Argument(args, 1).get<bool>());
-    const Json& height = Argument(args, 2);
-    if (height.is_number_integer() && height.get<int>() > 0)
-    {
-      window.resizeDocks({ dock }, { height.get<int>() }, Qt::Vertical);
-    }
-    return nullptr;
-  }
-  if (name == "wait")
-  {
-    const Json& seconds = Argument(args, 0);
-    if (!seconds.is_number() || !(seconds.get<double>() >= 0) || seconds.get<double>() > 3600)
-    {
-      Fail("wait: expected seconds from 0 to 3600");
-    }
-    // The window goes on meanwhile: events, finished jobs, pictures.
-    QElapsedTimer timer;
-    timer.start();
-    const qint64 milliseconds = static_cast<qint64>(seconds.get<double>() * 1000.0);
-    do
-    {
-      QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    } while (timer.elapsed() < milliseconds);
-    return nullptr;
-  }
-  if (name == "cancel")
-  {
-    document->CancelAll();
-    return nullptr;
-  }
-  if (name == "running")
-  {
-    return document->Jobs()->NumberOfRunningJobs();
-  }
-  if (name == "render")
-  {
-    window.Settle();
-    return nullptr;
-  }
-  Fail(QString::fromStdString("studio has no function \"" + name + "\""));
+  return function->second(window, args);
 }
 }
 }
