@@ -28,6 +28,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 
 #include <algorithm>
@@ -416,7 +417,10 @@ void vtkRiemannCPURayTracer::TraceTiles(const riemann::CPUTracer& tracer)
   std::atomic<long long> steps(0);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  vtkRiemannForInBatches(this, tiles, 64,
+  // The first batch is one tile per thread: a tile can take a second at many
+  // samples per pixel, and Cancel is seen between batches (which then grow
+  // to 0.1 s of work each, vtkRiemannParallelBatches.h).
+  vtkRiemannForInBatches(this, tiles, std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()),
     [&](vtkIdType begin, vtkIdType end)
     {
       long long local = 0;
