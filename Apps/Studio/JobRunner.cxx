@@ -65,6 +65,12 @@ JobRunner::JobRunner(QObject* parent)
 
 JobRunner::~JobRunner()
 {
+  this->Close();
+}
+
+void JobRunner::Close()
+{
+  this->Closed = true;
   this->CancelAll();
   this->WaitForAll();
 }
@@ -72,6 +78,10 @@ JobRunner::~JobRunner()
 void JobRunner::Start(
   const void* key, vtkSmartPointer<vtkAlgorithm> algorithm, const QString& label, Finished finished)
 {
+  if (this->Closed)
+  {
+    return;
+  }
   auto job = std::make_shared<Job>();
   job->Algorithm = std::move(algorithm);
   job->Label = label;

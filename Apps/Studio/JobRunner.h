@@ -46,6 +46,10 @@ public:
   void CancelAll();
   /// Block until no job runs (closing the window, tests).
   void WaitForAll();
+  /// Cancel and wait for every job, and start no job after: the owner is
+  /// going away (a finished job's callback or a pending render must not
+  /// start work on what is being destroyed).
+  void Close();
   bool IsRunning(const void* key) const;
   int NumberOfRunningJobs() const;
 
@@ -63,6 +67,7 @@ private:
 
   std::map<const void*, std::shared_ptr<Job>> Running;
   std::map<const void*, std::shared_ptr<Job>> Queued;
+  bool Closed = false;
 };
 }
 }

@@ -53,8 +53,7 @@ StudioDocument::StudioDocument(QObject* parent)
 
 StudioDocument::~StudioDocument()
 {
-  this->Runner.CancelAll();
-  this->Runner.WaitForAll();
+  this->Runner.Close();
 }
 
 MetricStatus StudioDocument::Install(

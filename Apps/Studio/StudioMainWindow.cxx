@@ -203,8 +203,11 @@ StudioMainWindow::StudioMainWindow(QWidget* parent)
 
 StudioMainWindow::~StudioMainWindow()
 {
-  this->Doc->Jobs()->CancelAll();
-  this->Doc->Jobs()->WaitForAll();
+  this->Doc->Jobs()->Close();
+  // The views use the document (the inside view cancels its render in its
+  // destructor), which is this window's first child and so would be
+  // deleted before them: they go first.
+  delete this->takeCentralWidget();
 }
 
 void StudioMainWindow::BuildDocks()
