@@ -5,6 +5,7 @@
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QShowEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -41,21 +42,6 @@ PythonShell::PythonShell(StudioMainWindow* window, QWidget* parent)
   row->addWidget(this->Line, 1);
   layout->addLayout(row);
 
-  StudioPython& python = StudioPython::Instance();
-  python.Attach(window, [this](const QString& text, bool error) { this->Append(text, error); });
-  if (python.Available())
-  {
-    this->Append(QStringLiteral("Python %1 with the studio module: studio.items(), studio.add(\"geodesics\", "
-                                "ConeAngle=20), studio.undo(), ... (help(studio)); import riemann and VTK "
-                                "as in scripts.\n")
-                   .arg(StudioPython::Version()),
-      false);
-  }
-  else
-  {
-    this->Append(python.Error() + "\n", true);
-    this->Line->setEnabled(false);
-  }
   QObject::connect(this->Line, &QLineEdit::returnPressed, this, [this]() {
     const QString line = this->Line->text();
     this->Line->clear();
@@ -65,13 +51,59 @@ PythonShell::PythonShell(StudioMainWindow* window, QWidget* parent)
 
 PythonShell::~PythonShell()
 {
-  StudioPython::Instance().Detach(this->Window);
+  if (this->Started)
+  {
+    StudioPython::Instance().Detach(this->Window);
+  }
+}
+
+bool PythonShell::Start()
+{
+  StudioPython& python = StudioPython::Instance();
+  if (!this->Started)
+  {
+    this->Started = true;
+    python.Attach(this->Window, [this](const QString& text, bool error) { this->Append(text, error); });
+    if (python.Available())
+    {
+      this->Append(QStringLiteral("Python %1 with the studio module: studio.items(), studio.add(\"geodesics\", "
+                                  "ConeAngle=20), studio.undo(), ... (help(studio)); import riemann and VTK "
+                                  "as in scripts.\n")
+                     .arg(StudioPython::Version()),
+        false);
+    }
+    else
+    {
+      this->Append(python.Error() + "\n", true);
+      this->Line->setEnabled(false);
+    }
+  }
+  return python.Available();
+}
+
+int PythonShell::RunScript(const QString& path)
+{
+  if (!this->Start())
+  {
+    return 1;
+  }
+  return StudioPython::Instance().RunScript(path);
+}
+
+void PythonShell::showEvent(QShowEvent* event)
+{
+  this->Start();
+  QWidget::showEvent(event);
 }
 
 bool PythonShell::Enter(const QString& line)
 {
+  if (!this->Start())
+  {
+    return false;
+  }
   StudioPython& python = StudioPython::Instance();
-  if (!python.Available() || python.Busy())
+  if (python.Busy())
   {
     return false;
   }

@@ -4,7 +4,8 @@
  * a console on the app's embedded interpreter (StudioPython.h) with the
  * `studio` module already imported, `import riemann` and VTK's modules as
  * in scripts, the output of print and of tracebacks, and the lines typed
- * before (Up and Down).
+ * before (Up and Down). Python starts when the shell is first shown or
+ * used (a window that never uses it never starts the interpreter).
  */
 #ifndef RiemannStudio_PythonShell_h
 #define RiemannStudio_PythonShell_h
@@ -29,14 +30,20 @@ public:
   PythonShell(StudioMainWindow* window, QWidget* parent = nullptr);
   ~PythonShell() override;
 
+  /// Starts Python (once) and makes this window the one `studio` drives;
+  /// false when Python could not start (the shell says why).
+  bool Start();
   /// Runs `line` as if typed and entered; returns whether a block needs more.
   bool Enter(const QString& line);
+  /// Runs a script file in this shell (--script): its exit status.
+  int RunScript(const QString& path);
   /// Everything the console shows.
   QString Transcript() const;
   QLineEdit* Input() const { return this->Line; }
 
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
 private:
   void Append(const QString& text, bool error);
@@ -47,6 +54,7 @@ private:
   QLineEdit* Line;
   QStringList History;
   int HistoryAt = 0;
+  bool Started = false;
 };
 }
 }

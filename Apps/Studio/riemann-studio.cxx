@@ -12,6 +12,7 @@
 // window, StudioPython.h); with --exit the app then exits with the script's
 // status, so every Studio test can be a script.
 #include "InsideView.h"
+#include "PythonShell.h"
 #include "StudioMainWindow.h"
 #include "StudioPython.h"
 
@@ -148,12 +149,12 @@ int main(int argc, char* argv[])
     if (parser.isSet(exitAfter))
     {
       window.Settle();
-      return python.RunScript(path);
+      return window.Shell()->RunScript(path);
     }
     window.PythonShellDock()->show();
-    QTimer::singleShot(0, &window, [&window, &python, path]() {
+    QTimer::singleShot(0, &window, [&window, path]() {
       window.Settle();
-      python.RunScript(path);
+      window.Shell()->RunScript(path);
     });
   }
   if (!batch)
