@@ -23,13 +23,14 @@ from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource, vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkTextActor,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow, vtkTextActor,
                                          vtkWindowToImageFilter)
 from vtkmodules.vtkImagingCore import vtkImageShiftScale
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import riemann
+from perceptual_colours import viridis
 
 # The scene around the actors: a checker floor, fog and the observer's light.
 FLOOR_SCENE = {
@@ -42,15 +43,6 @@ FLOOR_SCENE = {
                  "material": {"type": "checker", "color": [0.85, 0.85, 0.85],
                               "color2": [0.25, 0.25, 0.3], "size": 0.5}}],
 }
-
-
-def viridis(low, high):
-    """viridis (perceptual, colour-blind safe) from low to high, as riemann-studio's default map."""
-    lut = vtkColorTransferFunction()
-    for x, r, g, b in ((0.0, 0.267, 0.005, 0.329), (0.25, 0.254, 0.265, 0.530), (0.5, 0.164, 0.471, 0.558),
-                       (0.75, 0.135, 0.659, 0.518), (0.875, 0.478, 0.821, 0.318), (1.0, 0.993, 0.906, 0.144)):
-        lut.AddRGBPoint(low + x * (high - low), r, g, b)
-    return lut
 
 
 def make_actors():

@@ -16,24 +16,16 @@ import sys
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import riemann
+from perceptual_colours import viridis
 
 OBSERVERS = [((0.0, 0.0, 0.0), (1.0, 1.0, 1.0)), ((0.6, 0.0, 0.0), (1.0, 0.5, 0.2)),
              ((0.0, -0.5, 0.4), (0.3, 0.7, 1.0))]
-
-
-def viridis(low, high):
-    """viridis (perceptual, colour-blind safe) from low to high, as riemann-studio's default map."""
-    lut = vtkColorTransferFunction()
-    for x, r, g, b in ((0.0, 0.267, 0.005, 0.329), (0.25, 0.254, 0.265, 0.530), (0.5, 0.164, 0.471, 0.558),
-                       (0.75, 0.135, 0.659, 0.518), (0.875, 0.478, 0.821, 0.318), (1.0, 0.993, 0.906, 0.144)):
-        lut.AddRGBPoint(low + x * (high - low), r, g, b)
-    return lut
 
 
 def main():

@@ -28,13 +28,14 @@ from vtkmodules.vtkFiltersCore import vtkTubeFilter
 from vtkmodules.vtkFiltersSources import vtkLineSource, vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper, vtkRenderer,
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkRenderWindow, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
 
 import riemann
+from perceptual_colours import viridis
 
 OBSERVER = (-2.5, 0.0, 0.0)
 
@@ -112,11 +113,8 @@ def render(lines, max_deflection, png_path, size):
     mapper.SelectColorArray("Deflection")
     mapper.SetScalarRange(0.0, max_deflection)
     # viridis (perceptual, colour-blind safe), as riemann-studio's default map.
-    viridis = vtkColorTransferFunction()
-    for x, r, g, b in ((0.0, 0.267, 0.005, 0.329), (0.25, 0.254, 0.265, 0.530), (0.5, 0.164, 0.471, 0.558),
-                       (0.75, 0.135, 0.659, 0.518), (0.875, 0.478, 0.821, 0.318), (1.0, 0.993, 0.906, 0.144)):
-        viridis.AddRGBPoint(x * max_deflection, r, g, b)
-    mapper.SetLookupTable(viridis)
+    colours = viridis(0.0, max_deflection)
+    mapper.SetLookupTable(colours)
     mapper.UseLookupTableScalarRangeOff()
     rays = vtkActor()
     rays.SetMapper(mapper)
@@ -156,7 +154,7 @@ def render(lines, max_deflection, png_path, size):
     renderer.AddActor(axis_actor)
 
     bar = vtkScalarBarActor()
-    bar.SetLookupTable(viridis)
+    bar.SetLookupTable(colours)
     bar.SetTitle("Deflection (deg)")
     bar.SetNumberOfLabels(4)
     bar.SetWidth(0.08)

@@ -35,14 +35,6 @@ namespace studio
 {
 namespace
 {
-/// "dir/out.png", 3 -> "dir/out_0003.png", as `riemann render --frames`.
-QString FramePath(const QString& output, int frame)
-{
-  const QFileInfo info(output);
-  return info.dir().filePath(
-    QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(frame, 4, 10, QChar('0')).arg(info.suffix()));
-}
-
 bool IsFilm(const QString& output)
 {
   return FilmWriter::IsFilmPath(output.toStdString());
@@ -220,7 +212,9 @@ QString ExportAnimation(StudioMainWindow& window, const AnimationSettings& setti
       }
       else
       {
-        const QString path = frames > 1 ? FramePath(settings.Output, k) : settings.Output;
+        const QString path = frames > 1
+          ? QString::fromStdString(FramePath(settings.Output.toStdString(), k))
+          : settings.Output;
         error = WritePng(picture, path);
         written << path;
       }

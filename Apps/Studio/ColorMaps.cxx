@@ -78,6 +78,31 @@ QStringList ColorMapNames()
   return { "viridis", "cividis", "magma", "cool-to-warm", "grayscale", "vtk-rainbow", "rainbow" };
 }
 
+vtkDataArray* ColoringArray(vtkDataSet* data, const std::string& name, bool* onPoints)
+{
+  vtkDataArray* values = nullptr;
+  bool points = true;
+  if (data && name != "Solid")
+  {
+    values = data->GetPointData()->GetArray(name.c_str());
+    if (!values)
+    {
+      values = data->GetCellData()->GetArray(name.c_str());
+      points = false;
+    }
+  }
+  if (onPoints)
+  {
+    *onPoints = points;
+  }
+  return values;
+}
+
+void ColoringRange(vtkDataArray* values, double range[2])
+{
+  values->GetRange(range, values->GetNumberOfComponents() == 1 ? 0 : -1);
+}
+
 void ApplyColoring(vtkActor* actor, vtkDataSet* data, const ColorScale& scale, const double solid[3],
   vtkScalarBarActor* bar)
 {
@@ -86,17 +111,8 @@ void ApplyColoring(vtkActor* actor, vtkDataSet* data, const ColorScale& scale, c
   actor->GetProperty()->SetColor(solid[0], solid[1], solid[2]);
   const std::string& array = scale.Array;
   const std::string& map = scale.Map;
-  vtkDataArray* values = nullptr;
   bool onPoints = true;
-  if (data && array != "Solid")
-  {
-    values = data->GetPointData()->GetArray(array.c_str());
-    if (!values)
-    {
-      values = data->GetCellData()->GetArray(array.c_str());
-      onPoints = false;
-    }
-  }
+  vtkDataArray* values = ColoringArray(data, array, &onPoints);
   if (bar)
   {
     bar->SetVisibility(values != nullptr && scale.ScalarBar);
@@ -106,11 +122,10 @@ void ApplyColoring(vtkActor* actor, vtkDataSet* data, const ColorScale& scale, c
     mapper->ScalarVisibilityOff();
     return;
   }
-  const int component = values->GetNumberOfComponents() == 1 ? 0 : -1;
   double range[2] = { scale.Minimum, scale.Maximum };
   if (!scale.CustomRange)
   {
-    values->GetRange(range, component);
+    ColoringRange(values, range);
     // A diverging map is centred on zero when the values change sign
     // (positive and negative curvature read as warm and cool).
     if (map == "cool-to-warm" && range[0] < 0.0 && range[1] > 0.0)
@@ -145,7 +160,7 @@ void ApplyColoring(vtkActor* actor, vtkDataSet* data, const ColorScale& scale, c
     }
     lookup = table;
   }
-  if (component < 0)
+  if (values->GetNumberOfComponents() != 1)
   {
     lookup->SetVectorModeToMagnitude();
   }

@@ -11,6 +11,7 @@
 #include <string>
 
 class vtkActor;
+class vtkDataArray;
 class vtkDataSet;
 class vtkMapper;
 class vtkScalarBarActor;
@@ -54,6 +55,13 @@ struct ColorScale
  * without an array. With a `bar`, it shows this colouring (titled by the
  * array) when scale.ScalarBar and an array colours the actor, else it hides.
  */
+/// The array that colours `data` by `name`: its point array, else its cell
+/// array; null for "Solid" or an array it lacks. `onPoints` says which.
+vtkDataArray* ColoringArray(vtkDataSet* data, const std::string& name, bool* onPoints = nullptr);
+/// The range a colouring reads from `values`: the first component's, or the
+/// magnitude's for vectors.
+void ColoringRange(vtkDataArray* values, double range[2]);
+
 void ApplyColoring(vtkActor* actor, vtkDataSet* data, const ColorScale& scale, const double solid[3],
   vtkScalarBarActor* bar = nullptr);
 }

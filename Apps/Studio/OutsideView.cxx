@@ -163,6 +163,11 @@ OutsideView::~OutsideView()
 void OutsideView::EditKeys(const Keys& keys, std::function<void(const Keys&)> moved)
 {
   this->KeysMoved = std::move(moved);
+  // No handles before or after (every other selection): nothing to draw.
+  if (keys.empty() && this->KeyHandles.empty())
+  {
+    return;
+  }
   // Same count: the handles move (a drag's end must not rebuild the widget
   // it came from); else they are made again.
   if (keys.size() != this->KeyHandles.size())

@@ -205,10 +205,14 @@ ColorScale PipelineItem::Coloring(const std::string& array, double opacity) cons
 
 PipelineItem::~PipelineItem() = default;
 
+bool PipelineItem::ColoursOverTime() const
+{
+  return this->Text("ColorRange") == "over time" && this->Text("ColorArray") != "Solid";
+}
+
 bool PipelineItem::NeedsTimeRange(const std::string& source) const
 {
-  return this->Text("ColorRange") == "over time" && this->Text("ColorArray") != "Solid" &&
-    source != this->TimeRangeFor;
+  return this->ColoursOverTime() && source != this->TimeRangeFor;
 }
 
 void PipelineItem::SetTimeRange(const double range[2], const std::string& source)

@@ -187,9 +187,10 @@ public:
   /**
    * Colour range "over time": `source` names what the range was sampled
    * for (the item's job settings, its colouring array and the metric:
-   * StudioDocument's TimeRangeSource). NeedsTimeRange: the item wants a
-   * range for `source` and has none. SetTimeRange keeps it and redraws.
+   * StudioDocument's TimeRangeSource). ColoursOverTime: an array colours the
+   * item over time. NeedsTimeRange: it does, and has no range for `source`. SetTimeRange keeps it and redraws.
    */
+  bool ColoursOverTime() const;
   bool NeedsTimeRange(const std::string& source) const;
   void SetTimeRange(const double range[2], const std::string& source);
   /// The JobRunner key of the item's range sampling (distinct from its own job).

@@ -423,8 +423,14 @@ std::string TimeRangeSource(const PipelineItem& item, const std::string& metric)
 
 void StudioDocument::SampleTimeRange(PipelineItem* item)
 {
+  // Most items do not colour over time: nothing to describe or compare
+  // (this runs after every job an item finishes).
+  if (!item->ColoursOverTime() || !item->IsVisible() || !this->CurrentMetric->HasDefinition())
+  {
+    return;
+  }
   const std::string source = TimeRangeSource(*item, this->EffectiveMetricText());
-  if (!item->NeedsTimeRange(source) || !item->IsVisible() || !this->CurrentMetric->HasDefinition())
+  if (!item->NeedsTimeRange(source))
   {
     return;
   }

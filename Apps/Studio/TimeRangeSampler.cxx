@@ -1,5 +1,7 @@
 #include "TimeRangeSampler.h"
 
+#include "ColorMaps.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -24,25 +26,17 @@ vtkStandardNewMacro(TimeRangeSampler);
 
 namespace
 {
-/// Widens `range` by `array`'s values on `data` (points first, as colouring).
+/// Widens `range` by the colouring array `name` of `result`, read as the
+/// colouring reads it (ColorMaps.h).
 void Widen(vtkDataObject* result, const std::string& name, double range[2], bool& found)
 {
-  auto* data = vtkDataSet::SafeDownCast(result);
-  if (!data)
-  {
-    return;
-  }
-  vtkDataArray* values = data->GetPointData()->GetArray(name.c_str());
-  if (!values)
-  {
-    values = data->GetCellData()->GetArray(name.c_str());
-  }
+  vtkDataArray* values = ColoringArray(vtkDataSet::SafeDownCast(result), name);
   if (!values || values->GetNumberOfTuples() == 0)
   {
     return;
   }
   double own[2];
-  values->GetRange(own, values->GetNumberOfComponents() == 1 ? 0 : -1);
+  ColoringRange(values, own);
   range[0] = std::min(range[0], own[0]);
   range[1] = std::max(range[1], own[1]);
   found = true;

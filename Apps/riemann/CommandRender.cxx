@@ -14,6 +14,7 @@
 #include "ProgressBar.h"
 
 #include "RiemannCPUImage.h"
+#include "RiemannFilmWriter.h"
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
 #include "vtkActor.h"

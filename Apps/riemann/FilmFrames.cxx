@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace riemann
 {
@@ -34,14 +33,6 @@ std::vector<unsigned char> RgbBytes(const Image& picture)
   return bytes;
 }
 } // namespace
-
-std::string FramePath(const std::string& path, int frame)
-{
-  const size_t dot = path.find_last_of('.');
-  char number[16];
-  std::snprintf(number, sizeof(number), "_%04d", frame);
-  return path.substr(0, dot) + number + path.substr(dot);
-}
 
 FilmPlan::FilmPlan(const std::string& cameraPathFile, int frames, vtkRiemannMetric* metric)
   : Frames(frames)

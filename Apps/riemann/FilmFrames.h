@@ -21,9 +21,6 @@ class FilmWriter;
 
 namespace cli
 {
-/// "out.png", 3 -> "out_0003.png".
-std::string FramePath(const std::string& path, int frame);
-
 /// What each frame of a film shows: the metric's time and the observer.
 class FilmPlan
 {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -38,6 +39,14 @@ std::string PartialPathOf(const std::string& path)
   return (target.parent_path() / ("." + target.filename().string() + ".partial")).string();
 }
 } // namespace
+
+std::string FramePath(const std::string& path, int frame)
+{
+  const size_t dot = path.find_last_of('.');
+  char number[16];
+  std::snprintf(number, sizeof(number), "_%04d", frame);
+  return path.substr(0, dot) + number + (dot == std::string::npos ? "" : path.substr(dot));
+}
 
 bool FilmWriter::IsFilmPath(const std::string& path)
 {

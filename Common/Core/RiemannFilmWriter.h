@@ -20,6 +20,11 @@
 
 namespace riemann
 {
+/// The numbered pictures written instead of a film: "dir/out.png", 3 ->
+/// "dir/out_0003.png" (`riemann render --frames`, riemann-studio's Export
+/// Animation).
+RIEMANNCOMMONCORE_EXPORT std::string FramePath(const std::string& path, int frame);
+
 class RIEMANNCOMMONCORE_EXPORT FilmWriterError : public std::runtime_error
 {
 public:
