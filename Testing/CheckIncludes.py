@@ -22,15 +22,16 @@ import re
 import sys
 
 # Library folder -> the library folders its files may include from.
-CORE = ["Common/Packets", "Common/Metric", "Common/Expressions", "Common/Jacobi",
+CORE = ["Common/Settings", "Common/Packets", "Common/Metric", "Common/Expressions", "Common/Jacobi",
         "Common/Distance", "Common/MetricFormat"]
 LAYERS = {
+    "Common/Settings": [],
     "Common/Packets": [],
-    "Common/Metric": ["Common/Packets"],
-    "Common/Expressions": ["Common/Metric", "Common/Packets"],
-    "Common/Jacobi": ["Common/Metric", "Common/Packets"],
-    "Common/Distance": ["Common/Metric", "Common/Packets"],
-    "Common/MetricFormat": ["Common/Expressions", "Common/Metric", "Common/Packets"],
+    "Common/Metric": ["Common/Packets", "Common/Settings"],
+    "Common/Expressions": ["Common/Metric", "Common/Packets", "Common/Settings"],
+    "Common/Jacobi": ["Common/Metric", "Common/Packets", "Common/Settings"],
+    "Common/Distance": ["Common/Metric", "Common/Packets", "Common/Settings"],
+    "Common/MetricFormat": ["Common/Expressions", "Common/Metric", "Common/Packets", "Common/Settings"],
     "Rendering/Core": CORE,
     "Rendering/Meshes": ["Rendering/Core"] + CORE,
     "Rendering/ImageIO": ["Rendering/Core"] + CORE,

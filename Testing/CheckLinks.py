@@ -23,21 +23,22 @@ RUNTIME = re.compile(r"^(libstdc\+\+|libm|libc|libgcc_s|ld-linux-x86-64|libpthre
 VTK = re.compile(r"^libvtk")
 
 # Riemann library -> (third-party soname prefixes, Riemann libraries, may it need VTK)
-CORE = ["RiemannCommonMetricFormat", "RiemannCommonExpressions", "RiemannCommonJacobi",
+CORE = ["RiemannCommonSettings", "RiemannCommonMetricFormat", "RiemannCommonExpressions", "RiemannCommonJacobi",
         "RiemannCommonDistance", "RiemannCommonMetric", "RiemannCommonPackets"]
 ALLOWED = {
     # The VTK-free core, bottom up: the packet engine (Highway), the metric
     # core (nothing but the engine), typed expressions (GiNaC; Highway for
     # their packet interpreter), Jacobi fields, distance fields, the JSON
     # metric format.
+    "RiemannCommonSettings": ([], [], False),
     "RiemannCommonPackets": (["libhwy"], [], False),
-    "RiemannCommonMetric": ([], ["RiemannCommonPackets"], False),
+    "RiemannCommonMetric": ([], ["RiemannCommonPackets", "RiemannCommonSettings"], False),
     "RiemannCommonExpressions": (["libginac", "libcln", "libhwy"],
-                                 ["RiemannCommonMetric", "RiemannCommonPackets"], False),
-    "RiemannCommonJacobi": ([], ["RiemannCommonMetric", "RiemannCommonPackets"], False),
-    "RiemannCommonDistance": ([], ["RiemannCommonMetric", "RiemannCommonPackets"], False),
+                                 ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
+    "RiemannCommonJacobi": ([], ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
+    "RiemannCommonDistance": ([], ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
     "RiemannCommonMetricFormat": ([], ["RiemannCommonExpressions", "RiemannCommonMetric",
-                                       "RiemannCommonPackets"], False),
+                                       "RiemannCommonPackets", "RiemannCommonSettings"], False),
     "RiemannRenderingCore": ([], CORE, False),
     "RiemannRenderingMeshes": (["libembree3"], ["RiemannRenderingCore"] + CORE, False),
     "RiemannRenderingImageIO": (["libOpenImageIO", "libOpenImageIO_Util"],

@@ -1,9 +1,9 @@
 // Conjugate points and caustic sheets of a point (vtkRiemannConjugateLocus).
 #include "PipelineItems.h"
 
-#include "IntegrationSchema.h"
-
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
+#include "vtkRiemannConjugateLocusSettingAccess.h"
 
 #include "vtkRiemannConjugateLocus.h"
 #include "vtkRiemannIntegrationSettings.h"
@@ -11,6 +11,7 @@
 
 #include "vtkActor.h"
 #include "vtkAssembly.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -19,16 +20,20 @@ namespace riemann
 {
 namespace studio
 {
+namespace
+{
+/// A new filter's settings (adaptive: its error follows Tolerance / 100,
+/// MaximumError only caps it), coloured by arc length.
+nlohmann::json ConjugateLocusDefaults()
+{
+  vtkNew<vtkRiemannConjugateLocus> filter;
+  return FilterDefaults(riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
+    { { "ColorArray", "ArcLength" } });
+}
+}
+
 ConjugateLocusItem::ConjugateLocusItem(const QString& name)
-  : PipelineItem(name,
-      // Adaptive, as the filter: its error follows Tolerance (Tolerance /
-      // 100), MaximumError only caps it.
-      WithIntegrationDefaults(
-        { { "Observer", { 0.0, 0.0, 2.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
-          { "ConeAngle", 30.0 }, { "NumberOfDirections", 800 },
-          { "MaximumNumberOfConjugatePoints", 2 }, { "Tolerance", 1e-8 },
-          { "MaximumIntegrationStep", 0.1 }, { "ColorArray", "ArcLength" } },
-        "dp45", 6.0))
+  : PipelineItem(name, ConjugateLocusDefaults())
 {
   for (vtkActor* actor : { this->Points.Get(), this->Caustics.Get() })
   {
@@ -43,38 +48,8 @@ ConjugateLocusItem::ConjugateLocusItem(const QString& name)
 
 std::vector<PropertySpec> ConjugateLocusItem::Properties() const
 {
-  std::vector<PropertySpec> specs = this->ObserverConeProperties(4);
-  PropertySpec maximum;
-  maximum.Key = "MaximumNumberOfConjugatePoints";
-  maximum.Label = "Points per geodesic";
-  maximum.Type = PropertySpec::Integer;
-  maximum.Minimum = 1;
-  maximum.Maximum = 100;
-  specs.push_back(maximum);
-
-  PropertySpec tolerance;
-  tolerance.Key = "Tolerance";
-  tolerance.Label = "Tolerance";
-  tolerance.Minimum = 1e-15;
-  tolerance.Maximum = 1.0;
-  tolerance.Help = "Arc-length accuracy of each conjugate point, and the resolution: two "
-                   "closer than this are one point of multiplicity 2 (the integration error "
-                   "follows it)";
-  specs.push_back(tolerance);
-
-  PropertySpec largestStep;
-  largestStep.Key = "MaximumIntegrationStep";
-  largestStep.Label = "Largest step";
-  // The integration schema's range of the setting, as everywhere else.
-  const riemann::IntegrationSetting& maximumStep =
-    riemann::IntegrationSettingOf(riemann::IntegrationSettingId::MaximumStep);
-  largestStep.Minimum = maximumStep.Minimum;
-  largestStep.MinimumExclusive = maximumStep.MinimumExclusive;
-  largestStep.Maximum = maximumStep.Maximum;
-  largestStep.Help = "Largest step of dp45 (conjugate points are counted, so no step can jump "
-                     "over one)";
-  specs.push_back(largestStep);
-  return this->WithIntegrationAndDisplay(specs);
+  return this->WithIntegrationAndDisplay(
+    DeclaredPropertySpecs(riemann::declared::vtkRiemannConjugateLocus::Settings));
 }
 
 vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& inputs) const
@@ -84,11 +59,7 @@ vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& input
   metric->ShallowCopy(inputs.Metric);
   locus->SetMetric(metric);
   this->ApplyIntegration(locus->GetIntegrationSettings());
-  locus->GetIntegrationSettings()->SetMaximumIntegrationStep(
-    this->Number("MaximumIntegrationStep"));
-  this->ApplyObserverCone(locus.Get());
-  locus->SetMaximumNumberOfConjugatePoints(this->Integer("MaximumNumberOfConjugatePoints"));
-  locus->SetTolerance(this->Number("Tolerance"));
+  riemann::settings::ApplySettings(locus, this->Settings());
   return locus;
 }
 
@@ -116,24 +87,7 @@ void ConjugateLocusItem::UpdateDisplay()
 
 std::vector<std::string> ConjugateLocusItem::PythonLines(const std::string& var) const
 {
-  std::vector<std::string> lines{
-    var + " = riemann.vtkRiemannConjugateLocus()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : this->ObserverConePythonLines(var))
-  {
-    lines.push_back(line);
-  }
-  lines.push_back(var + ".SetMaximumNumberOfConjugatePoints(" +
-    std::to_string(this->Integer("MaximumNumberOfConjugatePoints")) + ")");
-  lines.push_back(var + ".SetTolerance(" + PythonNumber(this->Number("Tolerance")) + ")");
-  for (const std::string& line : this->IntegrationPythonLines(var))
-  {
-    lines.push_back(line);
-  }
-  lines.push_back(var + ".GetIntegrationSettings().SetMaximumIntegrationStep(" +
-    PythonNumber(this->Number("MaximumIntegrationStep")) + ")");
-  return lines;
+  return FilterPythonLines(riemann::declared::vtkRiemannConjugateLocus::Settings, var, this->Settings());
 }
 }
 }

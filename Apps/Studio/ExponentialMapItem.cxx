@@ -2,6 +2,8 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
+#include "vtkRiemannExponentialMapSettingAccess.h"
 
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannIntegrationSettings.h"
@@ -9,6 +11,7 @@
 
 #include "vtkActor.h"
 #include "vtkAssembly.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -17,13 +20,19 @@ namespace riemann
 {
 namespace studio
 {
+namespace
+{
+/// A new filter's settings, coloured by the transverse Jacobian.
+nlohmann::json ExponentialMapDefaults()
+{
+  vtkNew<vtkRiemannExponentialMap> filter;
+  return FilterDefaults(riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
+    { { "ColorArray", "TransverseJacobian" } });
+}
+}
+
 ExponentialMapItem::ExponentialMapItem(const QString& name)
-  : PipelineItem(name,
-      WithIntegrationDefaults(
-        { { "Observer", { 0.0, 0.0, 3.0 } }, { "ConeAxis", { 0.0, 0.0, -1.0 } },
-          { "ConeAngle", 35.0 }, { "NumberOfDirections", 600 },
-          { "Radii", { 1.25, 2.5, 3.75, 5.0 } }, { "ColorArray", "TransverseJacobian" } },
-        "rk4", 5.0))
+  : PipelineItem(name, ExponentialMapDefaults())
 {
   for (vtkActor* actor : { this->Rays.Get(), this->Wavefronts.Get() })
   {
@@ -36,17 +45,8 @@ ExponentialMapItem::ExponentialMapItem(const QString& name)
 
 std::vector<PropertySpec> ExponentialMapItem::Properties() const
 {
-  std::vector<PropertySpec> specs = this->ObserverConeProperties(4);
-  PropertySpec radii;
-  radii.Key = "Radii";
-  radii.Label = "Radii";
-  radii.Type = PropertySpec::NumberList;
-  radii.Minimum = 0.0;
-  radii.MinimumExclusive = true;
-  radii.Help = "Arc lengths of the geodesic spheres (wavefronts), e.g. 1, 2.5, 4; those beyond "
-               "the length are not reached";
-  specs.push_back(radii);
-  return this->WithIntegrationAndDisplay(specs);
+  return this->WithIntegrationAndDisplay(
+    DeclaredPropertySpecs(riemann::declared::vtkRiemannExponentialMap::Settings));
 }
 
 vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& inputs) const
@@ -56,11 +56,7 @@ vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& input
   metric->ShallowCopy(inputs.Metric);
   expmap->SetMetric(metric);
   this->ApplyIntegration(expmap->GetIntegrationSettings());
-  this->ApplyObserverCone(expmap.Get());
-  for (const nlohmann::json& radius : this->Settings().at("Radii"))
-  {
-    expmap->AddRadius(radius.get<double>());
-  }
+  riemann::settings::ApplySettings(expmap, this->Settings());
   return expmap;
 }
 
@@ -89,23 +85,7 @@ void ExponentialMapItem::UpdateDisplay()
 
 std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var) const
 {
-  std::vector<std::string> lines{
-    var + " = riemann.vtkRiemannExponentialMap()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : this->ObserverConePythonLines(var))
-  {
-    lines.push_back(line);
-  }
-  for (const nlohmann::json& radius : this->Settings().at("Radii"))
-  {
-    lines.push_back(var + ".AddRadius(" + PythonNumber(radius.get<double>()) + ")");
-  }
-  for (const std::string& line : this->IntegrationPythonLines(var))
-  {
-    lines.push_back(line);
-  }
-  return lines;
+  return FilterPythonLines(riemann::declared::vtkRiemannExponentialMap::Settings, var, this->Settings());
 }
 }
 }

@@ -1,12 +1,7 @@
 #include "IntegrationValues.h"
 
-#include "PipelineItem.h" // For PythonNumber
-
-#include "IntegrationSchema.h"
-#include "RungeKutta.h"
-
-#include "vtkNew.h"
-#include "vtkRiemannIntegrationSettings.h"
+#include "SettingValues.h"
+#include "vtkRiemannIntegrationSettingsSettingAccess.h"
 
 namespace riemann
 {
@@ -14,113 +9,46 @@ namespace studio
 {
 namespace
 {
-/// The settings the app shows (a label in the schema), with their ids.
-template <class Visit>
-void ForEachShownSetting(Visit visit)
+const riemann::SettingTable& Declared()
 {
-  for (std::size_t i = 0; i < IntegrationSchema.size(); ++i)
-  {
-    if (*IntegrationSchema[i].Label)
-    {
-      visit(static_cast<IntegrationSettingId>(i), IntegrationSchema[i]);
-    }
-  }
+  return riemann::declared::vtkRiemannIntegrationSettings::Settings;
 }
 } // namespace
 
 nlohmann::json IntegrationValues(vtkRiemannIntegrationSettings* settings)
 {
-  nlohmann::json values = nlohmann::json::object();
-  ForEachShownSetting(
-    [&](IntegrationSettingId id, const IntegrationSetting& setting)
-    {
-      if (setting.Type == IntegrationSetting::Choice)
-      {
-        values[setting.Property] = settings->GetIntegratorTypeAsString();
-      }
-      else if (setting.Type == IntegrationSetting::Count)
-      {
-        values[setting.Property] = static_cast<long long>(settings->GetValue(id));
-      }
-      else
-      {
-        values[setting.Property] = settings->GetValue(id);
-      }
-    });
-  return values;
+  return riemann::settings::SettingValues(settings);
 }
 
 std::string CheckIntegrationValue(const std::string& key, const nlohmann::json& value)
 {
-  std::string problem = "unknown setting";
-  ForEachShownSetting(
-    [&](IntegrationSettingId, const IntegrationSetting& setting)
-    {
-      if (key != setting.Property)
-      {
-        return;
-      }
-      if (setting.Type == IntegrationSetting::Choice)
-      {
-        IntegratorType type;
-        problem = value.is_string() && ParseIntegratorName(value.get<std::string>(), type)
-          ? std::string()
-          : "expected \"euler\", \"rk4\" or \"dp45\"";
-        return;
-      }
-      const bool valid = value.is_number() &&
-        riemann::CheckIntegrationValue(setting, value.get<double>(), key).empty();
-      problem = valid ? std::string()
-                      : "expected " + DescribeIntegrationRange(setting) + ", got " + value.dump();
-    });
-  return problem;
+  const riemann::SettingDeclaration* setting = Declared().Find(key);
+  if (!setting)
+  {
+    return "unknown setting";
+  }
+  return riemann::CheckSettingValue(*setting, value, key).empty()
+    ? std::string()
+    : "expected " + riemann::DescribeSettingRange(*setting) + ", got " + value.dump();
 }
 
 void ApplyIntegrationValues(const nlohmann::json& values, vtkRiemannIntegrationSettings* settings)
 {
-  ForEachShownSetting(
-    [&](IntegrationSettingId id, const IntegrationSetting& setting)
+  nlohmann::json declared = nlohmann::json::object();
+  for (const riemann::SettingDeclaration& setting : Declared())
+  {
+    if (values.contains(setting.Name))
     {
-      if (!values.contains(setting.Property))
-      {
-        return;
-      }
-      const nlohmann::json& value = values.at(setting.Property);
-      if (setting.Type == IntegrationSetting::Choice)
-      {
-        settings->SetIntegratorTypeFromName(value.get<std::string>().c_str());
-      }
-      else
-      {
-        settings->SetValue(id, value.get<double>());
-      }
-    });
+      declared[setting.Name] = values.at(setting.Name);
+    }
+  }
+  riemann::settings::ApplySettings(settings, declared);
 }
 
 std::vector<std::string> IntegrationPython(
   const std::string& target, vtkRiemannIntegrationSettings* settings)
 {
-  std::vector<std::string> lines;
-  ForEachShownSetting(
-    [&](IntegrationSettingId id, const IntegrationSetting& setting)
-    {
-      if (setting.Type == IntegrationSetting::Choice)
-      {
-        lines.push_back(target + ".SetIntegratorTypeFromName(\"" +
-          settings->GetIntegratorTypeAsString() + "\")");
-      }
-      else if (setting.Type == IntegrationSetting::Count)
-      {
-        lines.push_back(target + ".Set" + setting.Property + "(" +
-          std::to_string(static_cast<long long>(settings->GetValue(id))) + ")");
-      }
-      else
-      {
-        lines.push_back(
-          target + ".Set" + setting.Property + "(" + PythonNumber(settings->GetValue(id)) + ")");
-      }
-    });
-  return lines;
+  return riemann::SettingPythonLines(Declared(), target, IntegrationValues(settings));
 }
 } // namespace studio
 } // namespace riemann

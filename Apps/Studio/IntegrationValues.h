@@ -2,13 +2,13 @@
  * @file IntegrationValues.h
  * @brief The integration settings as the app stores them (an item's
  * properties, a project's "inside.integration"), read, checked, applied and
- * exported to Python through the integration schema (IntegrationSchema.h)
- * rather than property by property.
+ * exported to Python through their declaration
+ * (vtkRiemannIntegrationSettings.settings.json) rather than property by
+ * property.
  *
  * The keys are vtkRiemannIntegrationSettings's property names (a project
- * stores the VTK objects' properties, as ParaView's state files do); the
- * settings are those the schema gives a label (the ones the app's forms
- * show); the integrator is stored by its name ("rk4").
+ * stores the VTK objects' properties, as ParaView's state files do), every
+ * declared setting; the integrator is stored by its name ("rk4").
  */
 #ifndef RiemannStudioIntegrationValues_h
 #define RiemannStudioIntegrationValues_h
@@ -28,7 +28,7 @@ namespace studio
 nlohmann::json IntegrationValues(vtkRiemannIntegrationSettings* settings);
 
 /// "" when `key` names one of the app's settings and `value` is valid for it
-/// (type and the schema's range); else why not.
+/// (type and the declared range); else why not.
 std::string CheckIntegrationValue(const std::string& key, const nlohmann::json& value);
 
 /// Set the settings `values` names (checked before: CheckIntegrationValue).

@@ -1,6 +1,9 @@
 #include "PipelineItem.h"
 
-#include "IntegrationSchema.h"
+#include "SettingRange.h" // For ShortestNumberText
+
+#include "DeclaredProperties.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
 #include "RungeKutta.h"
 
 #include "ColorMaps.h"
@@ -472,42 +475,10 @@ nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrato
 
 std::vector<PropertySpec> IntegrationPropertySpecs()
 {
-  // One field per setting the app shows (those with a label), all from the
-  // integration schema (IntegrationSchema.h): the key is the
-  // vtkRiemannIntegrationSettings property (projects store it so), the
-  // label, help, unit and range are the schema's, as riemann's options are.
-  std::vector<PropertySpec> specs;
-  for (const riemann::IntegrationSetting& setting : riemann::IntegrationSchema)
-  {
-    if (!*setting.Label)
-    {
-      continue;
-    }
-    PropertySpec spec;
-    spec.Key = setting.Property;
-    spec.Label = setting.Label;
-    spec.Help = QString::fromStdString(
-      std::string(setting.Help) + ": " + riemann::DescribeIntegrationRange(setting));
-    if (setting.Type == riemann::IntegrationSetting::Choice)
-    {
-      spec.Type = PropertySpec::Choice;
-      for (riemann::IntegratorType type : { riemann::IntegratorType::Euler,
-             riemann::IntegratorType::RungeKutta4, riemann::IntegratorType::DormandPrince45 })
-      {
-        spec.Choices << riemann::IntegratorName(type);
-      }
-    }
-    else
-    {
-      spec.Type =
-        setting.Type == riemann::IntegrationSetting::Count ? PropertySpec::Integer : PropertySpec::Number;
-      spec.Minimum = setting.Minimum;
-      spec.MinimumExclusive = setting.MinimumExclusive;
-      spec.Maximum = setting.Maximum;
-    }
-    specs.push_back(spec);
-  }
-  return specs;
+  // One field per declared setting (vtkRiemannIntegrationSettings.settings.json):
+  // the key is the property (projects store it so), the label, help, unit
+  // and range are the declaration's, as riemann's options are.
+  return DeclaredPropertySpecs(riemann::declared::vtkRiemannIntegrationSettings::Settings);
 }
 
 std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string& var) const
@@ -515,46 +486,6 @@ std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string&
   vtkNew<vtkRiemannIntegrationSettings> settings;
   this->ApplyIntegration(settings);
   return IntegrationPython(var + ".GetIntegrationSettings()", settings);
-}
-
-std::vector<PropertySpec> PipelineItem::ObserverConeProperties(int minimumDirections) const
-{
-  PropertySpec observer;
-  observer.Key = "Observer";
-  observer.Label = "Point";
-  observer.Type = PropertySpec::Vector3;
-  observer.Help = "Where the geodesics start";
-
-  PropertySpec axis;
-  axis.Key = "ConeAxis";
-  axis.Label = "Cone axis";
-  axis.Type = PropertySpec::Vector3;
-  axis.NonZero = true;
-
-  PropertySpec cone;
-  cone.Key = "ConeAngle";
-  cone.Label = "Cone angle";
-  cone.Minimum = 0.0;
-  cone.Maximum = 180.0;
-  cone.Help = "Half-angle in degrees (180: the whole sphere of directions)";
-
-  PropertySpec count;
-  count.Key = "NumberOfDirections";
-  count.Label = "Directions";
-  count.Type = PropertySpec::Integer;
-  count.Minimum = minimumDirections;
-  count.Maximum = 1000000;
-  return { observer, axis, cone, count };
-}
-
-std::vector<std::string> PipelineItem::ObserverConePythonLines(const std::string& var) const
-{
-  return {
-    var + ".SetObserver" + PythonTuple(this->Values.at("Observer")),
-    var + ".SetConeAxis" + PythonTuple(this->Values.at("ConeAxis")),
-    var + ".SetConeAngle(" + PythonNumber(this->Number("ConeAngle")) + ")",
-    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
-  };
 }
 
 std::vector<PropertySpec> PipelineItem::SliceProperties() const
@@ -610,19 +541,7 @@ std::vector<PropertySpec> PipelineItem::WithIntegrationAndDisplay(std::vector<Pr
 
 std::string PythonNumber(double value)
 {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.17g", value);
-  // Prefer the shortest text that reads back the same.
-  for (int digits = 1; digits <= 17; ++digits)
-  {
-    char shorter[32];
-    std::snprintf(shorter, sizeof(shorter), "%.*g", digits, value);
-    if (std::strtod(shorter, nullptr) == value)
-    {
-      return shorter;
-    }
-  }
-  return text;
+  return riemann::ShortestNumberText(value);
 }
 
 std::string PythonTuple(const nlohmann::json& values)

@@ -237,22 +237,6 @@ protected:
   void ApplyIntegration(vtkRiemannIntegrationSettings* settings) const;
   /// The Python lines of ApplyIntegration.
   std::vector<std::string> IntegrationPythonLines(const std::string& var) const;
-  /// A base point ("Observer") and a cone of directions ("ConeAxis",
-  /// "ConeAngle", "NumberOfDirections"): the exponential map's and the
-  /// conjugate locus's settings, their Set calls and their Python lines.
-  std::vector<PropertySpec> ObserverConeProperties(int minimumDirections) const;
-  template <class ConeFilter>
-  void ApplyObserverCone(ConeFilter* filter) const
-  {
-    double observer[3], axis[3];
-    this->Vector("Observer", observer, 3);
-    this->Vector("ConeAxis", axis, 3);
-    filter->SetObserver(observer);
-    filter->SetConeAxis(axis);
-    filter->SetConeAngle(this->Number("ConeAngle"));
-    filter->SetNumberOfDirections(this->Integer("NumberOfDirections"));
-  }
-  std::vector<std::string> ObserverConePythonLines(const std::string& var) const;
   /// The slice of a grid result ("SliceNormal" x|y|z, "SliceOffset" from the
   /// grid's centre): the two settings, and the slice of `image` they make.
   std::vector<PropertySpec> SliceProperties() const;

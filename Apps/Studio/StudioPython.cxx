@@ -61,8 +61,22 @@ def set(item, **properties):
 
 
 def get(item):
-    """The item's settings, with its "kind" and "visible"."""
+    """The item's settings, with its "kind", "class" (the toolkit class it
+    runs) and "visible"."""
     return _call("get", item)
+
+
+def properties(item):
+    """The fields of the item's properties panel, in order: key, label, type,
+    minimum, maximum, minimum_exclusive, non_zero, choices, help, display
+    (as ParaView's ListProperties)."""
+    return _call("properties", item)
+
+
+def python():
+    """The Python script that rebuilds the session, as File > Export >
+    Python Script writes it."""
+    return _call("python")
 
 
 def remove(item):

@@ -7,6 +7,7 @@
 #include "PipelineBrowser.h"
 #include "PipelineItem.h"
 #include "ProjectFile.h"
+#include "PythonTrace.h"
 #include "StudioDocument.h"
 #include "StudioMainWindow.h"
 
@@ -181,8 +182,37 @@ Json StudioGet(StudioMainWindow& window, const Json& args)
   PipelineItem* item = ItemNamed(document, Text(args, 0, "item"));
   Json settings = item->Settings();
   settings["kind"] = item->Kind();
+  settings["class"] = item->FilterClass();
   settings["visible"] = item->IsVisible();
   return settings;
+}
+
+/// The item's form as the properties panel shows it (ParaView's ListProperties).
+Json StudioProperties(StudioMainWindow& window, const Json& args)
+{
+  static const char* const types[] = { "number", "integer", "vector3", "numbers6", "integers3",
+    "choice", "boolean", "number_list", "point_list" };
+  PipelineItem* item = ItemNamed(window.Document(), Text(args, 0, "item"));
+  Json fields = Json::array();
+  for (const PropertySpec& spec : item->Properties())
+  {
+    Json choices = Json::array();
+    for (const QString& choice : spec.Choices)
+    {
+      choices.push_back(choice.toStdString());
+    }
+    fields.push_back({ { "key", spec.Key }, { "label", spec.Label.toStdString() },
+      { "type", types[spec.Type] }, { "minimum", spec.Minimum }, { "maximum", spec.Maximum },
+      { "minimum_exclusive", spec.MinimumExclusive }, { "non_zero", spec.NonZero },
+      { "choices", choices }, { "help", spec.Help.toStdString() }, { "display", spec.Display } });
+  }
+  return fields;
+}
+
+/// The Python script that rebuilds the session (File > Export > Python Script).
+Json StudioPythonScript(StudioMainWindow& window, const Json&)
+{
+  return PythonScript(*window.Document());
 }
 
 Json StudioRemove(StudioMainWindow& window, const Json& args)
@@ -484,6 +514,8 @@ const std::map<std::string, StudioFunction>& StudioFunctions()
     { "add", StudioAdd },
     { "set", StudioSet },
     { "get", StudioGet },
+    { "properties", StudioProperties },
+    { "python", StudioPythonScript },
     { "remove", StudioRemove },
     { "show", StudioShow },
     { "metric", StudioMetric },

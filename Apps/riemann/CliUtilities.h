@@ -30,7 +30,6 @@
 #ifndef RiemannCliUtilities_h
 #define RiemannCliUtilities_h
 
-#include "IntegrationSchema.h" // For AddIntegrationOptions
 #include "RungeKutta.h"        // For IntegratorType
 
 #include "vtkCommand.h"
@@ -165,44 +164,6 @@ bool WritePolyDataFile(
 /// WritePolyDataFile through WriteAtomically: the file whole or not at all.
 void WritePolyDataAtomically(
   vtkPolyData* data, const std::string& path, const std::string& compress = "lz4");
-
-/**
- * The integration options of every command that integrates (trace, expmap,
- * conjugate, render), bound to the command's own values: one name, one
- * range and one wording each, so that a setting is spelled and checked the
- * same everywhere (TestCli.py checks each command's --help lists all five):
- * the flags, ranges, units and help texts of riemann::IntegrationSchema
- * (Common/Metric/IntegrationSchema.h), which vtkRiemannIntegrationSettings,
- * the app's forms and the scene format use too:
- *   --integrator euler|rk4|dp45, --step (1e-9 to 1e6), -l/--length (above 0,
- *   at most 1e9), --tolerance (1e-15 to 1), --max-steps (1 to 1e9).
- * The help says each default: the bound value, or "the scene's" where
- * SceneDefaults (render: 0 and "" mean "not given"). `render` also accepts
- * --max-length, the name --length had there before.
- */
-struct IntegrationOptions
-{
-  std::string* Integrator = nullptr;
-  double* Step = nullptr;
-  double* Length = nullptr;
-  double* Tolerance = nullptr;
-  long long* MaximumSteps = nullptr;
-  /// What is integrated, for the help: "geodesic" or "ray".
-  std::string Curve = "geodesic";
-  bool SceneDefaults = false;
-  /// --tolerance's help where it means more than dp45's per-step error (conjugate).
-  std::string ToleranceHelp;
-};
-void AddIntegrationOptions(CLI::App* command, const IntegrationOptions& options);
-
-/**
- * Put the values of AddIntegrationOptions' flags into a filter's
- * integration settings: the integrator (checked: Failure naming
- * --integrator), step, length, tolerance (dp45's per-step error) and step
- * budget.
- */
-void ApplyIntegrationOptions(vtkRiemannIntegrationSettings* settings, const std::string& integrator,
-  double step, double length, double tolerance, long long maximumSteps);
 
 /// "euler", "rk4" or "dp45"; throws Failure (status 2) naming --integrator.
 IntegratorType ParseIntegratorOption(const std::string& name);

@@ -3,11 +3,13 @@
 // .csv (direction_id,x,y,z,ArcLength,Multiplicity,ConjugateIndex,Sheet); with
 // --surface, the caustic as sheets over the direction grid (.vtp).
 #include "CliUtilities.h"
+#include "DeclaredOptions.h"
+#include "IntegrationOptions.h"
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
-#include "GeodesicTrace.h" // For the integration defaults
 #include "ProgressBar.h"
+#include "vtkRiemannConjugateLocusSettingAccess.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -15,7 +17,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannConjugateLocus.h"
-#include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
@@ -40,27 +41,18 @@ namespace
 struct ConjugateArguments
 {
   std::string Metric;
-  std::string Seed = "0,0,0";
-  long long Directions = 100;
-  std::string ConeAxis = "0,0,1";
-  double ConeAngle = 180.0;
-  // The integration defaults are the schema's for curves (IntegrationSchema.h),
-  // but the integrator: the search for conjugate points needs dp45's error control.
-  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
-  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
-  double MaximumStep = 0.1;
-  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
-  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
-  long long Count = 1;
-  std::string Integrator = "dp45";
+  /// The filter's settings (vtkRiemannConjugateLocus.settings.json): its
+  /// Tolerance is --tolerance (the integration error follows it).
+  std::unique_ptr<DeclaredOptions> Settings;
+  /// The integration options but MaximumError, with the filter's own
+  /// defaults (dp45: the search for conjugate points needs its error control).
+  std::unique_ptr<DeclaredOptions> Integration;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;
   std::string Surface;
 };
 
-/// The filters' own limit (more would be refused there, after the metric loaded).
-constexpr long long MaximumDirections = vtkRiemannDirectionGrid::MaximumNumberOfDirections;
 /// Sheets the summary tells apart (sheet indices are not bounded by --count:
 /// a point of multiplicity 2 starts two).
 constexpr long long MaximumCountedSheets = 1024;
@@ -134,14 +126,17 @@ void RunConjugate(const ConjugateArguments& args)
   {
     throw Failure("-o " + args.Output + ": the output must end in .vtp, .pvtp or .csv", 2);
   }
+  const double length = args.Integration->Number("MaximumPropagation");
+  const double step = args.Integration->Number("InitialIntegrationStep");
+  const double largestStep = args.Integration->Number("MaximumIntegrationStep");
   // Each number was checked while parsing; here, what depends on two of them.
-  if (args.Step > args.Length)
+  if (step > length)
   {
-    throw Failure("--step " + FormatNumber(args.Step) + ": must be at most --length " +
-        FormatNumber(args.Length),
+    throw Failure("--step " + FormatNumber(step) + ": must be at most --length " +
+        FormatNumber(length),
       2);
   }
-  if (args.Length / args.Step > 1e8)
+  if (length / step > 1e8)
   {
     throw Failure("--step: more than 1e8 steps per geodesic (--length / --step)", 2);
   }
@@ -154,14 +149,13 @@ void RunConjugate(const ConjugateArguments& args)
   const OutputLayout surfaceLayout = args.Surface.empty()
     ? OutputLayout::SingleFile
     : ChooseOutputLayout("--surface", args.Surface, args.Gather, "pvtp");
-  double seed[3], axis[3];
-  ParseVector3(args.Seed, "--seed", seed);
-  ParseVector3(args.ConeAxis, "--cone-axis", axis);
-  const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
-  if (integrator == IntegratorType::DormandPrince45 && args.MaximumStep < args.Step)
+  const nlohmann::json settings = args.Settings->Given();
+  const long long directions = args.Settings->Value("NumberOfDirections").get<long long>();
+  const IntegratorType integrator = ParseIntegratorOption(args.Integration->Text("IntegratorType"));
+  if (integrator == IntegratorType::DormandPrince45 && largestStep < step)
   {
-    throw Failure("--max-step " + FormatNumber(args.MaximumStep) + ": must be at least --step " +
-        FormatNumber(args.Step) + " (the initial step of dp45)",
+    throw Failure("--max-step " + FormatNumber(largestStep) + ": must be at least --step " +
+        FormatNumber(step) + " (the initial step of dp45)",
       2);
   }
 
@@ -170,17 +164,8 @@ void RunConjugate(const ConjugateArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(locus);
   locus->SetMetric(metric);
-  locus->SetObserver(seed);
-  locus->SetNumberOfDirections(static_cast<int>(args.Directions));
-  locus->SetConeAxis(axis);
-  locus->SetConeAngle(args.ConeAngle);
-  locus->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
-  locus->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
-  locus->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
-  locus->GetIntegrationSettings()->SetMaximumIntegrationStep(args.MaximumStep);
-  locus->SetTolerance(args.Tolerance);
-  locus->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
-  locus->SetMaximumNumberOfConjugatePoints(static_cast<int>(args.Count));
+  riemann::settings::ApplySettings(locus, settings);
+  ApplyIntegrationOptions(*args.Integration, locus->GetIntegrationSettings());
   vtkNew<ProgressBar> progress;
   progress->Observe(locus, "riemann conjugate", ProgressBar::StderrIsTerminal());
   // This rank's share of the directions (all of them in a single process).
@@ -217,9 +202,9 @@ void RunConjugate(const ConjugateArguments& args)
   {
     return;
   }
-  std::cerr << "riemann conjugate: " << args.Directions << " direction(s), " << found[0]
+  std::cerr << "riemann conjugate: " << directions << " direction(s), " << found[0]
             << " conjugate point(s) found on " << found[1] << " of them up to arc length "
-            << args.Length << " -> " << args.Output;
+            << length << " -> " << args.Output;
   if (!args.Surface.empty())
   {
     std::cerr << ", caustic " << DescribeSheets(sheets) << " -> " << args.Surface;
@@ -240,33 +225,11 @@ void RegisterConjugateCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)")->check(Point3());
-  command
-    ->add_option("--directions,-n", args->Directions,
-      "Number of directions, a Fibonacci lattice on the sphere or cone (default 100)")
-    ->check(WholeNumber(1, MaximumDirections));
-  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)")
-    ->check(Direction3());
-  command
-    ->add_option("--cone-angle", args->ConeAngle,
-      "Half-angle of the cone of directions in degrees (default 180: every direction)")
-    ->check(FiniteNumber(0.0, 180.0));
-  command
-    ->add_option("--max-step", args->MaximumStep,
-      "Largest step of dp45 in arc length (default 0.1). Conjugate points are counted, not "
-      "searched for between steps, so no step can jump over one whatever its length")
-    ->check(PositiveNumber());
-  IntegrationOptions integration{ &args->Integrator, &args->Step, &args->Length, &args->Tolerance,
-    &args->MaximumSteps };
-  integration.ToleranceHelp =
-    "Accuracy of the conjugate points in arc length, and their resolution: two closer than this "
-    "are one point of multiplicity 2; dp45 integrates the Jacobi fields to tolerance / 100 (with "
-    "euler and rk4 the step decides the accuracy)";
-  AddIntegrationOptions(command, integration);
-  command
-    ->add_option("--count,-k", args->Count,
-      "Conjugate points kept per direction, first ones first (default 1)")
-    ->check(WholeNumber(1, 1000000));
+  args->Settings = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannConjugateLocus::Settings);
+  // MaximumError only caps the integration error, which follows --tolerance.
+  args->Integration = AddIntegrationOptions(
+    command, vtkNew<vtkRiemannConjugateLocus>()->GetIntegrationSettings(), "MaximumError");
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command

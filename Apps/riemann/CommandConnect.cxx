@@ -4,6 +4,7 @@
 // with one seed_id per geodesic); one line per geodesic on stdout (length,
 // Morse index, whether q is conjugate, whether it is the shortest).
 #include "CliUtilities.h"
+#include "IntegrationOptions.h"
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
@@ -37,15 +38,12 @@ struct ConnectArguments
   std::string From;
   std::string To;
   long long Directions = 2000;
-  // The integration defaults are the schema's for curves (IntegrationSchema.h)
-  // but the integrator and --tolerance: Newton needs dp45's error control,
-  // and --tolerance is what |end - q| must reach (dp45 then integrates to
-  // tolerance / 1000), as conjugate's is the accuracy of its answer.
-  std::string Integrator = "dp45";
-  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
-  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
+  /// The integration options but MaximumError, with the connector's defaults
+  /// (Newton needs dp45's error control). --tolerance is the connector's:
+  /// what |end - q| must reach (dp45 then integrates to tolerance / 1000),
+  /// as conjugate's is the accuracy of its answer.
+  std::unique_ptr<DeclaredOptions> Integration;
   double Tolerance = 1e-9; // vtkRiemannGeodesicConnector's default
-  long long MaximumSteps = 10000000;
   std::string Compress = "lz4";
   std::string Output;
 };
@@ -102,10 +100,12 @@ void RunConnect(const ConnectArguments& args)
         FormatNumber(vtkRiemannGeodesicConnector::MaximumTolerance) + " (what |end - q| reaches)",
       2);
   }
-  if (args.Step > args.Length)
+  const double length = args.Integration->Number("MaximumPropagation");
+  const double step = args.Integration->Number("InitialIntegrationStep");
+  if (step > length)
   {
-    throw Failure("--step " + FormatNumber(args.Step) + ": must be at most --length " +
-        FormatNumber(args.Length),
+    throw Failure("--step " + FormatNumber(step) + ": must be at most --length " +
+        FormatNumber(length),
       2);
   }
   double from[3], to[3];
@@ -115,7 +115,6 @@ void RunConnect(const ConnectArguments& args)
   {
     throw Failure("--from and --to are the same point: give two points to join", 2);
   }
-  const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannGeodesicConnector> connector;
@@ -126,11 +125,7 @@ void RunConnect(const ConnectArguments& args)
   connector->SetEndPosition(to);
   connector->SetTolerance(args.Tolerance);
   connector->SetNumberOfDirections(static_cast<int>(args.Directions));
-  vtkRiemannIntegrationSettings* settings = connector->GetIntegrationSettings();
-  settings->SetIntegratorType(static_cast<int>(integrator));
-  settings->SetInitialIntegrationStep(args.Step);
-  settings->SetMaximumPropagation(args.Length);
-  settings->SetMaximumNumberOfSteps(args.MaximumSteps);
+  ApplyIntegrationOptions(*args.Integration, connector->GetIntegrationSettings());
   vtkNew<ProgressBar> progress;
   progress->Observe(connector, "riemann connect", ProgressBar::StderrIsTerminal());
   connector->Update();
@@ -145,7 +140,7 @@ void RunConnect(const ConnectArguments& args)
     });
   PrintGeodesics(geodesics);
   std::cerr << "riemann connect: " << connector->GetNumberOfGeodesics() << " geodesic(s) from "
-            << args.From << " to " << args.To << " up to arc length " << FormatNumber(args.Length)
+            << args.From << " to " << args.To << " up to arc length " << FormatNumber(length)
             << " (" << args.Directions << " shooting directions) -> " << args.Output << "\n";
 }
 } // namespace
@@ -167,12 +162,11 @@ void RegisterConnectCommand(CLI::App& app)
     ->add_option("--directions,-n", args->Directions,
       "Directions of the shooting grid (a Fibonacci lattice, g-uniform at p; default 2000)")
     ->check(WholeNumber(1, 1000000));
-  IntegrationOptions integration{ &args->Integrator, &args->Step, &args->Length, &args->Tolerance,
-    &args->MaximumSteps };
-  integration.ToleranceHelp =
+  args->Integration = AddIntegrationOptions(
+    command, vtkNew<vtkRiemannGeodesicConnector>()->GetIntegrationSettings(), "MaximumError");
+  command->add_option("--tolerance", args->Tolerance,
     "What |end - q| each geodesic reaches (coordinate distance, from 1e-13 to 0.01); dp45 "
-    "integrates to tolerance / 1000";
-  AddIntegrationOptions(command, integration);
+    "integrates to tolerance / 1000 (default 1e-09)");
   AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->callback([args]() { RunConnect(*args); });

@@ -6,6 +6,7 @@
 // streamline-count connectome). Matrices as CSV, regions in ascending label
 // order, named on a leading "#" line, as numpy.loadtxt and MRtrix read them.
 #include "CliUtilities.h"
+#include "IntegrationOptions.h"
 #include "Commands.h"
 #include "Distributed.h"
 #include "GeodesicTrace.h"
@@ -53,11 +54,8 @@ struct ConnectivityArguments
   std::string TractCounts;
   long long SeedsPerVoxel = 1;
   double SeedRadius = 2.5;
-  std::string Integrator = IntegratorName(GeodesicOptions().Integrator);
-  double Step = CurveDefault(IntegrationSettingId::Step);
-  double Length = CurveDefault(IntegrationSettingId::Length);
-  double Tolerance = CurveDefault(IntegrationSettingId::Tolerance);
-  long long MaximumSteps = GeodesicOptions().MaximumSteps;
+  /// The integration options, with the tracer's defaults (IntegrationOptions.h).
+  std::unique_ptr<DeclaredOptions> Integration;
   TractArguments Tracts;
 };
 
@@ -263,8 +261,7 @@ std::vector<std::vector<long long>> TractCounts(
   tracer->SetInputData(mask);
   tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
   tracer->SetIntegrationDirectionToBoth();
-  ApplyIntegrationOptions(tracer->GetIntegrationSettings(), args.Integrator, args.Step, args.Length,
-    args.Tolerance, args.MaximumSteps);
+  ApplyIntegrationOptions(*args.Integration, tracer->GetIntegrationSettings());
   ApplyTractOptions(args.Tracts, tracer);
   vtkNew<ProgressBar> progress;
   progress->Observe(tracer, "riemann connectivity: tracts", ProgressBar::StderrIsTerminal());
@@ -364,8 +361,8 @@ void RegisterConnectivityCommand(CLI::App& app)
     ->add_option("--seeds-per-voxel", args->SeedsPerVoxel,
       "Seeds in each labelled voxel for --tract-counts (default 1)")
     ->check(WholeNumber(1, 1000));
-  AddIntegrationOptions(command,
-    { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
+  args->Integration =
+    AddIntegrationOptions(command, vtkNew<vtkRiemannGeodesicTracer>()->GetIntegrationSettings());
   AddTractOptions(command, args->Tracts);
   command
     ->add_option("--output,-o", args->Output,

@@ -3,9 +3,11 @@
 // Jacobian) and, with --radii and --wavefronts, the geodesic spheres (.vtp).
 #include "CliUtilities.h"
 #include "Commands.h"
+#include "DeclaredOptions.h"
+#include "IntegrationOptions.h"
 #include "Distributed.h"
-#include "GeodesicTrace.h" // For the integration defaults
 #include "ProgressBar.h"
+#include "vtkRiemannExponentialMapSettingAccess.h"
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -30,55 +32,15 @@ namespace
 struct ExpmapArguments
 {
   std::string Metric;
-  std::string Seed = "0,0,0";
-  long long Directions = 400;
-  std::string ConeAxis = "0,0,1";
-  double ConeAngle = 180.0;
-  // The integration defaults are the schema's for curves (IntegrationSchema.h).
-  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
-  std::string Radii;
-  std::string Integrator = riemann::IntegratorName(riemann::GeodesicOptions().Integrator);
-  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
-  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
-  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
+  /// The filter's settings (vtkRiemannExponentialMap.settings.json).
+  std::unique_ptr<DeclaredOptions> Settings;
+  /// The integration options, with the filter's own defaults (a bundle of moderate length).
+  std::unique_ptr<DeclaredOptions> Integration;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;
   std::string Wavefronts;
 };
-
-constexpr long long MaximumDirections = 1000000;
-
-/// What is wrong with "1,2.5,3" as positive finite numbers, or "" (then `radii` holds them).
-std::string CheckRadii(const std::string& text, std::vector<double>& radii)
-{
-  radii.clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-  {
-    std::size_t used = 0;
-    double value = 0.0;
-    try
-    {
-      value = std::stod(item, &used);
-    }
-    catch (const std::exception&)
-    {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() || !std::isfinite(value) || value <= 0.0)
-    {
-      return "\"" + item + "\" is not a positive number (write R1,R2,...)";
-    }
-    radii.push_back(value);
-  }
-  if (radii.empty() || text.back() == ',')
-  {
-    return "expected R1,R2,... (finite positive arc lengths), got \"" + text + "\"";
-  }
-  return {};
-}
 
 void RunExpmap(const ExpmapArguments& args)
 {
@@ -98,43 +60,38 @@ void RunExpmap(const ExpmapArguments& args)
   const OutputLayout wavefrontsLayout = args.Wavefronts.empty()
     ? OutputLayout::SingleFile
     : ChooseOutputLayout("--wavefronts", args.Wavefronts, args.Gather, "pvtp");
-  if (!args.Wavefronts.empty() && args.Radii.empty())
+  const nlohmann::json settings = args.Settings->Given();
+  const double length = args.Integration->Number("MaximumPropagation");
+  const double step = args.Integration->Number("InitialIntegrationStep");
+  const std::vector<double> radii = args.Settings->Value("Radii").get<std::vector<double>>();
+  const long long directions = args.Settings->Value("NumberOfDirections").get<long long>();
+  if (!args.Wavefronts.empty() && radii.empty())
   {
     throw Failure("--wavefronts needs --radii R1,R2,...", 2);
   }
-  // Each number was checked while parsing; here, what depends on two of them.
-  if (args.Step > args.Length)
+  // Each setting was checked while parsing; here, what depends on two of them.
+  if (step > length)
   {
-    throw Failure("--step " + FormatNumber(args.Step) + ": must be at most --length " +
-        FormatNumber(args.Length),
+    throw Failure("--step " + FormatNumber(step) + ": must be at most --length " +
+        FormatNumber(length),
       2);
   }
-  if (args.Length / args.Step * static_cast<double>(args.Directions) >
+  if (length / step * static_cast<double>(directions) >
     vtkRiemannExponentialMap::MaximumNumberOfSamples)
   {
     std::ostringstream message;
     message << "--directions x --length / --step = "
-            << args.Length / args.Step * static_cast<double>(args.Directions)
+            << length / step * static_cast<double>(directions)
             << " samples, more than " << vtkRiemannExponentialMap::MaximumNumberOfSamples
             << " (about 8 GiB of memory): use fewer directions or a longer step";
     throw Failure(message.str(), 2);
   }
-  double seed[3], axis[3];
-  ParseVector3(args.Seed, "--seed", seed);
-  ParseVector3(args.ConeAxis, "--cone-axis", axis);
-  const IntegratorType integrator = ParseIntegratorOption(args.Integrator);
-  std::vector<double> radii; // checked while parsing; parsed here
-  const std::string badRadii = args.Radii.empty() ? std::string() : CheckRadii(args.Radii, radii);
-  if (!badRadii.empty())
-  {
-    throw Failure("--radii: " + badRadii, 2);
-  }
   for (double r : radii)
   {
-    if (r > args.Length)
+    if (r > length)
     {
       std::ostringstream message;
-      message << "--radii: " << r << " is beyond --length " << args.Length;
+      message << "--radii: " << r << " is beyond --length " << length;
       throw Failure(message.str(), 2);
     }
   }
@@ -144,19 +101,8 @@ void RunExpmap(const ExpmapArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(expmap);
   expmap->SetMetric(metric);
-  expmap->SetObserver(seed);
-  expmap->SetNumberOfDirections(static_cast<int>(args.Directions));
-  expmap->SetConeAxis(axis);
-  expmap->SetConeAngle(args.ConeAngle);
-  expmap->GetIntegrationSettings()->SetMaximumPropagation(args.Length);
-  expmap->GetIntegrationSettings()->SetIntegratorType(static_cast<int>(integrator));
-  expmap->GetIntegrationSettings()->SetInitialIntegrationStep(args.Step);
-  expmap->GetIntegrationSettings()->SetMaximumError(args.Tolerance);
-  expmap->GetIntegrationSettings()->SetMaximumNumberOfSteps(args.MaximumSteps);
-  for (double r : radii)
-  {
-    expmap->AddRadius(r);
-  }
+  riemann::settings::ApplySettings(expmap, settings);
+  ApplyIntegrationOptions(*args.Integration, expmap->GetIntegrationSettings());
   vtkNew<ProgressBar> progress;
   progress->Observe(expmap, "riemann expmap", ProgressBar::StderrIsTerminal());
   // This rank's share of the directions (all of them in a single process).
@@ -179,7 +125,7 @@ void RunExpmap(const ExpmapArguments& args)
   {
     return;
   }
-  std::cerr << "riemann expmap: " << counts[0] << " geodesic(s) up to arc length " << args.Length
+  std::cerr << "riemann expmap: " << counts[0] << " geodesic(s) up to arc length " << length
             << " -> " << args.Output;
   if (!args.Wavefronts.empty())
   {
@@ -203,27 +149,10 @@ void RegisterExpmapCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Observer X,Y,Z (default 0,0,0)")->check(Point3());
-  command
-    ->add_option("--directions,-n", args->Directions,
-      "Number of directions, a Fibonacci lattice on the sphere or cone (default 400)")
-    ->check(WholeNumber(1, MaximumDirections));
-  command->add_option("--cone-axis", args->ConeAxis, "Axis X,Y,Z of the cone (default 0,0,1)")
-    ->check(Direction3());
-  command
-    ->add_option("--cone-angle", args->ConeAngle,
-      "Half-angle of the cone of directions in degrees (default 180: every direction)")
-    ->check(FiniteNumber(0.0, 180.0));
-  command->add_option("--radii", args->Radii, "Radii R1,R2,... of the wavefronts")
-    ->check(Checked(
-      [](const std::string& text)
-      {
-        std::vector<double> radii;
-        return CheckRadii(text, radii);
-      },
-      "R1,R2,..."));
-  AddIntegrationOptions(command,
-    { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
+  args->Settings = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannExponentialMap::Settings);
+  args->Integration =
+    AddIntegrationOptions(command, vtkNew<vtkRiemannExponentialMap>()->GetIntegrationSettings());
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command

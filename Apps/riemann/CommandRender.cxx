@@ -7,6 +7,7 @@
 // with --frames, an animation in the metric's time t; with --reference, an
 // image regression test in one command (as F3D's CLI).
 #include "CliUtilities.h"
+#include "IntegrationOptions.h"
 #include "Commands.h"
 #include "Distributed.h"
 #include "FilmFrames.h"
@@ -89,11 +90,8 @@ struct RenderArguments
   /// perspective or equirectangular; "" for the scene's.
   std::string Projection;
   bool Equirectangular = false;
-  std::string Integrator;
-  double Step = 0.0;
-  long long MaximumSteps = 0;
-  double MaximumLength = 0.0;
-  double Tolerance = 0.0;
+  /// The integration options; what is not given is the scene's.
+  std::unique_ptr<DeclaredOptions> Integration;
   int Frames = 1;
   /// A camera path file (CameraPathFile.h): the observer's flight over the frames.
   std::string CameraPath;
@@ -522,17 +520,14 @@ riemann::Projection ChosenProjection(const RenderArguments& args, const riemann:
 /// The scene's integration, with what the options give in its place.
 void SetUpRays(const RenderArguments& args, const riemann::Scene& scene, RaySetup& rays)
 {
-  const bool overrides = !args.Integrator.empty() || args.Step > 0 || args.MaximumSteps > 0 ||
-    args.MaximumLength > 0 || args.Tolerance > 0;
+  const bool overrides = !args.Integration->Given().empty();
   vtkRiemannIntegrationSettings* settings = rays.Settings;
-  settings->SetIntegratorType(static_cast<int>(
-    args.Integrator.empty() ? scene.Rays.Integrator : ParseIntegratorOption(args.Integrator)));
-  settings->SetInitialIntegrationStep(args.Step > 0 ? args.Step : scene.Rays.Step);
-  settings->SetMaximumNumberOfSteps(
-    args.MaximumSteps > 0 ? static_cast<vtkIdType>(args.MaximumSteps) : scene.Rays.MaximumSteps);
-  settings->SetMaximumPropagation(
-    args.MaximumLength > 0 ? args.MaximumLength : scene.Rays.MaximumLength);
-  settings->SetMaximumError(args.Tolerance > 0 ? args.Tolerance : scene.Rays.Tolerance);
+  settings->SetIntegratorType(static_cast<int>(scene.Rays.Integrator));
+  settings->SetInitialIntegrationStep(scene.Rays.Step);
+  settings->SetMaximumNumberOfSteps(scene.Rays.MaximumSteps);
+  settings->SetMaximumPropagation(scene.Rays.MaximumLength);
+  settings->SetMaximumError(scene.Rays.Tolerance);
+  ApplyIntegrationOptions(*args.Integration, settings);
   const bool projectionGiven = !args.Projection.empty() || args.Equirectangular;
   rays.UseSceneSettings = !overrides && !projectionGiven;
   rays.Projection = ChosenProjection(args, scene) == riemann::Projection::Equirectangular
@@ -884,11 +879,10 @@ void RegisterRenderCommand(CLI::App& app)
   command->add_flag("--progress", args->Progress, "Show a progress bar on stderr (--backend cpu)");
   command->add_flag("--quiet", args->Quiet, "Never show a progress bar");
   AddCameraOptions(command, picture);
-  IntegrationOptions integration{ &args->Integrator, &args->Step, &args->MaximumLength,
-    &args->Tolerance, &args->MaximumSteps };
-  integration.Curve = "ray";
-  integration.SceneDefaults = true;
-  AddIntegrationOptions(command, integration);
+  // The rays' adaptive steps are bounded relative to the step (RiemannScene.h):
+  // no options of their own.
+  args->Integration = AddIntegrationOptions(command, vtkNew<vtkRiemannIntegrationSettings>(),
+    "MinimumIntegrationStep,MaximumIntegrationStep", "the scene's");
   command
     ->add_option("--frames", args->Frames,
       "Animate over N frames: the metric's time t from 0 to 1 (or the camera path's times) and "

@@ -10,6 +10,7 @@
 #include "GeodesicCsv.h"
 #include "GeodesicTrace.h"
 #include "InputFiles.h"
+#include "IntegrationOptions.h"
 #include "RiemannScalarImages.h"
 #include "TractOptions.h"
 
@@ -59,13 +60,9 @@ struct TraceArguments
   long long RandomSeed = 1;
   /// Whether --propagation was given (with --seed-mask its default is "both").
   bool PropagationGiven = false;
-  // The integration defaults are the schema's for curves (IntegrationSchema.h).
-  double Length = riemann::CurveDefault(riemann::IntegrationSettingId::Length);
-  std::string Integrator = riemann::IntegratorName(riemann::GeodesicOptions().Integrator);
+  /// The integration options, with the tracer's defaults (IntegrationOptions.h).
+  std::unique_ptr<DeclaredOptions> Integration;
   std::string Propagation = "forward";
-  double Step = riemann::CurveDefault(riemann::IntegrationSettingId::Step);
-  double Tolerance = riemann::CurveDefault(riemann::IntegrationSettingId::Tolerance);
-  long long MaximumSteps = riemann::GeodesicOptions().MaximumSteps;
   bool TransverseJacobian = false;
   TractArguments Tracts;
   std::string Compress = "lz4";
@@ -163,8 +160,10 @@ constexpr double MaximumOutputPoints = 2e8;
  */
 void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds)
 {
+  const DeclaredOptions& integration = *args.Integration;
   const double stepsPerGeodesic =
-    std::min(static_cast<double>(args.MaximumSteps), std::ceil(args.Length / args.Step));
+    std::min(static_cast<double>(integration.Integer("MaximumNumberOfSteps")),
+      std::ceil(integration.Number("MaximumPropagation") / integration.Number("InitialIntegrationStep")));
   const double ways = args.Propagation == "both" ? 2.0 : 1.0;
   const double points = static_cast<double>(numberOfSeeds) * ways * (stepsPerGeodesic + 1.0);
   if (points > MaximumOutputPoints)
@@ -209,8 +208,7 @@ void RunTrace(const TraceArguments& args)
     !args.SeedMask.empty() && args.SeedDirection == "e1" && !args.PropagationGiven ? "both"
                                                                                    : args.Propagation;
   tracer->SetIntegrationDirection(propagations.at(propagation));
-  ApplyIntegrationOptions(tracer->GetIntegrationSettings(), args.Integrator, args.Step, args.Length,
-    args.Tolerance, args.MaximumSteps);
+  ApplyIntegrationOptions(*args.Integration, tracer->GetIntegrationSettings());
   tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   ApplyTractOptions(args.Tracts, tracer);
   vtkIdType numberOfSeeds = 1;
@@ -373,8 +371,8 @@ void RegisterTraceCommand(CLI::App& app)
     ->add_option("--random-seed", args->RandomSeed,
       "Seed of the random numbers of --seeds-per-voxel and --seed-direction random (default 1)")
     ->check(WholeNumber(0, 4294967295LL));
-  AddIntegrationOptions(command,
-    { &args->Integrator, &args->Step, &args->Length, &args->Tolerance, &args->MaximumSteps });
+  args->Integration =
+    AddIntegrationOptions(command, vtkNew<vtkRiemannGeodesicTracer>()->GetIntegrationSettings());
   CLI::Option* propagation =
     command->add_option("--propagation", args->Propagation,
              "forward (default; both for --seed-mask with e1), backward or both")

@@ -1,7 +1,7 @@
 #include "vtkRiemannIntegrationSettings.h"
 
 #include "GeodesicTrace.h"
-#include "IntegrationSchema.h"
+#include "vtkRiemannIntegrationSettingsSettingAccess.h"
 #include "RungeKutta.h"
 
 #include "vtkObjectFactory.h"
@@ -13,14 +13,14 @@ vtkStandardNewMacro(vtkRiemannIntegrationSettings);
 
 vtkRiemannIntegrationSettings::vtkRiemannIntegrationSettings()
 {
-  const riemann::GeodesicOptions defaults;
-  this->IntegratorType = static_cast<int>(defaults.Integrator);
-  this->InitialIntegrationStep = defaults.Step;
-  this->MinimumIntegrationStep = defaults.MinimumStep;
-  this->MaximumIntegrationStep = defaults.MaximumStep;
-  this->MaximumError = defaults.Tolerance;
-  this->MaximumPropagation = defaults.MaximumLength;
-  this->MaximumNumberOfSteps = static_cast<vtkIdType>(defaults.MaximumSteps);
+  namespace declared = riemann::declared::vtkRiemannIntegrationSettings;
+  this->IntegratorType = declared::Default::IntegratorType;
+  this->InitialIntegrationStep = declared::Default::InitialIntegrationStep;
+  this->MinimumIntegrationStep = declared::Default::MinimumIntegrationStep;
+  this->MaximumIntegrationStep = declared::Default::MaximumIntegrationStep;
+  this->MaximumError = declared::Default::MaximumError;
+  this->MaximumPropagation = declared::Default::MaximumPropagation;
+  this->MaximumNumberOfSteps = static_cast<vtkIdType>(declared::Default::MaximumNumberOfSteps);
 }
 
 bool vtkRiemannIntegrationSettings::SetIntegratorTypeFromName(const char* name)
@@ -41,22 +41,13 @@ const char* vtkRiemannIntegrationSettings::GetIntegratorTypeAsString() const
 
 std::string vtkRiemannIntegrationSettings::CheckSettings() const
 {
-  // Each property in the range of the integration schema (IntegrationSchema.h),
-  // in the schema's order, named as the property.
-  using riemann::IntegrationSettingId;
-  const std::pair<IntegrationSettingId, double> values[] = {
-    { IntegrationSettingId::Integrator, static_cast<double>(this->IntegratorType) },
-    { IntegrationSettingId::Step, this->InitialIntegrationStep },
-    { IntegrationSettingId::MinimumStep, this->MinimumIntegrationStep },
-    { IntegrationSettingId::MaximumStep, this->MaximumIntegrationStep },
-    { IntegrationSettingId::Tolerance, this->MaximumError },
-    { IntegrationSettingId::Length, this->MaximumPropagation },
-    { IntegrationSettingId::MaximumSteps, static_cast<double>(this->MaximumNumberOfSteps) },
-  };
-  for (const auto& value : values)
+  // Each property in its declared range, in the declaration's order, named as the property.
+  const nlohmann::json values =
+    riemann::settings::SettingValues(const_cast<vtkRiemannIntegrationSettings*>(this));
+  for (const riemann::SettingDeclaration& setting :
+    riemann::declared::vtkRiemannIntegrationSettings::Settings)
   {
-    const riemann::IntegrationSetting& setting = riemann::IntegrationSettingOf(value.first);
-    std::string error = riemann::CheckIntegrationValue(setting, value.second, setting.Property);
+    std::string error = riemann::CheckSettingValue(setting, values.at(setting.Name), setting.Name);
     if (!error.empty())
     {
       return error;
@@ -70,58 +61,6 @@ std::string vtkRiemannIntegrationSettings::CheckSettings() const
     return message.str();
   }
   return std::string();
-}
-
-double vtkRiemannIntegrationSettings::GetValue(riemann::IntegrationSettingId id)
-{
-  using riemann::IntegrationSettingId;
-  switch (id)
-  {
-    case IntegrationSettingId::Integrator:
-      return this->IntegratorType;
-    case IntegrationSettingId::Step:
-      return this->InitialIntegrationStep;
-    case IntegrationSettingId::MinimumStep:
-      return this->MinimumIntegrationStep;
-    case IntegrationSettingId::MaximumStep:
-      return this->MaximumIntegrationStep;
-    case IntegrationSettingId::Tolerance:
-      return this->MaximumError;
-    case IntegrationSettingId::Length:
-      return this->MaximumPropagation;
-    case IntegrationSettingId::MaximumSteps:
-      return static_cast<double>(this->MaximumNumberOfSteps);
-  }
-  return 0.0;
-}
-
-void vtkRiemannIntegrationSettings::SetValue(riemann::IntegrationSettingId id, double value)
-{
-  using riemann::IntegrationSettingId;
-  switch (id)
-  {
-    case IntegrationSettingId::Integrator:
-      this->SetIntegratorType(static_cast<int>(value));
-      break;
-    case IntegrationSettingId::Step:
-      this->SetInitialIntegrationStep(value);
-      break;
-    case IntegrationSettingId::MinimumStep:
-      this->SetMinimumIntegrationStep(value);
-      break;
-    case IntegrationSettingId::MaximumStep:
-      this->SetMaximumIntegrationStep(value);
-      break;
-    case IntegrationSettingId::Tolerance:
-      this->SetMaximumError(value);
-      break;
-    case IntegrationSettingId::Length:
-      this->SetMaximumPropagation(value);
-      break;
-    case IntegrationSettingId::MaximumSteps:
-      this->SetMaximumNumberOfSteps(static_cast<vtkIdType>(value));
-      break;
-  }
 }
 
 void vtkRiemannIntegrationSettings::DeepCopy(vtkRiemannIntegrationSettings* other)

@@ -25,11 +25,12 @@
  * - MaximumNumberOfSteps: the steps after which it stops.
  *
  * The defaults, ranges, units and help of these properties, and their names
- * in the command line, the desktop app and scene files, are one table:
- * riemann::IntegrationSchema (Common/Metric/IntegrationSchema.h). Values
- * are stored as given; CheckSettings() names the first one outside its
- * range there (or a minimum step above the maximum), and every consumer
- * refuses to run with it (vtkErrorMacro, empty output).
+ * in the command line, the desktop app, scene files and ParaView, are
+ * declared once: vtkRiemannIntegrationSettings.settings.json (with the
+ * "Rays" preset, the defaults of a picture's rays: vtkRiemannSetRayDefaults).
+ * Values are stored as given; CheckSettings() names the first one outside
+ * its declared range (or a minimum step above the maximum), and every
+ * consumer refuses to run with it (vtkErrorMacro, empty output).
  *
  * @code{.py}
  * tracer = riemann.vtkRiemannGeodesicTracer()
@@ -50,7 +51,6 @@
 namespace riemann
 {
 struct GeodesicOptions;
-enum class IntegrationSettingId;
 }
 
 class RIEMANNCOMMONCORE_EXPORT vtkRiemannIntegrationSettings : public vtkObject
@@ -132,17 +132,6 @@ public:
   /// The settings as the core's geodesic options (the other options keep their values).
   VTK_WRAPEXCLUDE void ApplyTo(riemann::GeodesicOptions& options) const;
 
-  ///@{
-  /**
-   * A property by its id in the integration schema (IntegrationSchema.h),
-   * the integrator as its number: what lets the app's items and projects,
-   * and the Python they export, go through the schema's table instead of
-   * naming each property.
-   */
-  VTK_WRAPEXCLUDE double GetValue(riemann::IntegrationSettingId id);
-  VTK_WRAPEXCLUDE void SetValue(riemann::IntegrationSettingId id, double value);
-  ///@}
-
   /**
    * For the consumers' SetIntegrationSettings(): `slot` (owned by `owner`,
    * never null) becomes `settings`, registered by `owner`; null or the same
@@ -152,9 +141,9 @@ public:
     vtkRiemannIntegrationSettings* settings);
 
 protected:
-  /// The defaults are the core's (riemann::GeodesicOptions), the same as
-  /// `riemann trace`'s: one default per setting. Renderers then set the
-  /// rays' own (vtkRiemannSetRayDefaults, riemann::RaySettings).
+  /// The defaults are the declared ones, the same as `riemann trace`'s and
+  /// the core's (riemann::GeodesicOptions): one default per setting.
+  /// Renderers then set the rays' own (vtkRiemannSetRayDefaults).
   vtkRiemannIntegrationSettings();
   ~vtkRiemannIntegrationSettings() override = default;
 

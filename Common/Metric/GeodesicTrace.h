@@ -6,7 +6,6 @@
 #ifndef RiemannGeodesicTrace_h
 #define RiemannGeodesicTrace_h
 
-#include "IntegrationSchema.h"
 #include "Integrators.h"
 #include "RiemannCommonMetricExport.h"
 
@@ -57,22 +56,24 @@ public:
 /// A short English name for a TerminationReason ("out of length", ...).
 RIEMANNCOMMONMETRIC_EXPORT const char* TerminationReasonName(int reason);
 
-/// How a geodesic is integrated; the defaults are IntegrationSchema.h's for curves.
+/**
+ * How a geodesic is integrated. Plain defaults: the same as the declared
+ * ones of vtkRiemannIntegrationSettings (vtkRiemannIntegrationSettings.settings.json),
+ * which CommonMetric.GeodesicOptions.DefaultsAreTheDeclaredOnes checks.
+ */
 struct GeodesicOptions
 {
-  IntegratorType Integrator =
-    static_cast<IntegratorType>(static_cast<int>(CurveDefault(IntegrationSettingId::Integrator)));
+  IntegratorType Integrator = IntegratorType::RungeKutta4;
   /// Step in Riemannian arc length (the initial step for dp45).
-  double Step = CurveDefault(IntegrationSettingId::Step);
+  double Step = 0.01;
   /// Bounds of the adaptive step (dp45 only).
-  double MinimumStep = CurveDefault(IntegrationSettingId::MinimumStep);
-  double MaximumStep = CurveDefault(IntegrationSettingId::MaximumStep);
+  double MinimumStep = 1e-7;
+  double MaximumStep = 0.5;
   /// Mixed absolute/relative error tolerance per step (dp45 only).
-  double Tolerance = CurveDefault(IntegrationSettingId::Tolerance);
+  double Tolerance = 1e-8;
   /// Riemannian arc length at which the geodesic stops.
-  double MaximumLength = CurveDefault(IntegrationSettingId::Length);
-  long long MaximumSteps =
-    static_cast<long long>(CurveDefault(IntegrationSettingId::MaximumSteps));
+  double MaximumLength = 10.0;
+  long long MaximumSteps = 100000;
   /// Stop when leaving [x0,x1]x[y0,y1]x[z0,z1] (only if UseBounds).
   bool UseBounds = false;
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };

@@ -41,9 +41,9 @@ std::string DescribePictureValues(const PictureSetting& setting)
   switch (setting.Type)
   {
     case PictureSetting::Point:
-      return "three finite numbers X,Y,Z";
+      return "three finite comma-separated numbers X,Y,Z";
     case PictureSetting::Direction:
-      return "three finite numbers X,Y,Z, not all 0";
+      return "three finite comma-separated numbers X,Y,Z, not all 0";
     case PictureSetting::Choice:
     {
       const std::vector<std::string> names = PictureChoices(setting);

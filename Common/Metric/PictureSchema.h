@@ -3,7 +3,8 @@
  * @brief Every setting of the inside view's camera and of the picture made
  * from it, described once: its name on each surface, its type, its
  * default, its valid values, its unit and its help. The integration of the
- * rays has its own table (IntegrationSchema.h); together they are the
+ * rays is declared with vtkRiemannIntegrationSettings
+ * (vtkRiemannIntegrationSettings.settings.json); together they are the
  * settings of a picture.
  *
  * What is made from this table, and nowhere else decided:

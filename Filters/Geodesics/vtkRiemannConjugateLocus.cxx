@@ -1,4 +1,5 @@
 #include "vtkRiemannConjugateLocus.h"
+#include "RiemannConjugateLocusDeclaration.h"
 
 #include "CausticSheets.h"
 #include "ConjugatePoints.h"
@@ -32,6 +33,14 @@ vtkStandardNewMacro(vtkRiemannConjugateLocus);
 
 vtkRiemannConjugateLocus::vtkRiemannConjugateLocus()
 {
+  namespace declared = riemann::declared::vtkRiemannConjugateLocus;
+  std::copy(declared::Default::Observer, declared::Default::Observer + 3, this->Observer);
+  this->NumberOfDirections = static_cast<int>(declared::Default::NumberOfDirections);
+  std::copy(declared::Default::ConeAxis, declared::Default::ConeAxis + 3, this->ConeAxis);
+  this->ConeAngle = declared::Default::ConeAngle;
+  this->Tolerance = declared::Default::Tolerance;
+  this->MaximumNumberOfConjugatePoints =
+    static_cast<int>(declared::Default::MaximumNumberOfConjugatePoints);
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(2);
   // Defaults of this filter. DORMAND_PRINCE45: on the round sphere it finds

@@ -79,20 +79,21 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The point whose conjugate locus is sought. Default (0, 0, 0).
+  /// The point whose conjugate locus is sought. Defaults, ranges and help of
+  /// this class's settings: vtkRiemannConjugateLocus.settings.json.
   vtkSetVector3Macro(Observer, double);
   vtkGetVector3Macro(Observer, double);
   ///@}
 
   ///@{
-  /// Number of geodesics shot from the observer. Default 100.
+  /// Number of geodesics shot from the observer.
   vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfDirections, int);
   ///@}
 
   ///@{
   /// Restrict the directions to the cap of half-angle ConeAngle (degrees)
-  /// around ConeAxis. Defaults (0, 0, 1) and 180 (the whole sphere).
+  /// around ConeAxis (180: the whole sphere).
   vtkSetVector3Macro(ConeAxis, double);
   vtkGetVector3Macro(ConeAxis, double);
   vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
@@ -101,13 +102,13 @@ public:
 
   ///@{
   /// The arc-length accuracy of the conjugate points, and the resolution:
-  /// crossings closer than this are one point of multiplicity 2. Default 1e-8.
+  /// crossings closer than this are one point of multiplicity 2.
   vtkSetClampMacro(Tolerance, double, 1e-15, 1.0);
   vtkGetMacro(Tolerance, double);
   ///@}
 
   ///@{
-  /// Conjugate points kept per geodesic (<= 0: all). Default 1.
+  /// Conjugate points kept per geodesic (<= 0: all).
   vtkSetMacro(MaximumNumberOfConjugatePoints, int);
   vtkGetMacro(MaximumNumberOfConjugatePoints, int);
   ///@}
@@ -121,12 +122,13 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double Observer[3] = { 0.0, 0.0, 0.0 };
-  int NumberOfDirections = 100;
-  double ConeAxis[3] = { 0.0, 0.0, 1.0 };
-  double ConeAngle = 180.0;
-  double Tolerance = 1e-8;
-  int MaximumNumberOfConjugatePoints = 1;
+  // The declared defaults (vtkRiemannConjugateLocus.settings.json), set in the constructor.
+  double Observer[3];
+  int NumberOfDirections;
+  double ConeAxis[3];
+  double ConeAngle;
+  double Tolerance;
+  int MaximumNumberOfConjugatePoints;
 
 private:
   vtkRiemannConjugateLocus(const vtkRiemannConjugateLocus&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkRiemannDirectionGrid.h"
 
+#include "RiemannDirectionGridDeclaration.h"
 #include "vtkRiemannReportError.h"
 
 #include "DirectionLattice.h"
@@ -25,7 +26,18 @@
 
 vtkStandardNewMacro(vtkRiemannDirectionGrid);
 
+namespace
+{
+namespace declared = riemann::declared::vtkRiemannDirectionGrid;
+/// The most directions a grid has (the filters that shoot them say so by this limit).
+constexpr int MaximumNumberOfDirections = static_cast<int>(declared::Maximum::NumberOfDirections);
+}
+
 vtkRiemannDirectionGrid::vtkRiemannDirectionGrid()
+  : NumberOfDirections(static_cast<int>(declared::Default::NumberOfDirections))
+  , ConeAxis{ declared::Default::ConeAxis[0], declared::Default::ConeAxis[1],
+    declared::Default::ConeAxis[2] }
+  , ConeAngle(declared::Default::ConeAngle)
 {
   this->SetNumberOfInputPorts(0);
 }

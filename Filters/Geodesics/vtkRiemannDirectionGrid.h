@@ -41,19 +41,20 @@ public:
   vtkTypeMacro(vtkRiemannDirectionGrid, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The most directions a grid has (`riemann --directions` has the same
-  /// limit); more are refused with an error and an empty output.
-  static constexpr int MaximumNumberOfDirections = 10000000;
-
   ///@{
-  /// Number of directions. Default 100; at most MaximumNumberOfDirections.
+  /**
+   * Number of directions. The default and the most a grid has (more are
+   * refused with an error and an empty output) are declared in
+   * vtkRiemannDirectionGrid.settings.json (100 and 1e6), as every surface
+   * shows them.
+   */
   vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfDirections, int);
   ///@}
 
   ///@{
   /// Restrict the directions to the cap of half-angle ConeAngle (degrees)
-  /// around ConeAxis. Defaults (0, 0, 1) and 180 (the whole sphere).
+  /// around ConeAxis (180: the whole sphere).
   vtkSetVector3Macro(ConeAxis, double);
   vtkGetVector3Macro(ConeAxis, double);
   vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
@@ -62,7 +63,7 @@ public:
 
   /**
    * The grid's directions and triangles for these settings, or false with a
-   * message (a zero or non-finite axis, more than MaximumNumberOfDirections). `grid` receives the points (unit
+   * message (a zero or non-finite axis, more than the declared maximum of NumberOfDirections). `grid` receives the points (unit
    * directions), the triangles and DirectionId. Used by the filters that
    * shoot geodesics over the grid. With `owner` (the filter building it),
    * the triangulation reports progress as the owner's and stops when the
@@ -93,9 +94,10 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  int NumberOfDirections = 100;
-  double ConeAxis[3] = { 0.0, 0.0, 1.0 };
-  double ConeAngle = 180.0;
+  // The declared defaults (vtkRiemannDirectionGrid.settings.json), set in the constructor.
+  int NumberOfDirections;
+  double ConeAxis[3];
+  double ConeAngle;
 
   /// GetLastError(): set by vtkRiemannReportErrorMacro, cleared where RequestData starts.
   std::string LastError;

@@ -16,6 +16,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
+#include "RiemannExponentialMapDeclaration.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
@@ -31,6 +32,11 @@ vtkStandardNewMacro(vtkRiemannExponentialMap);
 
 vtkRiemannExponentialMap::vtkRiemannExponentialMap()
 {
+  namespace declared = riemann::declared::vtkRiemannExponentialMap;
+  std::copy(declared::Default::Observer, declared::Default::Observer + 3, this->Observer);
+  this->NumberOfDirections = static_cast<int>(declared::Default::NumberOfDirections);
+  std::copy(declared::Default::ConeAxis, declared::Default::ConeAxis + 3, this->ConeAxis);
+  this->ConeAngle = declared::Default::ConeAngle;
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(2);
   // Defaults of this filter: a bundle of moderate length, fine steps.

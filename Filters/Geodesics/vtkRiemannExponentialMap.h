@@ -58,20 +58,21 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The point where the exponential map is taken. Default (0, 0, 0).
+  /// The point where the exponential map is taken. Defaults, ranges and help
+  /// of this class's settings: vtkRiemannExponentialMap.settings.json.
   vtkSetVector3Macro(Observer, double);
   vtkGetVector3Macro(Observer, double);
   ///@}
 
   ///@{
-  /// Number of directions of the grid. Default 400.
+  /// Number of directions of the grid (at most the direction grid's maximum).
   vtkSetClampMacro(NumberOfDirections, int, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfDirections, int);
   ///@}
 
   ///@{
   /// Restrict the directions to the cap of half-angle ConeAngle (degrees)
-  /// around ConeAxis. Defaults (0, 0, 1) and 180 (the whole sphere).
+  /// around ConeAxis (180: the whole sphere).
   vtkSetVector3Macro(ConeAxis, double);
   vtkGetVector3Macro(ConeAxis, double);
   vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
@@ -100,10 +101,11 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double Observer[3] = { 0.0, 0.0, 0.0 };
-  int NumberOfDirections = 400;
-  double ConeAxis[3] = { 0.0, 0.0, 1.0 };
-  double ConeAngle = 180.0;
+  // The declared defaults (vtkRiemannExponentialMap.settings.json), set in the constructor.
+  double Observer[3];
+  int NumberOfDirections;
+  double ConeAxis[3];
+  double ConeAngle;
   std::vector<double> Radii;
 
 private:

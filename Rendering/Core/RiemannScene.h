@@ -27,7 +27,6 @@
 #ifndef RiemannScene_h
 #define RiemannScene_h
 
-#include "IntegrationSchema.h"
 #include "Integrators.h"
 #include "Jets.h"
 #include "ObserverCamera.h"
@@ -130,18 +129,21 @@ struct SceneObject
 };
 
 /// How rays are integrated (in Riemannian arc length).
-/// How the rays of a picture are integrated (a scene's "integrator" block);
-/// the defaults are IntegrationSchema.h's for rays.
+/**
+ * How the rays of a picture are integrated (a scene's "integrator" block).
+ * Plain defaults: the "Rays" preset of vtkRiemannIntegrationSettings's
+ * declaration (vtkRiemannIntegrationSettings.settings.json), which
+ * RenderingCore.Scene.RayDefaultsAreTheDeclaredPreset checks.
+ */
 struct RaySettings
 {
   /// Euler, RungeKutta4 or DormandPrince45 ("adaptive").
-  IntegratorType Integrator =
-    static_cast<IntegratorType>(static_cast<int>(RayDefault(IntegrationSettingId::Integrator)));
-  double Step = RayDefault(IntegrationSettingId::Step);
-  int MaximumSteps = static_cast<int>(RayDefault(IntegrationSettingId::MaximumSteps));
-  double MaximumLength = RayDefault(IntegrationSettingId::Length);
+  IntegratorType Integrator = IntegratorType::RungeKutta4;
+  double Step = 0.02;
+  int MaximumSteps = 1000;
+  double MaximumLength = 30.0;
   /// Per-step tolerance of the adaptive integrator.
-  double Tolerance = RayDefault(IntegrationSettingId::Tolerance);
+  double Tolerance = 1e-4;
 };
 
 /**

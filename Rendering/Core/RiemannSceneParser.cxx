@@ -4,6 +4,8 @@
 #include "InputFiles.h"
 #include "MetricDefinition.h"
 #include "PictureSchema.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
+#include "SettingValues.h"
 
 #include <Eigen/Geometry> // cross
 
@@ -276,34 +278,39 @@ CameraSettings Camera(const Json& object, const std::string& path)
   return camera;
 }
 
-/// The value of one of the integrator block's numbers, in the range the
-/// integration schema (IntegrationSchema.h) gives it.
-double IntegrationNumber(const Json& object, IntegrationSettingId id, const std::string& path)
+/// The declared integration setting a scene's "integrator" block sets with `key`.
+const SettingDeclaration& IntegrationSettingOfKey(const char* name)
 {
-  const IntegrationSetting& setting = IntegrationSettingOf(id);
-  const std::string where = path + "." + setting.JsonKey;
-  const Json& value = object.at(setting.JsonKey);
-  if (!value.is_number() || !CheckIntegrationValue(setting, value.get<double>(), where).empty())
+  return *riemann::declared::vtkRiemannIntegrationSettings::Settings.Find(name);
+}
+
+/// The value of one of the integrator block's numbers, in the range the
+/// declaration of vtkRiemannIntegrationSettings gives the setting.
+double IntegrationNumber(const Json& object, const SettingDeclaration& setting, const std::string& path)
+{
+  const std::string where = path + "." + setting.SceneKey;
+  const Json& value = object.at(setting.SceneKey);
+  if (!value.is_number() || !CheckSettingValue(setting, value, where).empty())
   {
-    Fail(where, "expected " + DescribeIntegrationRange(setting) + ", got " + Describe(value));
+    Fail(where, "expected " + DescribeSettingRange(setting) + ", got " + Describe(value));
   }
   return value.get<double>();
 }
 
 RaySettings Integrator(const Json& object, const std::string& path)
 {
-  // The block's keys are the schema's JSON keys, in its order.
+  // The block's keys are the declared settings' scene keys, in the declaration's order.
   std::vector<const char*> keys;
-  for (const IntegrationSetting& setting : IntegrationSchema)
+  for (const SettingDeclaration& setting : riemann::declared::vtkRiemannIntegrationSettings::Settings)
   {
-    if (*setting.JsonKey)
+    if (*setting.SceneKey)
     {
-      keys.push_back(setting.JsonKey);
+      keys.push_back(setting.SceneKey);
     }
   }
   json::CheckKeys<SceneDefinitionError>(object, path, keys);
   RaySettings rays;
-  const char* methodKey = IntegrationSettingOf(IntegrationSettingId::Integrator).JsonKey;
+  const char* methodKey = IntegrationSettingOfKey("IntegratorType").SceneKey;
   if (object.contains(methodKey))
   {
     const std::string method = String(object.at(methodKey), path + "." + methodKey);
@@ -313,24 +320,26 @@ RaySettings Integrator(const Json& object, const std::string& path)
         "unknown method \"" + method + "\"; expected \"euler\", \"rk4\" or \"dp45\"");
     }
   }
-  const auto has = [&object](IntegrationSettingId id)
-  { return object.contains(IntegrationSettingOf(id).JsonKey); };
-  if (has(IntegrationSettingId::Step))
+  // Each number the block may give, and where the rays keep it.
+  const SettingDeclaration& step = IntegrationSettingOfKey("InitialIntegrationStep");
+  const SettingDeclaration& steps = IntegrationSettingOfKey("MaximumNumberOfSteps");
+  const SettingDeclaration& length = IntegrationSettingOfKey("MaximumPropagation");
+  const SettingDeclaration& tolerance = IntegrationSettingOfKey("MaximumError");
+  if (object.contains(step.SceneKey))
   {
-    rays.Step = IntegrationNumber(object, IntegrationSettingId::Step, path);
+    rays.Step = IntegrationNumber(object, step, path);
   }
-  if (has(IntegrationSettingId::MaximumSteps))
+  if (object.contains(steps.SceneKey))
   {
-    rays.MaximumSteps =
-      static_cast<int>(IntegrationNumber(object, IntegrationSettingId::MaximumSteps, path));
+    rays.MaximumSteps = static_cast<int>(IntegrationNumber(object, steps, path));
   }
-  if (has(IntegrationSettingId::Length))
+  if (object.contains(length.SceneKey))
   {
-    rays.MaximumLength = IntegrationNumber(object, IntegrationSettingId::Length, path);
+    rays.MaximumLength = IntegrationNumber(object, length, path);
   }
-  if (has(IntegrationSettingId::Tolerance))
+  if (object.contains(tolerance.SceneKey))
   {
-    rays.Tolerance = IntegrationNumber(object, IntegrationSettingId::Tolerance, path);
+    rays.Tolerance = IntegrationNumber(object, tolerance, path);
   }
   return rays;
 }

@@ -1,5 +1,7 @@
 #include "vtkRiemannObserverSettings.h"
 
+#include "RiemannIntegrationSettingsDeclaration.h"
+
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkRiemannIntegrationSettings.h"
@@ -10,12 +12,13 @@
 
 void vtkRiemannSetRayDefaults(vtkRiemannIntegrationSettings* settings)
 {
-  const riemann::RaySettings defaults;
-  settings->SetIntegratorType(static_cast<int>(defaults.Integrator));
-  settings->SetInitialIntegrationStep(defaults.Step);
-  settings->SetMaximumNumberOfSteps(defaults.MaximumSteps);
-  settings->SetMaximumPropagation(defaults.MaximumLength);
-  settings->SetMaximumError(defaults.Tolerance);
+  // The declared "Rays" preset (vtkRiemannIntegrationSettings.settings.json).
+  namespace rays = riemann::declared::vtkRiemannIntegrationSettings::Rays;
+  settings->SetIntegratorType(rays::IntegratorType);
+  settings->SetInitialIntegrationStep(rays::InitialIntegrationStep);
+  settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(rays::MaximumNumberOfSteps));
+  settings->SetMaximumPropagation(rays::MaximumPropagation);
+  settings->SetMaximumError(rays::MaximumError);
 }
 
 riemann::RaySettings vtkRiemannResolveRaySettings(

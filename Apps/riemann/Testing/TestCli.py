@@ -551,15 +551,21 @@ class ConcurrentWriteTests(TempDirTest):
 
 class IntegrationOptionTests(unittest.TestCase):
     """One name, one range, one wording: every command that integrates lists
-    the same five integration options in its --help (AddIntegrationOptions)."""
+    the declared integration options in its --help (IntegrationOptions.h,
+    vtkRiemannIntegrationSettings.settings.json): the property's name, then
+    the old spellings that still work. Python.TestSettingSurfaces checks
+    their defaults and ranges against the declaration."""
 
     OPTIONS = {
-        "--integrator": "TEXT:euler|rk4|dp45",
-        "--step": "FLOAT:in [1e-09, 1e+06]",
-        "--length": "FLOAT:in (0, 1e+09]",
-        "--tolerance": "FLOAT:in [1e-15, 1]",
-        "--max-steps": "INT:in [1, ",
+        "--integrator-type": ("--integrator", "euler|rk4|dp45"),
+        "--initial-integration-step": ("--step", "FLOAT"),
+        "--maximum-propagation": ("--length", "FLOAT"),
+        "--maximum-error": ("--tolerance", "FLOAT"),
+        "--maximum-number-of-steps": ("--max-steps", "INT"),
     }
+    # Where --tolerance is the filter's own (the conjugate points' accuracy,
+    # what |end - q| reaches), MaximumError is not an option.
+    OWN_TOLERANCE = ("conjugate", "connect")
 
     def test_every_integrating_command_lists_them(self):
         import re
@@ -567,13 +573,15 @@ class IntegrationOptionTests(unittest.TestCase):
             with self.subTest(command=command):
                 status, out, err = run(command, "--help")
                 self.assertEqual(status, 0, err)
-                for option, kind in self.OPTIONS.items():
-                    line = re.search(r"^\s+(?:-\w,)?%s\b(?:,[-\w]+)* (\S+(?: \S+)*)$" % re.escape(option),
+                for option, (old, kind) in self.OPTIONS.items():
+                    if option == "--maximum-error" and command in self.OWN_TOLERANCE:
+                        self.assertNotIn(option, out)
+                        continue
+                    line = re.search(r"^\s+(?:-\w,)?%s((?:,[-\w]+)*) (\S+)" % re.escape(option),
                                      out, re.MULTILINE)
                     self.assertIsNotNone(line, "%s --help lacks %s:\n%s" % (command, option, out))
-                    self.assertTrue(line.group(1).startswith(kind), (command, option, line.group(0)))
-                # and nothing else names an integration setting differently
-                self.assertNotRegex(out, r"--max-length(?!\S)(?! FLOAT)" if command == "render" else r"--max-length")
+                    self.assertIn(old, line.group(1).split(","), (command, option, line.group(0)))
+                    self.assertEqual(line.group(2), kind, (command, option, line.group(0)))
 
     def test_render_takes_every_one(self):
         out = os.path.join(tempfile.mkdtemp(), "o.png")
@@ -1260,13 +1268,13 @@ class ConjugateTests(unittest.TestCase):
 
     def test_bad_arguments(self):
         cases = [
-            (["--directions", "0"], "--directions"),
-            (["--directions", "-3"], "--directions"),
-            (["--length", "0"], "--length"),
-            (["--step", "0"], "--step"),
-            (["--count", "0"], "--count"),
-            (["--seed", "1,2"], "--seed: expected three finite"),
-            (["--max-step", "0"], "--max-step"),
+            (["--directions", "0"], "--number-of-directions"),
+            (["--directions", "-3"], "--number-of-directions"),
+            (["--length", "0"], "--maximum-propagation"),
+            (["--step", "0"], "--initial-integration-step"),
+            (["--count", "0"], "--maximum-number-of-conjugate-points"),
+            (["--seed", "1,2"], "--observer: expected three finite"),
+            (["--max-step", "0"], "--maximum-integration-step"),
             (["--max-step", "0.001"], "--max-step 0.001: must be at least --step 0.01"),
         ]
         for args, expected in cases:
@@ -1407,13 +1415,14 @@ class ExpmapTests(unittest.TestCase):
 
     def test_bad_arguments(self):
         cases = [
-            (["--radii", "1,x"], '--radii: "x" is not a positive number'),
+            (["--radii", "1,x"], '--radii: expected numbers, each above 0'),
             (["--radii", "-1"], "--radii"),
-            (["--radii", "11"], "--radii: 11 is beyond --length 10"),
+            # The filter's own length, 5, is the command's default.
+            (["--radii", "11"], "--radii: 11 is beyond --length 5"),
             (["--wavefronts", "W.vtp"], "--wavefronts needs --radii"),
             (["--radii", "1", "--wavefronts", "W.csv"], "--wavefronts"),
-            (["--directions", "0"], "--directions"),
-            (["--integrator", "rk5"], "--integrator"),
+            (["--directions", "0"], "--number-of-directions"),
+            (["--integrator", "rk5"], "--integrator-type"),
             (["--cone-angle", "200"], "--cone-angle"),
         ]
         for args, expected in cases:
@@ -1448,11 +1457,11 @@ BAD_INPUTS = [
     ("zero direction", ["trace", "-m", "METRIC", "--direction", "0,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
      "must not be zero"),
     ("unknown integrator", ["trace", "-m", "METRIC", "--integrator", "rk5", "-o", "OUT.csv"], '{"type": "euclidean"}',
-     '--integrator: expected euler, rk4 or dp45, got "rk5"'),
+     '--integrator-type: expected one of euler, rk4, dp45, got "rk5"'),
     ("negative length", ["trace", "-m", "METRIC", "--length", "-1", "-o", "OUT.csv"], '{"type": "euclidean"}',
-     "--length"),
+     "--maximum-propagation"),
     ("absurd step count", ["trace", "-m", "METRIC", "--max-steps", "99999999999", "-o", "OUT.csv"],
-     '{"type": "euclidean"}', "--max-steps"),
+     '{"type": "euclidean"}', "--maximum-number-of-steps"),
     ("wrong output extension", ["trace", "-m", "METRIC", "-o", "OUT.txt"], '{"type": "euclidean"}',
      "must end in .vtp, .pvtp, .csv, .tck or .trk"),
     ("missing output folder", ["trace", "-m", "METRIC", "-o", "/nonexistent-dir/out.csv"], '{"type": "euclidean"}',
@@ -1511,16 +1520,16 @@ class BadInputTests(unittest.TestCase):
 # (command, arguments, expected substring of stderr). Each run gets a valid
 # metric (and -o) unless its arguments say otherwise; exit status 2, no file.
 NUMERIC_OPTIONS = [
-    ("trace", ["--step", "nan"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
-    ("trace", ["--step", "inf"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "inf"'),
-    ("trace", ["--step", "0"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "0"'),
-    ("trace", ["--tolerance", "nan"], '--tolerance: expected a number from 1e-15 to 1, got "nan"'),
-    ("trace", ["--tolerance", "-inf"], '--tolerance: expected a number from 1e-15 to 1, got "-inf"'),
-    ("trace", ["--length", "nan"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
-    ("trace", ["--length", "0"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "0"'),
-    ("trace", ["--length", "1e999"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "1e999"'),
-    ("trace", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
-    ("trace", ["--max-steps", "2.5"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "2.5"'),
+    ("trace", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
+    ("trace", ["--step", "inf"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "inf"'),
+    ("trace", ["--step", "0"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "0"'),
+    ("trace", ["--tolerance", "nan"], '--maximum-error: expected a number from 1e-15 to 1, got "nan"'),
+    ("trace", ["--tolerance", "-inf"], '--maximum-error: expected a number from 1e-15 to 1, got "-inf"'),
+    ("trace", ["--length", "nan"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
+    ("trace", ["--length", "0"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "0"'),
+    ("trace", ["--length", "1e999"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "1e999"'),
+    ("trace", ["--max-steps", "nan"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
+    ("trace", ["--max-steps", "2.5"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "2.5"'),
     ("trace", ["--seed", "inf,0,0"], '--seed: expected three finite comma-separated numbers X,Y,Z, got "inf,0,0"'),
     ("trace", ["--direction", "nan,1,0"], '--direction: expected three finite comma-separated numbers'),
     ("trace", ["--direction", "0,0,0"], '--direction: "0,0,0" is the zero vector: a direction must not be zero'),
@@ -1528,16 +1537,16 @@ NUMERIC_OPTIONS = [
     ("info", ["--point", "nan,0,0"], '--point: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
     ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
     ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
-    ("render", ["--step", "nan"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
+    ("render", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
     ("render", ["--fov", "nan"], '--fov: expected a number above 0 and at most 179 (degrees), got "nan"'),
     ("render", ["--fov", "180"], '--fov: expected a number above 0 and at most 179 (degrees), got "180"'),
     ("render", ["--fov", "0"], '--fov: expected a number above 0 and at most 179 (degrees), got "0"'),
-    ("render", ["--max-length", "nan"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
-    ("render", ["--length", "inf"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
-    ("render", ["--tolerance", "0"], '--tolerance: expected a number from 1e-15 to 1, got "0"'),
-    ("expmap", ["--max-steps", "0"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "0"'),
-    ("conjugate", ["--max-steps", "1e10"], '--max-steps: expected a whole number from 1 to 1e+09 (steps)'),
-    ("render", ["--max-steps", "nan"], '--max-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
+    ("render", ["--max-length", "nan"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
+    ("render", ["--length", "inf"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
+    ("render", ["--tolerance", "0"], '--maximum-error: expected a number from 1e-15 to 1, got "0"'),
+    ("expmap", ["--max-steps", "0"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "0"'),
+    ("conjugate", ["--max-steps", "1e10"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps)'),
+    ("render", ["--max-steps", "nan"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
     ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384 (pixels), got "nan"'),
     ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384 (pixels), got "0"'),
     ("render", ["--samples", "inf"], '--samples: expected a whole number from 1 to 4096, got "inf"'),
@@ -1552,25 +1561,27 @@ NUMERIC_OPTIONS = [
      "--view-up 0,0,-2 is parallel to the view direction (from --camera-position 0,0,5 to --look-at 0,0,0)"),
     ("render", ["--camera-position", "1,2,3", "--look-at", "1,2,3"],
      "--camera-position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
-    ("conjugate", ["--step", "nan"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
-    ("conjugate", ["--length", "inf"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
-    ("conjugate", ["--max-step", "nan"], '--max-step: expected a finite positive number, got "nan"'),
-    ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a number from 1e-15 to 1, got "nan"'),
-    ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a finite non-negative number at most 180, got "nan"'),
-    ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),
-    ("conjugate", ["--directions", "nan"], '--directions: expected a whole number from 1 to 10000000, got "nan"'),
-    ("conjugate", ["--count", "inf"], '--count: expected a whole number from 1 to 1000000, got "inf"'),
-    ("conjugate", ["--seed", "nan,0,0"], '--seed: expected three finite comma-separated numbers'),
+    # Declared settings (Documentation/Settings.md): the message names the
+    # property's option, whichever old spelling was typed.
+    ("conjugate", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
+    ("conjugate", ["--length", "inf"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
+    ("conjugate", ["--max-step", "nan"], '--maximum-integration-step: expected a number above 0 and at most 1e+06 (arc length), got "nan"'),
+    ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a number from 1e-15 to 1 (arc length), got "nan"'),
+    ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a number from 0 to 180 (degrees), got "nan"'),
+    ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: expected three numbers, not all zero, got "0,0,0"'),
+    ("conjugate", ["--directions", "nan"], '--number-of-directions: expected a whole number from 1 to 1e+06, got "nan"'),
+    ("conjugate", ["--count", "inf"], '--maximum-number-of-conjugate-points: expected a whole number from 1 to 1e+06, got "inf"'),
+    ("conjugate", ["--seed", "nan,0,0"], '--observer: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
     ("conjugate", ["--length", "1", "--step", "2"], "--step 2: must be at most --length 1"),
-    ("expmap", ["--step", "nan"], '--step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
-    ("expmap", ["--length", "nan"], '--length: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
-    ("expmap", ["--tolerance", "inf"], '--tolerance: expected a number from 1e-15 to 1, got "inf"'),
-    ("expmap", ["--cone-angle", "inf"], '--cone-angle: expected a finite non-negative number at most 180, got "inf"'),
-    ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector'),
-    ("expmap", ["--directions", "1.5"], '--directions: expected a whole number from 1 to 1000000, got "1.5"'),
-    ("expmap", ["--radii", "nan"], '--radii: "nan" is not a positive number'),
-    ("expmap", ["--radii", "1,inf"], '--radii: "inf" is not a positive number'),
-    ("expmap", ["--seed", "0,nan,0"], '--seed: expected three finite comma-separated numbers'),
+    ("expmap", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
+    ("expmap", ["--length", "nan"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
+    ("expmap", ["--tolerance", "inf"], '--maximum-error: expected a number from 1e-15 to 1, got "inf"'),
+    ("expmap", ["--cone-angle", "inf"], '--cone-angle: expected a number from 0 to 180 (degrees), got "inf"'),
+    ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: expected three numbers, not all zero, got "0,0,0"'),
+    ("expmap", ["--directions", "1.5"], '--number-of-directions: expected a whole number from 1 to 1e+06, got "1.5"'),
+    ("expmap", ["--radii", "nan"], '--radii: expected numbers, each above 0 and at most 1e+09 (arc length), got "nan"'),
+    ("expmap", ["--radii", "1,inf"], '--radii: expected numbers, each above 0 and at most 1e+09 (arc length), got "1,inf"'),
+    ("expmap", ["--seed", "0,nan,0"], '--observer: expected three finite comma-separated numbers X,Y,Z, got "0,nan,0"'),
     ("fields", ["--bounds", "-1,1,-1,1,nan,1"], '--bounds: "nan" is not finite'),
     ("fields", ["--dims", "nan,3,3"], '--dims: "nan" is not finite'),
     ("fields", ["--dims", "3,inf,3"], '--dims: "inf" is not finite'),

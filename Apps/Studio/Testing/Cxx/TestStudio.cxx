@@ -1,6 +1,7 @@
 // riemann-studio driven with QtTest: the real window under xvfb-run (Mesa
 // llvmpipe), each slot one feature of the app, checked against the
 // toolkit's own answers (the same classes the app is built on).
+#include "RiemannIntegrationSettingsDeclaration.h"
 #include "HelpMenu.h"
 #include "ColorMaps.h"
 #include "InsideView.h"
@@ -559,8 +560,9 @@ void TestStudio::CancelledJobLeavesAppResponsive()
 void TestStudio::ProjectIntegrationFollowsTheSchema()
 {
   // A project's inside.integration is vtkRiemannIntegrationSettings's
-  // properties, read and checked through the integration schema
-  // (IntegrationSchema.h): its ranges, its words; written back the same.
+  // properties, read and checked through their declaration
+  // (vtkRiemannIntegrationSettings.settings.json): its ranges, its words;
+  // written back the same.
   const auto parse = [](const std::string& integration)
   {
     return riemann::studio::ParseProject(R"({"riemann-studio": 1,
@@ -587,7 +589,7 @@ void TestStudio::ProjectIntegrationFollowsTheSchema()
     std::string("inside.integration.MaximumNumberOfSteps: expected a whole number from 1 to "
                 "1e+09 (steps), got 2.5"));
   QCOMPARE(error(R"({"IntegratorType": "rk5"})"),
-    std::string("inside.integration.IntegratorType: expected \"euler\", \"rk4\" or \"dp45\""));
+    std::string("inside.integration.IntegratorType: expected one of euler, rk4, dp45, got \"rk5\""));
   QCOMPARE(error(R"({"Step": 0.1})"), std::string("inside.integration.Step: unknown setting"));
 
   // Every setting the app shows, round trip through the settings object.
@@ -601,7 +603,13 @@ void TestStudio::ProjectIntegrationFollowsTheSchema()
   QCOMPARE(settings->GetMaximumError(), 1e-6);
   QCOMPARE(settings->GetMaximumPropagation(), 12.0);
   QCOMPARE(settings->GetMaximumNumberOfSteps(), static_cast<vtkIdType>(1234));
-  QCOMPARE(riemann::studio::IntegrationValues(settings), project.Integration);
+  const nlohmann::json values = riemann::studio::IntegrationValues(settings);
+  for (auto entry = project.Integration.begin(); entry != project.Integration.end(); ++entry)
+  {
+    QCOMPARE(values.at(entry.key()), entry.value());
+  }
+  // Every declared setting is stored, the ones the project did not give at their defaults.
+  QCOMPARE(values.size(), riemann::declared::vtkRiemannIntegrationSettings::Settings.Count);
 }
 
 void TestStudio::InsideViewFormFollowsThePictureSchema()
@@ -678,7 +686,7 @@ void TestStudio::InsideViewFormFollowsThePictureSchema()
   QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 180})", "{}"),
     std::string("observer.view-angle: expected a number above 0 and at most 179 (degrees)"));
   QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 0], "view-angle": 30})", "{}"),
-    std::string("observer.view-up: expected three finite numbers X,Y,Z, not all 0"));
+    std::string("observer.view-up: expected three finite comma-separated numbers X,Y,Z, not all 0"));
   QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 3], "view-angle": 30})", "{}"),
     std::string("observer: the view up is along the view direction"));
   QCOMPARE(error(fine, R"({"samples": 5000})"),
@@ -741,7 +749,8 @@ void TestStudio::PropertiesRefuseBadValues()
     qPrintable(panel->FieldError("ConeAngle")));
   QVERIFY(!panel->findChild<QPushButton*>("ApplyButton")->isEnabled());
   QVERIFY(!panel->Apply());
-  QCOMPARE(item->Settings().at("ConeAngle").get<double>(), 35.0);
+  // The declared default (vtkRiemannExponentialMap.settings.json), as the filter has it.
+  QCOMPARE(item->Settings().at("ConeAngle").get<double>(), 180.0);
   auto* step = qobject_cast<QLineEdit*>(panel->Field("InitialIntegrationStep"));
   step->selectAll();
   QTest::keyClicks(step, "abc");
@@ -749,10 +758,10 @@ void TestStudio::PropertiesRefuseBadValues()
   // The radii of the wavefronts: a list, every one positive.
   auto* radii = qobject_cast<QLineEdit*>(panel->Field("Radii"));
   QVERIFY(radii);
-  QCOMPARE(radii->text(), QString("1.25, 2.5, 3.75, 5"));
+  QCOMPARE(radii->text(), QString()); // none by default, as the filter
   radii->selectAll();
   QTest::keyClicks(radii, "1, -2");
-  QVERIFY2(panel->FieldError("Radii").contains("number 2: must be > 0"),
+  QVERIFY2(panel->FieldError("Radii").contains("number 2: must be in (0, 1e+09]"),
     qPrintable(panel->FieldError("Radii")));
   radii->selectAll();
   QTest::keyClicks(radii, "1, 2.5");

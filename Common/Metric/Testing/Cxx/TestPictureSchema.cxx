@@ -3,7 +3,8 @@
 // its names unique on every surface, its checks say what is wrong in its
 // words, and the integration schema writes its ranges the same way
 // (SettingRange.h).
-#include "IntegrationSchema.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
+#include "SettingValues.h"
 #include "ObserverCamera.h"
 #include "PictureSchema.h"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 
 using namespace riemann;
@@ -44,9 +46,13 @@ TEST(PictureSchema, NamesAreUniqueOnEverySurface)
   // scene's "camera" keys; no flag repeats an integration flag.
   EXPECT_EQ(flag.size(), PictureSchema.size());
   EXPECT_EQ(scene.size(), 5u);
-  for (const IntegrationSetting& s : IntegrationSchema)
+  for (const SettingDeclaration& s : riemann::declared::vtkRiemannIntegrationSettings::Settings)
   {
-    EXPECT_EQ(flag.count(s.Flag), 0u) << s.Flag;
+    std::stringstream names(riemann::CommandLineNames(s));
+    for (std::string name; std::getline(names, name, ',');)
+    {
+      EXPECT_EQ(flag.count(name), 0u) << name;
+    }
   }
 }
 
@@ -114,7 +120,7 @@ TEST(PictureSchema, ChecksNameTheSettingAndItsRange)
   const double nan[3] = { 0, std::nan(""), 1 };
   const double fine[3] = { 0, 0, 2 };
   EXPECT_EQ(CheckPictureVector(up, zero, "view_up"),
-    "view_up is 0,0,0: expected three finite numbers X,Y,Z, not all 0");
+    "view_up is 0,0,0: expected three finite comma-separated numbers X,Y,Z, not all 0");
   EXPECT_NE(CheckPictureVector(up, nan, "view_up"), "");
   EXPECT_EQ(CheckPictureVector(up, fine, "view_up"), "");
   // A point may be the origin, not a NaN.
@@ -131,12 +137,12 @@ TEST(PictureSchema, ChecksNameTheSettingAndItsRange)
     "auto, fragment or compute");
 }
 
-TEST(PictureSchema, BothSchemasWriteRangesAlike)
+TEST(PictureSchema, PictureAndDeclaredSettingsWriteRangesAlike)
 {
-  // One sentence for a range, whichever schema it comes from.
+  // One sentence for a range, whether a schema or a declaration gives it.
   const SettingRange range{ 0.0, true, 1e9, false, "arc length" };
-  const IntegrationSetting& length = IntegrationSettingOf(IntegrationSettingId::Length);
-  EXPECT_EQ(DescribeIntegrationRange(length), DescribeSettingRange(range));
-  EXPECT_EQ(IntegrationInterval(length), SettingInterval(range));
-  EXPECT_EQ(CheckIntegrationValue(length, -1, "x"), CheckSettingValue(range, -1, "x"));
+  const SettingDeclaration& length =
+    *riemann::declared::vtkRiemannIntegrationSettings::Settings.Find("MaximumPropagation");
+  EXPECT_EQ(riemann::DescribeSettingRange(length), DescribeSettingRange(range));
+  EXPECT_EQ(riemann::CheckSettingValue(length, -1, "x"), CheckSettingValue(range, -1, "x"));
 }

@@ -11,7 +11,8 @@
 #include "vtkRiemannExponentialMap.h"
 #include "vtkRiemannGeodesicAlgorithm.h"
 #include "vtkRiemannGeodesicTracer.h"
-#include "IntegrationSchema.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
+#include "SettingValues.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
@@ -345,47 +346,49 @@ TEST(IntegrationSettings, IntegratorTypeFromName)
   EXPECT_STREQ(settings->GetIntegratorTypeAsString(), "rk4");
 }
 
-TEST(IntegrationSettings, DefaultsAndRangesAreTheSchemas)
+TEST(IntegrationSettings, DefaultsAndRangesAreTheDeclarations)
 {
-  // vtkRiemannIntegrationSettings takes its defaults and its checks from the
-  // integration schema (IntegrationSchema.h), as the CLI, the app and scenes do.
-  using riemann::IntegrationSettingId;
+  // vtkRiemannIntegrationSettings takes its defaults and its checks from its
+  // declaration (vtkRiemannIntegrationSettings.settings.json), as the CLI,
+  // the app and scenes do.
   vtkNew<vtkRiemannIntegrationSettings> settings;
   struct Property
   {
-    IntegrationSettingId Id;
+    const char* Name;
     double (vtkRiemannIntegrationSettings::*Get)();
     void (vtkRiemannIntegrationSettings::*Set)(double);
   };
   const Property properties[] = {
-    { IntegrationSettingId::Step, &vtkRiemannIntegrationSettings::GetInitialIntegrationStep,
+    { "InitialIntegrationStep", &vtkRiemannIntegrationSettings::GetInitialIntegrationStep,
       &vtkRiemannIntegrationSettings::SetInitialIntegrationStep },
-    { IntegrationSettingId::MinimumStep, &vtkRiemannIntegrationSettings::GetMinimumIntegrationStep,
+    { "MinimumIntegrationStep", &vtkRiemannIntegrationSettings::GetMinimumIntegrationStep,
       &vtkRiemannIntegrationSettings::SetMinimumIntegrationStep },
-    { IntegrationSettingId::MaximumStep, &vtkRiemannIntegrationSettings::GetMaximumIntegrationStep,
+    { "MaximumIntegrationStep", &vtkRiemannIntegrationSettings::GetMaximumIntegrationStep,
       &vtkRiemannIntegrationSettings::SetMaximumIntegrationStep },
-    { IntegrationSettingId::Tolerance, &vtkRiemannIntegrationSettings::GetMaximumError,
+    { "MaximumError", &vtkRiemannIntegrationSettings::GetMaximumError,
       &vtkRiemannIntegrationSettings::SetMaximumError },
-    { IntegrationSettingId::Length, &vtkRiemannIntegrationSettings::GetMaximumPropagation,
+    { "MaximumPropagation", &vtkRiemannIntegrationSettings::GetMaximumPropagation,
       &vtkRiemannIntegrationSettings::SetMaximumPropagation },
   };
+  const riemann::SettingTable& table = riemann::declared::vtkRiemannIntegrationSettings::Settings;
   EXPECT_EQ(settings->GetIntegratorType(),
-    riemann::IntegrationSettingOf(IntegrationSettingId::Integrator).CurveDefault);
+    riemann::ChoiceIndex(*table.Find("IntegratorType"),
+      riemann::DefaultValue(*table.Find("IntegratorType")).get<std::string>()));
   EXPECT_EQ(settings->GetMaximumNumberOfSteps(),
-    riemann::IntegrationSettingOf(IntegrationSettingId::MaximumSteps).CurveDefault);
+    riemann::DefaultValue(*table.Find("MaximumNumberOfSteps")).get<long long>());
   ASSERT_EQ(settings->CheckSettings(), "");
   for (const Property& p : properties)
   {
-    const riemann::IntegrationSetting& setting = riemann::IntegrationSettingOf(p.Id);
-    SCOPED_TRACE(setting.Property);
+    const riemann::SettingDeclaration& setting = *table.Find(p.Name);
+    SCOPED_TRACE(setting.Name);
     const double original = (settings.Get()->*p.Get)();
-    EXPECT_EQ(original, setting.CurveDefault);
+    EXPECT_EQ(original, riemann::DefaultValue(setting).get<double>());
     // Just outside the range: refused, naming the property and the range.
     const double outside = setting.MinimumExclusive ? setting.Minimum : setting.Minimum / 2;
-    (settings.Get()->*p.Set)(p.Id == IntegrationSettingId::MaximumStep ? 2 * setting.Maximum : outside);
+    (settings.Get()->*p.Set)(std::string(p.Name) == "MaximumIntegrationStep" ? 2 * setting.Maximum : outside);
     const std::string error = settings->CheckSettings();
-    EXPECT_EQ(error.rfind(std::string(setting.Property) + " is ", 0), 0u) << error;
-    EXPECT_NE(error.find(riemann::DescribeIntegrationRange(setting)), std::string::npos) << error;
+    EXPECT_EQ(error.rfind(std::string(setting.Name) + " is ", 0), 0u) << error;
+    EXPECT_NE(error.find(riemann::DescribeSettingRange(setting)), std::string::npos) << error;
     (settings.Get()->*p.Set)(original);
     EXPECT_EQ(settings->CheckSettings(), "");
   }

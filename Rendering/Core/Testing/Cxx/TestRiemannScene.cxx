@@ -2,6 +2,7 @@
 // refused with a message naming its JSON path, and the segment intersection
 // (the reference the GLSL mirrors) agrees with exact answers and with a
 // brute-force sampling of the grid of bars.
+#include "RiemannIntegrationSettingsDeclaration.h"
 #include "RiemannScene.h"
 #include "RiemannSceneParser.h"
 #include "RiemannSceneIntersection.h"
@@ -484,13 +485,13 @@ TEST(Scene, RefusesBadInput)
     { R"({"camera": {"position": [0,0,"z"]}})", "scene.camera.position[2]: expected a number" },
     { R"({"camera": {"projection": "fisheye"}})",
       "scene.camera.projection: unknown projection \"fisheye\"" },
-    { R"({"camera": {"view_up": [0,0,0]}})", "scene.camera.view_up: expected three finite numbers X,Y,Z, not all 0" },
+    { R"({"camera": {"view_up": [0,0,0]}})", "scene.camera.view_up: expected three finite comma-separated numbers X,Y,Z, not all 0" },
     { R"({"camera": {"view_up": [0,0,-2]}})",
       "scene.camera.view_up: parallel to the view direction" },
     { R"({"camera": {"lookat": [0,0,0]}})", "scene.camera: unknown key \"lookat\"" },
     { R"({"camera": [0,0,5]})", "scene.camera: expected an object, got an array of 3" },
     // Integrator.
-    // Integrator: the ranges of the integration schema (IntegrationSchema.h).
+    // Integrator: the declared ranges (vtkRiemannIntegrationSettings.settings.json).
     { R"({"integrator": {"method": "rk45"}})", "scene.integrator.method: unknown method \"rk45\"" },
     { R"({"integrator": {"step": 0}})",
       "scene.integrator.step: expected a number from 1e-09 to 1e+06 (arc length), got 0" },
@@ -1066,18 +1067,18 @@ TEST(EnvironmentMapImage, GreyRepeatsAndAnImageWithoutPixelsIsACallersBug)
 }
 
 //------------------------------------------------------------------------------
-TEST(Scene, IntegratorBlockIsTheSchemasRaysColumn)
+TEST(Scene, RayDefaultsAreTheDeclaredPreset)
 {
-  // A scene's "integrator" block: its keys, defaults and ranges are the
-  // integration schema's (IntegrationSchema.h), rays' column.
-  using riemann::IntegrationSettingId;
+  // A scene's "integrator" block: its keys and ranges are the declared ones
+  // of vtkRiemannIntegrationSettings (vtkRiemannIntegrationSettings.settings.json),
+  // its defaults (RaySettings' plain ones) the declared "Rays" preset.
+  namespace preset = riemann::declared::vtkRiemannIntegrationSettings::Rays;
   const riemann::RaySettings rays;
-  const auto ray = [](IntegrationSettingId id) { return riemann::IntegrationSettingOf(id).RayDefault; };
-  EXPECT_EQ(static_cast<double>(rays.Integrator), ray(IntegrationSettingId::Integrator));
-  EXPECT_EQ(rays.Step, ray(IntegrationSettingId::Step));
-  EXPECT_EQ(rays.Tolerance, ray(IntegrationSettingId::Tolerance));
-  EXPECT_EQ(rays.MaximumLength, ray(IntegrationSettingId::Length));
-  EXPECT_EQ(rays.MaximumSteps, ray(IntegrationSettingId::MaximumSteps));
+  EXPECT_EQ(static_cast<int>(rays.Integrator), preset::IntegratorType);
+  EXPECT_EQ(rays.Step, preset::InitialIntegrationStep);
+  EXPECT_EQ(rays.Tolerance, preset::MaximumError);
+  EXPECT_EQ(rays.MaximumLength, preset::MaximumPropagation);
+  EXPECT_EQ(rays.MaximumSteps, preset::MaximumNumberOfSteps);
   EXPECT_EQ(riemann::ParseScene("{}").Rays.Step, rays.Step);
 
   // Every key of the schema is a key of the block, at the edge of its range.

@@ -1,6 +1,8 @@
 #include "SettingRange.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace riemann
@@ -14,6 +16,23 @@ std::string Number(double value)
   return s.str();
 }
 } // namespace
+
+std::string ShortestNumberText(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", value);
+  // The shortest text that reads back the same.
+  for (int digits = 1; digits <= 17; ++digits)
+  {
+    char shorter[32];
+    std::snprintf(shorter, sizeof(shorter), "%.*g", digits, value);
+    if (std::strtod(shorter, nullptr) == value)
+    {
+      return shorter;
+    }
+  }
+  return text;
+}
 
 std::string DescribeSettingRange(const SettingRange& range)
 {
@@ -42,6 +61,7 @@ std::string CheckSettingValue(const SettingRange& range, double value, const std
   {
     return std::string();
   }
-  return name + " is " + Number(value) + ": expected " + DescribeSettingRange(range);
+  // The value exactly as given (1000001, not 1e+06); the range as written.
+  return name + " is " + ShortestNumberText(value) + ": expected " + DescribeSettingRange(range);
 }
 } // namespace riemann

@@ -4,14 +4,14 @@
  * uses for it (the CLI's help and errors, the scene and project parsers,
  * the app's fields, the VTK objects' checks).
  *
- * Shared by the two setting schemas (IntegrationSchema.h: how curves are
- * integrated; PictureSchema.h: the camera and the picture), so that a range
- * is written the same way wherever a user meets it.
+ * Shared by the declared settings (SettingValues.h) and the picture schema
+ * (PictureSchema.h: the camera and the picture), so that a range is written
+ * the same way wherever a user meets it.
  */
 #ifndef RiemannSettingRange_h
 #define RiemannSettingRange_h
 
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonSettingsExport.h"
 
 #include <string>
 
@@ -30,16 +30,19 @@ struct SettingRange
   const char* Unit;
 };
 
+/// The shortest text of `value` that reads back the same ("0.1", "1e-08", "1000001").
+RIEMANNCOMMONSETTINGS_EXPORT std::string ShortestNumberText(double value);
+
 /// The range as words: "a number above 0 and at most 1e+09 (arc length)".
-RIEMANNCOMMONMETRIC_EXPORT std::string DescribeSettingRange(const SettingRange& range);
+RIEMANNCOMMONSETTINGS_EXPORT std::string DescribeSettingRange(const SettingRange& range);
 
 /// The range as an interval: "[1e-09, 1e+06]", "(0, 179]".
-RIEMANNCOMMONMETRIC_EXPORT std::string SettingInterval(const SettingRange& range);
+RIEMANNCOMMONSETTINGS_EXPORT std::string SettingInterval(const SettingRange& range);
 
 /// "" when `value` is finite, in the range and whole where it must be; else
 /// why not, naming it `name` ("--fov is 180: expected a number above 0 and
 /// at most 179 (degrees)").
-RIEMANNCOMMONMETRIC_EXPORT std::string CheckSettingValue(
+RIEMANNCOMMONSETTINGS_EXPORT std::string CheckSettingValue(
   const SettingRange& range, double value, const std::string& name);
 } // namespace riemann
 

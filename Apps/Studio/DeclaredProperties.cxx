@@ -1,0 +1,96 @@
+#include "DeclaredProperties.h"
+
+#include "IntegrationValues.h"
+#include "SettingValues.h"
+
+#include "vtkNew.h"
+#include "vtkRiemannIntegrationSettings.h"
+
+namespace riemann
+{
+namespace studio
+{
+PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting)
+{
+  PropertySpec spec;
+  spec.Key = setting.Name;
+  spec.Label = QString::fromUtf8(setting.Label);
+  spec.Minimum = setting.Minimum;
+  spec.MinimumExclusive = setting.MinimumExclusive;
+  spec.Maximum = setting.Maximum;
+  std::string help = setting.Help;
+  if (setting.Type != riemann::SettingDeclaration::Boolean)
+  {
+    help += ": " + riemann::DescribeSettingRange(setting);
+  }
+  spec.Help = QString::fromStdString(help);
+  switch (setting.Type)
+  {
+    case riemann::SettingDeclaration::Boolean:
+      spec.Type = PropertySpec::Boolean;
+      break;
+    case riemann::SettingDeclaration::Integer:
+      spec.Type = PropertySpec::Integer;
+      break;
+    case riemann::SettingDeclaration::Number:
+      spec.Type = PropertySpec::Number;
+      break;
+    case riemann::SettingDeclaration::Point:
+      spec.Type = PropertySpec::Vector3;
+      break;
+    case riemann::SettingDeclaration::Direction:
+      spec.Type = PropertySpec::Vector3;
+      spec.NonZero = true;
+      break;
+    case riemann::SettingDeclaration::Choice:
+      spec.Type = PropertySpec::Choice;
+      for (const std::string& name : riemann::ChoiceNames(setting))
+      {
+        spec.Choices << QString::fromStdString(name);
+      }
+      break;
+    case riemann::SettingDeclaration::NumberList:
+      spec.Type = PropertySpec::NumberList;
+      break;
+  }
+  return spec;
+}
+
+std::vector<PropertySpec> DeclaredPropertySpecs(const riemann::SettingTable& table)
+{
+  std::vector<PropertySpec> specs;
+  for (const riemann::SettingDeclaration& setting : table)
+  {
+    specs.push_back(DeclaredPropertySpec(setting));
+  }
+  return specs;
+}
+nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSettings* integration,
+  const nlohmann::json& own)
+{
+  declared.update(IntegrationValues(integration));
+  declared.update(own);
+  return declared;
+}
+
+std::vector<std::string> FilterPythonLines(
+  const riemann::SettingTable& table, const std::string& var, const nlohmann::json& values)
+{
+  std::vector<std::string> lines{
+    var + " = riemann." + table.ClassName + "()",
+    var + ".SetMetric(metric)",
+  };
+  for (const std::string& line : riemann::SettingPythonLines(table, var, values))
+  {
+    lines.push_back(line);
+  }
+  vtkNew<vtkRiemannIntegrationSettings> integration;
+  ApplyIntegrationValues(values, integration);
+  for (const std::string& line : IntegrationPython(var + ".GetIntegrationSettings()", integration))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+} // namespace studio
+} // namespace riemann

@@ -1,0 +1,53 @@
+/**
+ * @file DeclaredProperties.h
+ * @brief The properties panel's fields made from a VTK class's declared
+ * settings (`<Class>.settings.json`, SettingDeclaration.h): key, label,
+ * type, range and help as the declaration states them, so the app's forms
+ * say what the CLI's help and ParaView's panels say.
+ */
+#ifndef RiemannStudioDeclaredProperties_h
+#define RiemannStudioDeclaredProperties_h
+
+#include "PipelineItem.h" // For PropertySpec
+
+#include "SettingDeclaration.h"
+
+class vtkRiemannIntegrationSettings;
+
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace riemann
+{
+namespace studio
+{
+/// The field of one declared setting.
+PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting);
+
+/// The fields of every setting of `table`, in its order.
+std::vector<PropertySpec> DeclaredPropertySpecs(const riemann::SettingTable& table);
+
+/**
+ * The settings of an item, as a new filter has them: its declared settings
+ * (`declared`: riemann::settings::SettingValues of a new filter, from its
+ * `<Class>SettingAccess.h`) and its integration settings (`integration`,
+ * the new filter's), then the item's `own` (display settings). One default
+ * per setting: the filter's, as the CLI and Python have it.
+ */
+nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSettings* integration,
+  const nlohmann::json& own);
+
+/**
+ * The Python lines of an item that runs `Filter` as variable `var`: the
+ * filter made, the metric set, the declared settings of `values`
+ * (SettingPythonLines) and the integration settings.
+ */
+std::vector<std::string> FilterPythonLines(const riemann::SettingTable& table,
+  const std::string& var, const nlohmann::json& values);
+} // namespace studio
+} // namespace riemann
+
+#endif

@@ -1,0 +1,161 @@
+"""The studio's surfaces of every declared setting (riemann-studio --script ... --exit).
+
+For each kind of item whose toolkit class has a declaration
+(`<Class>.settings.json`, Documentation/Settings.md), and each declared
+setting of it:
+
+1. the properties panel has its field, with the declared label, type and range;
+2. a new item has the declared default;
+3. a project saved with other values and opened again gives those values back
+   under the property's name (the project key);
+4. the exported Python sets it, and run, builds filters that hold those values.
+
+Python.TestSettingSurfaces walks the VTK classes, the ParaView XML and the
+commands' options.
+"""
+import importlib.util
+import os
+import sys
+import tempfile
+
+import studio
+
+SOURCE = os.path.dirname(os.environ["RIEMANN_DATA_DIR"])
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message, file=sys.stderr)
+
+
+def declarations():
+    spec = importlib.util.spec_from_file_location(
+        "RiemannSettings", os.path.join(SOURCE, "cmake", "RiemannSettings.py"))
+    generator = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(generator)
+    _, docs = generator.declarations_of(SOURCE)
+    return {doc["class"]: doc for doc in docs}
+
+
+FIELD_TYPES = {"integer": "integer", "number": "number", "point": "vector3", "direction": "vector3",
+               "choice": "choice", "boolean": "boolean", "number_list": "number_list"}
+
+
+def other_value(s):
+    """A valid value other than the default, small enough to compute quickly."""
+    kind, d = s["type"], s["default"]
+    lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
+    if kind == "integer":
+        return d - 1 if d - 1 >= lo and d > 3 else min(d + 1, hi)
+    if kind == "number":
+        x = d * 0.5 if d != 0 else 0.5
+        return x if (x > lo if s.get("minimum_exclusive") else x >= lo) and x <= hi else (lo + hi) / 2
+    if kind == "point":
+        return [0.25, -0.5, 0.75]
+    if kind == "direction":
+        return [0.0, 1.0, 0.0] if d != [0, 1, 0] else [1.0, 0.0, 0.0]
+    if kind == "choice":
+        return [c for c in s["choices"] if c != d][0]
+    if kind == "boolean":
+        return not d
+    return [0.5, 1.5]
+
+
+def same(a, b):
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+        return float(a) == float(b)
+    return a == b
+
+
+def getter(s, obj):
+    if s["type"] == "number_list":
+        return [getattr(obj, s["commands"]["get"])(i) for i in range(getattr(obj, s["commands"]["count"])())]
+    value = getattr(obj, "Get" + s["name"])()
+    if s["type"] == "choice":
+        return s["choices"][value]
+    return list(value) if s["type"] in ("point", "direction") else value
+
+
+def main():
+    declared = declarations()
+    studio.metric('{"type": "euclidean"}')
+    kinds = ["geodesics", "ray-bundle", "exponential-map", "conjugate-locus", "field",
+             "distance-field", "connect", "camera-path"]
+    walked, undeclared, values = {}, [], {}
+    for kind in kinds:
+        name = studio.add(kind)
+        item = studio.get(name)
+        doc = declared.get(item["class"])
+        if doc is None:
+            undeclared.append("%s (%s)" % (kind, item["class"]))
+            studio.remove(name)
+            continue
+        walked[name] = doc
+        fields = {f["key"]: f for f in studio.properties(name)}
+        for s in doc["settings"]:
+            where = "%s %s" % (kind, s["name"])
+            field = fields.get(s["name"])
+            check(field is not None, "%s: no field in the properties panel" % where)
+            if field is None:
+                continue
+            check(field["label"] == s.get("label", field["label"]), "%s: label %r" % (where, field["label"]))
+            check(field["type"] == FIELD_TYPES[s["type"]], "%s: field type %s" % (where, field["type"]))
+            if s["type"] in ("integer", "number", "number_list"):
+                check(field["minimum"] == s.get("minimum", -1e300), "%s: minimum %s" % (where, field["minimum"]))
+                check(field["maximum"] == s.get("maximum", 1e300), "%s: maximum %s" % (where, field["maximum"]))
+                check(field["minimum_exclusive"] == bool(s.get("minimum_exclusive")),
+                      "%s: minimum_exclusive %s" % (where, field["minimum_exclusive"]))
+            if s["type"] == "choice":
+                check(field["choices"] == s["choices"], "%s: choices %s" % (where, field["choices"]))
+            check(field["non_zero"] == (s["type"] == "direction"), "%s: non_zero" % where)
+            check(field["help"].startswith(s["help"]), "%s: help %r" % (where, field["help"]))
+            check(same(item[s["name"]], s["default"]),
+                  "%s: a new item has %r, declared %r" % (where, item[s["name"]], s["default"]))
+        # Other values for every declared setting, and a short length (quick jobs).
+        values[name] = {s["name"]: other_value(s) for s in doc["settings"]}
+        studio.set(name, MaximumPropagation=1.0, **values[name])
+
+    # Project keys: saved and opened again.
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "walk.json")
+        studio.save(path)
+        studio.open(path)
+        for name, doc in walked.items():
+            item = studio.get(name)
+            for s in doc["settings"]:
+                check(same(item.get(s["name"]), values[name][s["name"]]),
+                      "project: %s %s came back as %r, saved %r"
+                      % (name, s["name"], item.get(s["name"]), values[name][s["name"]]))
+
+    # The exported Python: run it, and ask its filters.
+    script = studio.python()
+    namespace = {"__name__": "trace"}
+    argv = sys.argv
+    sys.argv = ["trace"]
+    try:
+        exec(compile(script, "trace.py", "exec"), namespace)
+    finally:
+        sys.argv = argv
+    for name, doc in walked.items():
+        algorithm = namespace["items"].get(name)
+        check(algorithm is not None, "python: no filter for %s" % name)
+        if algorithm is None:
+            continue
+        check(algorithm.GetClassName() == doc["class"], "python: %s is a %s" % (name, algorithm.GetClassName()))
+        for s in doc["settings"]:
+            got = getter(s, algorithm)
+            check(same(got, values[name][s["name"]]),
+                  "python: %s %s is %r, the item has %r" % (name, s["name"], got, values[name][s["name"]]))
+
+    print("walked %d settings of %s" % (sum(len(d["settings"]) for d in walked.values()),
+                                        ", ".join(sorted(d["class"] for d in walked.values()))))
+    print("kinds without a declaration yet: " + ", ".join(undeclared))
+    check(len(walked) >= 2, "fewer than two declared kinds walked")
+    return 1 if failures else 0
+
+
+sys.exit(main())

@@ -1,0 +1,155 @@
+#include "DeclaredOptions.h"
+
+#include "SettingValues.h"
+
+#include <sstream>
+
+namespace riemann
+{
+namespace cli
+{
+namespace
+{
+bool IsLeftOut(const std::string& name, const std::string& leftOut)
+{
+  std::stringstream stream(leftOut);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    if (item == name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * CLI11's check of the typed text: its type (ParseSettingText), then its
+ * range. CLI11 reports a refusal as "--option: expected a whole number from
+ * 1 to 1e+06, got \"0\"" (status 2) before any command runs.
+ */
+CLI::Validator DeclaredCheck(const SettingDeclaration& setting)
+{
+  return CLI::Validator(
+    [&setting](std::string& text) -> std::string
+    {
+      std::string error;
+      const nlohmann::json value = ParseSettingText(setting, text, error);
+      if (error.empty() && CheckSettingValue(setting, value, "").empty())
+      {
+        return std::string();
+      }
+      const std::string expected = error.empty() || setting.Type != SettingDeclaration::Point
+        ? "expected " + DescribeSettingRange(setting)
+        : error;
+      return expected + ", got \"" + text + "\"";
+    },
+    "");
+}
+} // namespace
+
+std::string DeclaredHelp(const SettingDeclaration& setting, const std::string& byDefault)
+{
+  std::string help = setting.Help;
+  const std::string range = DescribeSettingRange(setting);
+  // A choice's names are its type (euler|rk4|dp45), not repeated here.
+  if (setting.Type != SettingDeclaration::Boolean && setting.Type != SettingDeclaration::Choice &&
+    !range.empty())
+  {
+    help += "; " + range;
+  }
+  else if (*setting.Unit)
+  {
+    help += std::string(" (") + setting.Unit + ")";
+  }
+  // A value ("default 0.01") or words ("default: the scene's").
+  const bool words = byDefault.find(' ') != std::string::npos;
+  help += (words ? " (default: " : " (default ") +
+    (byDefault.empty() ? std::string("none") : byDefault) + ")";
+  return help;
+}
+
+DeclaredOptions::DeclaredOptions(CLI::App* command, const SettingTable& table,
+  const std::string& leftOut, const nlohmann::json& defaults, const std::string& defaultWords)
+  : Table(table)
+  , Defaults(DefaultValues(table))
+{
+  this->Defaults.update(defaults);
+  for (const SettingDeclaration& setting : table)
+  {
+    if (IsLeftOut(setting.Name, leftOut))
+    {
+      continue;
+    }
+    std::string& text = this->Texts[setting.Name];
+    const std::string byDefault = defaultWords.empty()
+      ? SettingText(setting, this->Defaults.at(setting.Name))
+      : defaultWords;
+    CLI::Option* option =
+      command->add_option(CommandLineNames(setting), text, DeclaredHelp(setting, byDefault));
+    option->check(DeclaredCheck(setting));
+    // The type as CLI11 names its own (INT, FLOAT), or the form to type.
+    if (setting.Type == SettingDeclaration::Integer)
+    {
+      option->type_name("INT");
+    }
+    else if (setting.Type == SettingDeclaration::Number)
+    {
+      option->type_name("FLOAT");
+    }
+    else if (setting.Type == SettingDeclaration::Boolean)
+    {
+      option->type_name("true|false");
+    }
+    else if (setting.Type == SettingDeclaration::Choice)
+    {
+      option->type_name(setting.Choices);
+    }
+    else if (setting.Type == SettingDeclaration::Point ||
+      setting.Type == SettingDeclaration::Direction)
+    {
+      option->type_name("X,Y,Z");
+    }
+    else if (setting.Type == SettingDeclaration::NumberList)
+    {
+      option->type_name("V1,V2,...");
+    }
+    this->Options[setting.Name] = option;
+  }
+}
+
+nlohmann::json DeclaredOptions::Given() const
+{
+  nlohmann::json given = nlohmann::json::object();
+  for (const auto& entry : this->Options)
+  {
+    if (entry.second->count() == 0)
+    {
+      continue;
+    }
+    const SettingDeclaration* setting = this->Table.Find(entry.first);
+    std::string error; // checked while parsing (DeclaredCheck)
+    given[entry.first] = ParseSettingText(*setting, this->Texts.at(entry.first), error);
+  }
+  return given;
+}
+
+nlohmann::json DeclaredOptions::Value(const std::string& name) const
+{
+  const nlohmann::json given = this->Given();
+  const auto found = given.find(name);
+  if (found != given.end())
+  {
+    return *found;
+  }
+  return this->Defaults.at(name);
+}
+
+std::string DeclaredOptions::OptionOf(const SettingTable& table, const std::string& name)
+{
+  const SettingDeclaration* setting = table.Find(name);
+  return setting ? CommandLineName(*setting) : name;
+}
+} // namespace cli
+} // namespace riemann

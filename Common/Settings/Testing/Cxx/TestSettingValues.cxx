@@ -1,0 +1,168 @@
+// The declared settings' runtime (SettingDeclaration.h, SettingValues.h):
+// option names, range words, checks, typed text and Python, on a table
+// written here (the generated ones are walked by Python.TestSettingSurfaces).
+#include "SettingDeclaration.h"
+#include "SettingValues.h"
+#include "RiemannExponentialMapDeclaration.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace
+{
+using riemann::SettingDeclaration;
+
+// One setting of each kind, as a generated table states them.
+constexpr SettingDeclaration Example[] = {
+  { "NumberOfDirections", SettingDeclaration::Integer, "400", 1.0, false, 1e6, "", "", "Directions",
+    "Directions of the grid", "--directions,-n", "", "", "", "" },
+  { "ConeAngle", SettingDeclaration::Number, "180", 0.0, false, 180.0, "", "degrees", "Cone angle",
+    "Half-angle", "", "", "", "", "" },
+  { "InitialIntegrationStep", SettingDeclaration::Number, "0.01", 0.0, true, 1e6, "", "arc length",
+    "Step", "The step", "--step", "", "", "", "" },
+  { "ConeAxis", SettingDeclaration::Direction, "[0, 0, 1]", -1e300, false, 1e300, "", "", "Cone axis",
+    "Axis", "", "", "", "", "" },
+  { "Observer", SettingDeclaration::Point, "[0, 0, 0]", -1e300, false, 1e300, "", "", "Observer",
+    "Where", "--seed", "", "", "", "" },
+  { "IntegratorType", SettingDeclaration::Choice, "\"rk4\"", -1e300, false, 1e300, "euler|rk4|dp45",
+    "", "Integrator", "The integrator", "", "", "", "", "" },
+  { "Radii", SettingDeclaration::NumberList, "[]", 0.0, true, 1e9, "", "arc length", "Radii",
+    "Wavefronts", "", "AddRadius", "RemoveAllRadii", "GetNumberOfRadii", "GetRadius" },
+  { "ScalarBar", SettingDeclaration::Boolean, "false", -1e300, false, 1e300, "", "", "Legend",
+    "Show the legend", "", "", "", "", "" },
+  { "MinimumFA", SettingDeclaration::Number, "0.2", 0.0, false, 1.0, "", "", "Minimum FA",
+    "Stop below", "", "", "", "", "" },
+};
+constexpr riemann::SettingTable Table{ "vtkExample", "Example", Example,
+  sizeof(Example) / sizeof(Example[0]) };
+
+const SettingDeclaration& Setting(const char* name)
+{
+  const SettingDeclaration* setting = Table.Find(name);
+  EXPECT_NE(setting, nullptr) << name;
+  return *setting;
+}
+} // namespace
+
+TEST(SettingDeclaration, CommandLineNamesAreThePropertysWordsAndTheOldSpellings)
+{
+  EXPECT_EQ(riemann::CommandLineName(Setting("NumberOfDirections")), "--number-of-directions");
+  EXPECT_EQ(riemann::CommandLineNames(Setting("NumberOfDirections")),
+    "--number-of-directions,--directions,-n");
+  EXPECT_EQ(riemann::CommandLineName(Setting("MinimumFA")), "--minimum-fa");
+  EXPECT_EQ(riemann::CommandLineNames(Setting("ConeAngle")), "--cone-angle");
+  EXPECT_EQ(Table.Find("Nothing"), nullptr);
+}
+
+TEST(SettingDeclaration, RangesInWords)
+{
+  EXPECT_EQ(riemann::DescribeSettingRange(Setting("NumberOfDirections")),
+    "a whole number from 1 to 1e+06");
+  EXPECT_EQ(riemann::DescribeSettingRange(Setting("InitialIntegrationStep")),
+    "a number above 0 and at most 1e+06 (arc length)");
+  EXPECT_EQ(riemann::DescribeSettingRange(Setting("IntegratorType")), "one of euler, rk4, dp45");
+  EXPECT_EQ(riemann::DescribeSettingRange(Setting("Radii")),
+    "numbers, each above 0 and at most 1e+09 (arc length)");
+  EXPECT_EQ(riemann::DescribeSettingRange(Setting("ConeAxis")), "three numbers, not all zero");
+}
+
+TEST(SettingValues, DefaultsAreTheDeclaredJson)
+{
+  const nlohmann::json values = riemann::DefaultValues(Table);
+  EXPECT_EQ(values.at("NumberOfDirections"), 400);
+  EXPECT_EQ(values.at("ConeAxis"), nlohmann::json({ 0, 0, 1 }));
+  EXPECT_EQ(values.at("IntegratorType"), "rk4");
+  EXPECT_EQ(values.at("Radii"), nlohmann::json::array());
+  EXPECT_EQ(values.at("ScalarBar"), false);
+  EXPECT_EQ(values.size(), Table.Count);
+}
+
+TEST(SettingValues, ChecksFollowTheDeclaredTypeAndRange)
+{
+  using nlohmann::json;
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("NumberOfDirections"), 1, "n"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("NumberOfDirections"), 0, "n"),
+    "n is 0: expected a whole number from 1 to 1e+06");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("NumberOfDirections"), 2.5, "n"),
+    "n is 2.5: expected a whole number from 1 to 1e+06");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("NumberOfDirections"), 1000001, "n"),
+    "n is 1000001: expected a whole number from 1 to 1e+06");
+  EXPECT_NE(riemann::CheckSettingValue(Setting("InitialIntegrationStep"), 0.0, "s"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("ConeAngle"), 0.0, "a"), "");
+  EXPECT_NE(riemann::CheckSettingValue(Setting("ConeAngle"), "wide", "a"), "");
+  EXPECT_NE(riemann::CheckSettingValue(Setting("ConeAxis"), json({ 0, 0, 0 }), "x"), "");
+  EXPECT_NE(riemann::CheckSettingValue(Setting("ConeAxis"), json({ 0, 1 }), "x"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("Observer"), json({ 0, 0, 0 }), "x"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("IntegratorType"), "dp45", "i"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("IntegratorType"), "adams", "i"),
+    "i: expected one of euler, rk4, dp45");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("Radii"), json::array(), "r"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(Setting("Radii"), json({ 1, -2 }), "r"),
+    "r is -2: expected a number above 0 and at most 1e+09 (arc length)");
+  EXPECT_NE(riemann::CheckSettingValue(Setting("ScalarBar"), 1, "b"), "");
+}
+
+TEST(SettingValues, TypedTextReadsBackAsTheValue)
+{
+  std::string error;
+  EXPECT_EQ(riemann::ParseSettingText(Setting("NumberOfDirections"), "30", error), 30);
+  EXPECT_TRUE(error.empty());
+  EXPECT_TRUE(riemann::ParseSettingText(Setting("NumberOfDirections"), "3x", error).is_null());
+  EXPECT_EQ(error, "expected a whole number from 1 to 1e+06");
+  EXPECT_EQ(riemann::ParseSettingText(Setting("ConeAxis"), "0, 1,0", error),
+    nlohmann::json({ 0.0, 1.0, 0.0 }));
+  EXPECT_TRUE(riemann::ParseSettingText(Setting("ConeAxis"), "0,1", error).is_null());
+  EXPECT_EQ(error, "expected three finite comma-separated numbers X,Y,Z");
+  EXPECT_TRUE(riemann::ParseSettingText(Setting("Observer"), "nan,0,0", error).is_null());
+  EXPECT_EQ(riemann::ParseSettingText(Setting("Radii"), "1, 2.5", error), nlohmann::json({ 1.0, 2.5 }));
+  EXPECT_TRUE(riemann::ParseSettingText(Setting("Radii"), "1,", error).is_null());
+  EXPECT_EQ(riemann::ParseSettingText(Setting("IntegratorType"), "euler", error), "euler");
+  EXPECT_TRUE(riemann::ParseSettingText(Setting("IntegratorType"), "Euler", error).is_null());
+  EXPECT_EQ(riemann::ParseSettingText(Setting("ScalarBar"), "on", error), true);
+  for (const SettingDeclaration& setting : Table)
+  {
+    // The text of each default reads back as the default.
+    const nlohmann::json value = riemann::DefaultValue(setting);
+    const std::string text = riemann::SettingText(setting, value);
+    if (!text.empty())
+    {
+      EXPECT_EQ(riemann::ParseSettingText(setting, text, error), value) << setting.Name << ": " << text;
+    }
+  }
+}
+
+TEST(SettingValues, PythonSetsEachDeclaredSettingInTheTablesOrder)
+{
+  nlohmann::json values = riemann::DefaultValues(Table);
+  values["Radii"] = { 1.25, 2.5 };
+  values["NotDeclared"] = 3;
+  const std::vector<std::string> lines = riemann::SettingPythonLines(Table, "e", values);
+  const std::vector<std::string> expected{
+    "e.SetNumberOfDirections(400)",
+    "e.SetConeAngle(180)",
+    "e.SetInitialIntegrationStep(0.01)",
+    "e.SetConeAxis(0, 0, 1)",
+    "e.SetObserver(0, 0, 0)",
+    "e.SetIntegratorType(1)  # rk4",
+    "e.RemoveAllRadii()",
+    "e.AddRadius(1.25)",
+    "e.AddRadius(2.5)",
+    "e.SetScalarBar(False)",
+    "e.SetMinimumFA(0.2)",
+  };
+  EXPECT_EQ(lines, expected);
+}
+
+TEST(SettingValues, TheGeneratedTableIsTheDeclaration)
+{
+  // vtkRiemannExponentialMap.settings.json, through cmake/RiemannSettings.py;
+  // its NumberOfDirections is declared "like" the direction grid's.
+  namespace declared = riemann::declared::vtkRiemannExponentialMap;
+  const SettingDeclaration* directions = declared::Settings.Find("NumberOfDirections");
+  ASSERT_NE(directions, nullptr);
+  EXPECT_EQ(riemann::DefaultValue(*directions), declared::Default::NumberOfDirections);
+  EXPECT_EQ(directions->Maximum, declared::Maximum::NumberOfDirections);
+  EXPECT_STREQ(directions->CommandLineAliases, "--directions,-n");
+  EXPECT_STREQ(declared::Settings.ClassName, "vtkRiemannExponentialMap");
+}

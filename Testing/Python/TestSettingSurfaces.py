@@ -1,0 +1,319 @@
+"""Every declared setting is on every surface with the declared default and range.
+
+Walks the declarations (`<Class>.settings.json` next to the VTK classes,
+Documentation/Settings.md), resolved as the build resolves them
+(cmake/RiemannSettings.py), and checks each setting on:
+
+1. the VTK class, through Python: a new object's Get<Name>() is the default;
+2. the ParaView server-manager XML made from it: the property, its
+   default_values and its range domain;
+3. the `riemann` commands that run the class: --help names the option and
+   its old spellings with the default and the range, and a value past the
+   range is refused (status 2) naming the option;
+4. the generator itself: a default and a maximum changed in a copy of a
+   declaration change the C++ constants and the XML made from it.
+
+The studio's forms, project keys and exported Python are walked by
+Apps/Studio/Testing/Scripts/TestSettingSurfaces.py.
+"""
+import copy
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import riemann
+
+SOURCE = os.path.dirname(os.environ["RIEMANN_DATA_DIR"])
+BIN = os.environ["RIEMANN_BIN_DIR"]
+BUILD = os.path.dirname(BIN)
+PARAVIEW = os.path.join(BUILD, "Common", "Settings", "ParaView")
+
+# The commands that show each declared class's settings.
+COMMANDS = {
+    "vtkRiemannExponentialMap": ["expmap"],
+    "vtkRiemannConjugateLocus": ["conjugate"],
+    "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
+}
+# The integration settings' defaults are those of the filter a command runs
+# (render: the scene's); the classes below give them.
+INTEGRATION_DEFAULTS = {
+    "trace": "vtkRiemannGeodesicTracer",
+    "expmap": "vtkRiemannExponentialMap",
+    "conjugate": "vtkRiemannConjugateLocus",
+    "connect": "vtkRiemannGeodesicConnector",
+    "connectivity": "vtkRiemannGeodesicTracer",
+    "render": None,
+}
+# Settings a command leaves out on purpose, and why: the option must not be listed.
+LEFT_OUT = {
+    ("conjugate", "MaximumError"): "the integration error follows the locus's --tolerance",
+    ("connect", "MaximumError"): "--tolerance is the connector's; dp45 integrates to a thousandth of it",
+    ("render", "MinimumIntegrationStep"): "a ray's adaptive step is bounded relative to its step",
+    ("render", "MaximumIntegrationStep"): "a ray's adaptive step is bounded relative to its step",
+}
+# Declared classes that no command runs by themselves, and why.
+NO_COMMAND = {
+    "vtkRiemannDirectionGrid": "built inside expmap and conjugate (their cone settings)",
+}
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def load_generator():
+    spec = importlib.util.spec_from_file_location(
+        "RiemannSettings", os.path.join(SOURCE, "cmake", "RiemannSettings.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def cxx_g(x):
+    """A number as C++'s ostream writes it by default (the range words)."""
+    return "%g" % x
+
+
+def shortest(x):
+    """A JSON number as SettingText writes it: whole ones as they are, others in the
+    shortest text that reads back the same (ShortestNumberText)."""
+    if isinstance(x, int):
+        return str(x)
+    for digits in range(1, 18):
+        text = "%.*g" % (digits, x)
+        if float(text) == x:
+            return text
+    return repr(x)
+
+
+def default_text(setting):
+    d, kind = setting["default"], setting["type"]
+    if kind in ("point", "direction"):
+        return ",".join(shortest(x) for x in d)
+    if kind == "number_list":
+        return ", ".join(shortest(x) for x in d) if d else "none"
+    if kind == "boolean":
+        return "true" if d else "false"
+    if kind == "choice":
+        return d
+    return shortest(d)
+
+
+# --- 1. The VTK class ---------------------------------------------------------
+def check_vtk_defaults(doc):
+    cls = doc["class"]
+    obj = getattr(riemann, cls)()
+    for s in doc["settings"]:
+        name, kind, d = s["name"], s["type"], s["default"]
+        where = "%s.%s" % (cls, name)
+        if kind == "number_list":
+            count = getattr(obj, s["commands"]["count"])()
+            got = [getattr(obj, s["commands"]["get"])(i) for i in range(count)]
+            check(got == d, "%s: the new object has %s, declared %s" % (where, got, d))
+            continue
+        got = getattr(obj, "Get" + name)()
+        want = s["choices"].index(d) if kind == "choice" else d
+        if kind in ("point", "direction"):
+            got = list(got)
+        check(got == want, "%s: the new object has %r, declared %r" % (where, got, want))
+
+
+# --- 2. The ParaView XML ------------------------------------------------------
+def check_paraview(doc):
+    cls = doc["class"]
+    path = os.path.join(PARAVIEW, cls + ".xml")
+    check(os.path.isfile(path), "%s: no ParaView XML at %s" % (cls, path))
+    if not os.path.isfile(path):
+        return
+    proxy = ET.parse(path).getroot().find("./ProxyGroup/SourceProxy")
+    check(proxy is not None and proxy.get("class") == cls, "%s: the XML's proxy is not of the class" % cls)
+    properties = {p.get("name"): p for p in proxy if p.tag.endswith("VectorProperty")}
+    check(set(properties) == {s["name"] for s in doc["settings"]},
+          "%s: XML properties %s, declared %s" % (cls, sorted(properties), [s["name"] for s in doc["settings"]]))
+    for s in doc["settings"]:
+        p = properties.get(s["name"])
+        if p is None:
+            continue
+        where = "%s.%s (ParaView)" % (cls, s["name"])
+        kind, d = s["type"], s["default"]
+        values = [float(v) for v in p.get("default_values", "").split()]
+        want = [s["choices"].index(d)] if kind == "choice" else \
+            [float(bool(d))] if kind == "boolean" else \
+            [float(x) for x in d] if isinstance(d, list) else [float(d)]
+        check(values == want, "%s: default_values %s, declared %s" % (where, values, want))
+        check(p.get("label") == s.get("label", p.get("label")), "%s: label %s" % (where, p.get("label")))
+        domain = p.find("IntRangeDomain") if kind == "integer" else p.find("DoubleRangeDomain")
+        if "minimum" in s or "maximum" in s:
+            check(domain is not None, "%s: no range domain" % where)
+            if domain is not None:
+                if "minimum" in s:
+                    check(float(domain.get("min")) == s["minimum"], "%s: min %s" % (where, domain.get("min")))
+                if "maximum" in s:
+                    check(float(domain.get("max")) == s["maximum"], "%s: max %s" % (where, domain.get("max")))
+        if kind == "choice":
+            entries = [e.get("text") for e in p.find("EnumerationDomain")]
+            check(entries == s["choices"], "%s: entries %s" % (where, entries))
+
+
+# --- 3. The commands ------------------------------------------------------------
+def command_line_name(name):
+    out = "--"
+    for i, c in enumerate(name):
+        if c.isupper() and i > 0 and not name[i - 1].isupper():
+            out += "-"
+        out += c.lower()
+    return out
+
+
+def help_entry(help_text, option):
+    """What --help says of `option`: its names (with the old spellings) and its help,
+    which CLI11 writes on the names' line or the next one."""
+    lines = help_text.splitlines()
+    for i, line in enumerate(lines):
+        words = line.split()
+        if not words or option not in words[0].split(","):
+            continue
+        entry = [line]
+        for more in lines[i + 1:]:
+            if more.startswith("    ") and not more.strip().startswith("-"):
+                entry.append(more)
+            else:
+                break
+        return " ".join(l.strip() for l in entry)
+    return None
+
+
+def command_default(cls, command, s):
+    """What a command's --help says the default is: the declared one, or for the
+    integration settings the command's filter's own (render: the scene's)."""
+    if cls != "vtkRiemannIntegrationSettings":
+        return "(default %s)" % default_text(s)
+    filter_class = INTEGRATION_DEFAULTS[command]
+    if filter_class is None:
+        return "(default: the scene's)"
+    value = getter_of(getattr(riemann, filter_class)().GetIntegrationSettings(), s)
+    return "(default %s)" % default_text(dict(s, default=value))
+
+
+def getter_of(obj, s):
+    value = getattr(obj, "Get" + s["name"])()
+    return s["choices"][value] if s["type"] == "choice" else value
+
+
+def past_range(s):
+    if s["type"] in ("integer", "number") and "maximum" in s:
+        x = s["maximum"] * 2 + 1
+        return str(int(x)) if s["type"] == "integer" else cxx_g(x)
+    if s["type"] == "direction":
+        return "0,0,0"
+    if s["type"] == "choice":
+        return "nothing-of-the-sort"
+    return None
+
+
+def check_commands(doc):
+    cls = doc["class"]
+    commands = COMMANDS.get(cls)
+    check(commands is not None or cls in NO_COMMAND,
+          "%s: no command runs it and it is not in NO_COMMAND (say which command shows its settings)" % cls)
+    for command in commands or []:
+        result = subprocess.run([os.path.join(BIN, "riemann"), command, "--help"],
+                                capture_output=True, text=True)
+        check(result.returncode == 0, "riemann %s --help: status %d" % (command, result.returncode))
+        text = result.stdout
+        for s in doc["settings"]:
+            where = "riemann %s: %s" % (command, s["name"])
+            option = command_line_name(s["name"])
+            entry = help_entry(text, option)
+            if (command, s["name"]) in LEFT_OUT:
+                check(entry is None, "%s: left out (%s) but listed" % (where, LEFT_OUT[(command, s["name"])]))
+                continue
+            check(entry is not None, "%s: --help has no %s" % (where, option))
+            if entry is None:
+                continue
+            for alias in s.get("aliases", {}).get("cli", []):
+                check(alias in entry, "%s: --help does not name the old spelling %s: %s" % (where, alias, entry))
+            want = command_default(cls, command, s)
+            check(want in entry, "%s: --help does not say %s: %s" % (where, want, entry))
+            for bound in ("minimum", "maximum"):
+                if bound in s and s["type"] in ("integer", "number", "number_list"):
+                    check(cxx_g(s[bound]) in entry, "%s: --help does not give the %s %s: %s"
+                          % (where, bound, cxx_g(s[bound]), entry))
+            bad = past_range(s)
+            if bad is not None:
+                metric = os.path.join(SOURCE, "Data", "metrics", "euclidean.json")
+                run = subprocess.run([os.path.join(BIN, "riemann"), command, "-m", metric,
+                                      option, bad, "-o", "never.vtp"], capture_output=True, text=True)
+                check(run.returncode == 2 and option in run.stderr,
+                      "%s: %s %s: status %d, %s" % (where, option, bad, run.returncode, run.stderr.strip()))
+
+
+# --- 4. The generator -----------------------------------------------------------
+def check_generator_follows(generator, files):
+    """A default and a maximum changed in the declaration change what is made from it."""
+    with tempfile.TemporaryDirectory() as folder:
+        copies = []
+        for f in files:
+            target = os.path.join(folder, os.path.basename(f))
+            with open(f) as src, open(target, "w") as dst:
+                dst.write(src.read())
+            copies.append(target)
+        path = os.path.join(folder, "vtkRiemannExponentialMap.settings.json")
+        with open(path) as f:
+            doc = json.load(f)
+        for s in doc["settings"]:
+            if s.get("like") == "vtkRiemannDirectionGrid.NumberOfDirections":
+                s["default"], s["maximum"] = 123, 5000
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        out = os.path.join(folder, "out")
+        run = subprocess.run([sys.executable, os.path.join(SOURCE, "cmake", "RiemannSettings.py"),
+                              "--output", out] + copies, capture_output=True, text=True)
+        check(run.returncode == 0, "the generator failed on a changed copy: " + run.stderr)
+        if run.returncode != 0:
+            return
+        with open(os.path.join(out, "RiemannExponentialMapDeclaration.h")) as f:
+            header = f.read()
+        check("constexpr long long NumberOfDirections = 123;" in header,
+              "the changed default is not the class's constant")
+        check('"123", 1.0, false, 5000.0' in header, "the changed default and range are not in the table")
+        xml = ET.parse(os.path.join(out, "ParaView", "vtkRiemannExponentialMap.xml")).getroot()
+        p = xml.find(".//IntVectorProperty[@name='NumberOfDirections']")
+        check(p.get("default_values") == "123" and p.find("IntRangeDomain").get("max") == "5000",
+              "the changed default and range are not in the ParaView XML")
+        # A malformed declaration stops the build with its file and key.
+        doc["settings"][1]["default"] = "many"
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        run = subprocess.run([sys.executable, os.path.join(SOURCE, "cmake", "RiemannSettings.py"),
+                              "--output", out] + copies, capture_output=True, text=True)
+        check(run.returncode == 1 and "vtkRiemannExponentialMap" in run.stderr and "default" in run.stderr,
+              "a malformed declaration: status %d, %s" % (run.returncode, run.stderr.strip()))
+
+
+def main():
+    generator = load_generator()
+    files, docs = generator.declarations_of(SOURCE)
+    check(len(files) >= 4, "only %d declarations found under %s" % (len(files), SOURCE))
+    count = 0
+    for doc in docs:
+        check_vtk_defaults(doc)
+        check_paraview(doc)
+        check_commands(doc)
+        count += len(doc["settings"])
+    check_generator_follows(generator, files)
+    print("%d classes, %d declared settings walked" % (len(docs), count))
+    for f in failures:
+        print("FAIL: " + f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
