@@ -2,6 +2,9 @@
 // the picked ray is: tubes, and a ball where they end.
 #include "PipelineItems.h"
 
+#include "DeclaredProperties.h"
+#include "vtkRiemannGeodesicConnectorSettingAccess.h"
+
 #include "ColorMaps.h"
 
 #include "vtkRiemannGeodesicConnector.h"
@@ -22,12 +25,20 @@ namespace riemann
 {
 namespace studio
 {
+namespace
+{
+/// A new connector's settings (its own integration defaults: dp45).
+nlohmann::json ConnectDefaults()
+{
+  vtkNew<vtkRiemannGeodesicConnector> filter;
+  return FilterDefaults(
+    riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
+    nlohmann::json::object());
+}
+}
+
 ConnectItem::ConnectItem(const QString& name)
-  : PipelineItem(name,
-      WithIntegrationDefaults({ { "StartPosition", { -1.5, 0.2, 0.0 } },
-                                { "EndPosition", { 1.5, -0.2, 0.3 } }, { "NumberOfDirections", 2000 },
-                                { "Tolerance", 1e-9 } },
-        "dp45", 10.0))
+  : PipelineItem(name, ConnectDefaults())
 {
   // The picked ray's look (OutsideView::ShowPickedRay): magenta tubes.
   this->Tubes->SetNumberOfSides(8);
@@ -46,35 +57,9 @@ ConnectItem::ConnectItem(const QString& name)
 
 std::vector<PropertySpec> ConnectItem::Properties() const
 {
-  PropertySpec from;
-  from.Key = "StartPosition";
-  from.Label = "From";
-  from.Type = PropertySpec::Vector3;
-  from.Help = "The point p the geodesics leave (Ctrl+click in the outside view picks it, then To)";
-
-  PropertySpec to;
-  to.Key = "EndPosition";
-  to.Label = "To";
-  to.Type = PropertySpec::Vector3;
-  to.Help = "The point q they reach";
-
-  PropertySpec count;
-  count.Key = "NumberOfDirections";
-  count.Label = "Directions";
-  count.Type = PropertySpec::Integer;
-  count.Minimum = 1;
-  count.Maximum = 1000000;
-  count.Help = "Directions of the shooting grid (more finds geodesics that only a narrow pencil "
-               "sends past q)";
-
-  PropertySpec tolerance;
-  tolerance.Key = "Tolerance";
-  tolerance.Label = "Tolerance";
-  tolerance.Minimum = vtkRiemannGeodesicConnector::MinimumTolerance;
-  tolerance.Maximum = vtkRiemannGeodesicConnector::MaximumTolerance;
-  tolerance.Help = "What |end - q| each geodesic reaches";
-
-  return this->WithIntegrationAndDisplay({ from, to, count, tolerance });
+  // Ctrl+click in the outside view picks From, then To (TakePickedPoint).
+  return this->WithIntegrationAndDisplay(
+    DeclaredPropertySpecs(riemann::declared::vtkRiemannGeodesicConnector::Settings));
 }
 
 vtkSmartPointer<vtkAlgorithm> ConnectItem::MakeJob(const JobInputs& inputs) const
@@ -84,13 +69,7 @@ vtkSmartPointer<vtkAlgorithm> ConnectItem::MakeJob(const JobInputs& inputs) cons
   metric->ShallowCopy(inputs.Metric);
   connector->SetMetric(metric);
   this->ApplyIntegration(connector->GetIntegrationSettings());
-  double from[3], to[3];
-  this->Vector("StartPosition", from, 3);
-  this->Vector("EndPosition", to, 3);
-  connector->SetStartPosition(from);
-  connector->SetEndPosition(to);
-  connector->SetNumberOfDirections(this->Integer("NumberOfDirections"));
-  connector->SetTolerance(this->Number("Tolerance"));
+  riemann::settings::ApplySettings(connector, this->Settings());
   return connector;
 }
 
@@ -120,19 +99,8 @@ void ConnectItem::UpdateDisplay()
 
 std::vector<std::string> ConnectItem::PythonLines(const std::string& var) const
 {
-  std::vector<std::string> lines{
-    var + " = riemann.vtkRiemannGeodesicConnector()",
-    var + ".SetMetric(metric)",
-    var + ".SetStartPosition" + PythonTuple(this->Settings().at("StartPosition")),
-    var + ".SetEndPosition" + PythonTuple(this->Settings().at("EndPosition")),
-    var + ".SetNumberOfDirections(" + std::to_string(this->Integer("NumberOfDirections")) + ")",
-    var + ".SetTolerance(" + PythonNumber(this->Number("Tolerance")) + ")",
-  };
-  for (const std::string& line : this->IntegrationPythonLines(var))
-  {
-    lines.push_back(line);
-  }
-  return lines;
+  return FilterPythonLines(
+    riemann::declared::vtkRiemannGeodesicConnector::Settings, var, this->Settings());
 }
 
 bool ConnectItem::TakePickedPoint(const double point[3])

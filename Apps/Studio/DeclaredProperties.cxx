@@ -69,7 +69,10 @@ nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSett
   const nlohmann::json& own)
 {
   declared.update(IntegrationValues(integration));
-  declared.update(own);
+  if (own.is_object())
+  {
+    declared.update(own);
+  }
   return declared;
 }
 

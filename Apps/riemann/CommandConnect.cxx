@@ -4,13 +4,14 @@
 // with one seed_id per geodesic); one line per geodesic on stdout (length,
 // Morse index, whether q is conjugate, whether it is the shortest).
 #include "CliUtilities.h"
+#include "DeclaredOptions.h"
 #include "IntegrationOptions.h"
 #include "Commands.h"
 #include "CsvWriter.h"
 #include "Distributed.h"
 #include "GeodesicCsv.h"
-#include "GeodesicTrace.h" // For the integration defaults
 #include "ProgressBar.h"
+#include "vtkRiemannGeodesicConnectorSettingAccess.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -35,15 +36,14 @@ namespace
 struct ConnectArguments
 {
   std::string Metric;
-  std::string From;
-  std::string To;
-  long long Directions = 2000;
+  /// The connector's settings (vtkRiemannGeodesicConnector.settings.json):
+  /// --from and --to are required; --tolerance is what |end - q| must reach
+  /// (dp45 then integrates to tolerance / 1000), as conjugate's is the
+  /// accuracy of its answer.
+  std::unique_ptr<DeclaredOptions> Settings;
   /// The integration options but MaximumError, with the connector's defaults
-  /// (Newton needs dp45's error control). --tolerance is the connector's:
-  /// what |end - q| must reach (dp45 then integrates to tolerance / 1000),
-  /// as conjugate's is the accuracy of its answer.
+  /// (Newton needs dp45's error control).
   std::unique_ptr<DeclaredOptions> Integration;
-  double Tolerance = 1e-9; // vtkRiemannGeodesicConnector's default
   std::string Compress = "lz4";
   std::string Output;
 };
@@ -91,15 +91,6 @@ void RunConnect(const ConnectArguments& args)
                   "(the Newton refinements need the candidates of every direction)",
       2);
   }
-  // --tolerance is the connector's (what |end - q| reaches), not dp45's.
-  if (!(args.Tolerance >= vtkRiemannGeodesicConnector::MinimumTolerance &&
-        args.Tolerance <= vtkRiemannGeodesicConnector::MaximumTolerance))
-  {
-    throw Failure("--tolerance " + FormatNumber(args.Tolerance) + ": expected a number from " +
-        FormatNumber(vtkRiemannGeodesicConnector::MinimumTolerance) + " to " +
-        FormatNumber(vtkRiemannGeodesicConnector::MaximumTolerance) + " (what |end - q| reaches)",
-      2);
-  }
   const double length = args.Integration->Number("MaximumPropagation");
   const double step = args.Integration->Number("InitialIntegrationStep");
   if (step > length)
@@ -108,10 +99,10 @@ void RunConnect(const ConnectArguments& args)
         FormatNumber(length),
       2);
   }
-  double from[3], to[3];
-  ParseVector3(args.From, "--from", from);
-  ParseVector3(args.To, "--to", to);
-  if (from[0] == to[0] && from[1] == to[1] && from[2] == to[2])
+  const nlohmann::json settings = args.Settings->Given();
+  const nlohmann::json from = settings.at("StartPosition");
+  const nlohmann::json to = settings.at("EndPosition");
+  if (from == to)
   {
     throw Failure("--from and --to are the same point: give two points to join", 2);
   }
@@ -121,10 +112,7 @@ void RunConnect(const ConnectArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(connector);
   connector->SetMetric(metric);
-  connector->SetStartPosition(from);
-  connector->SetEndPosition(to);
-  connector->SetTolerance(args.Tolerance);
-  connector->SetNumberOfDirections(static_cast<int>(args.Directions));
+  riemann::settings::ApplySettings(connector, settings);
   ApplyIntegrationOptions(*args.Integration, connector->GetIntegrationSettings());
   vtkNew<ProgressBar> progress;
   progress->Observe(connector, "riemann connect", ProgressBar::StderrIsTerminal());
@@ -140,8 +128,12 @@ void RunConnect(const ConnectArguments& args)
     });
   PrintGeodesics(geodesics);
   std::cerr << "riemann connect: " << connector->GetNumberOfGeodesics() << " geodesic(s) from "
-            << args.From << " to " << args.To << " up to arc length " << FormatNumber(length)
-            << " (" << args.Directions << " shooting directions) -> " << args.Output << "\n";
+            << connector->GetStartPosition()[0] << "," << connector->GetStartPosition()[1] << ","
+            << connector->GetStartPosition()[2] << " to " << connector->GetEndPosition()[0] << ","
+            << connector->GetEndPosition()[1] << "," << connector->GetEndPosition()[2]
+            << " up to arc length " << FormatNumber(length) << " ("
+            << connector->GetNumberOfDirections() << " shooting directions) -> " << args.Output
+            << "\n";
 }
 } // namespace
 
@@ -154,19 +146,12 @@ void RegisterConnectCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--from", args->From, "The point p X,Y,Z the geodesics leave")
-    ->required()
-    ->check(Point3());
-  command->add_option("--to", args->To, "The point q X,Y,Z they reach")->required()->check(Point3());
-  command
-    ->add_option("--directions,-n", args->Directions,
-      "Directions of the shooting grid (a Fibonacci lattice, g-uniform at p; default 2000)")
-    ->check(WholeNumber(1, 1000000));
+  args->Settings = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannGeodesicConnector::Settings);
+  args->Settings->OptionOf("StartPosition")->required();
+  args->Settings->OptionOf("EndPosition")->required();
   args->Integration = AddIntegrationOptions(
     command, vtkNew<vtkRiemannGeodesicConnector>()->GetIntegrationSettings(), "MaximumError");
-  command->add_option("--tolerance", args->Tolerance,
-    "What |end - q| each geodesic reaches (coordinate distance, from 1e-13 to 0.01); dp45 "
-    "integrates to tolerance / 1000 (default 1e-09)");
   AddCompressOption(command, args->Compress);
   command->add_option("--output,-o", args->Output, "Output file: .vtp or .csv")->required();
   command->callback([args]() { RunConnect(*args); });

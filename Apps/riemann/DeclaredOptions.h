@@ -49,6 +49,13 @@ public:
   std::string Text(const std::string& name) const { return this->Value(name).get<std::string>(); }
   ///@}
 
+  /// The option of setting `name` (to make it required, say); null when left out.
+  CLI::Option* OptionOf(const std::string& name) const
+  {
+    const auto found = this->Options.find(name);
+    return found == this->Options.end() ? nullptr : found->second;
+  }
+
   /// The option that sets `name` ("--radii"), for messages.
   static std::string OptionOf(const SettingTable& table, const std::string& name);
 

@@ -1,4 +1,5 @@
 #include "vtkRiemannGeodesicConnector.h"
+#include "RiemannGeodesicConnectorDeclaration.h"
 
 #include "GeodesicConnector.h"
 #include "Metric.h"
@@ -17,6 +18,7 @@
 #include "vtkRiemannParallelBatches.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <sstream>
@@ -26,8 +28,24 @@
 
 vtkStandardNewMacro(vtkRiemannGeodesicConnector);
 
-vtkRiemannGeodesicConnector::vtkRiemannGeodesicConnector()
+namespace
 {
+namespace connectorDeclared = riemann::declared::vtkRiemannGeodesicConnector;
+// The wrapped header's constants are the declared range (vtkRiemannGeodesicConnector.settings.json).
+static_assert(vtkRiemannGeodesicConnector::MinimumTolerance == connectorDeclared::Minimum::Tolerance &&
+    vtkRiemannGeodesicConnector::MaximumTolerance == connectorDeclared::Maximum::Tolerance,
+  "the tolerance's range is declared in vtkRiemannGeodesicConnector.settings.json");
+}
+
+vtkRiemannGeodesicConnector::vtkRiemannGeodesicConnector()
+  : NumberOfDirections(static_cast<int>(connectorDeclared::Default::NumberOfDirections))
+  , MaximumNumberOfIterations(static_cast<int>(connectorDeclared::Default::MaximumNumberOfIterations))
+{
+  std::copy(connectorDeclared::Default::StartPosition, connectorDeclared::Default::StartPosition + 3,
+    this->StartPosition);
+  std::copy(connectorDeclared::Default::EndPosition, connectorDeclared::Default::EndPosition + 3,
+    this->EndPosition);
+  this->Tolerance = connectorDeclared::Default::Tolerance;
   this->SetNumberOfInputPorts(0);
   ApplyConnectionDefaults(this->GetIntegrationSettings());
 }
@@ -75,15 +93,17 @@ std::string CheckProperties(const double start[3], const double end[3], double t
   {
     return tolerable;
   }
-  if (directions < 1 || directions > 1000000)
+  const int mostDirections = static_cast<int>(connectorDeclared::Maximum::NumberOfDirections);
+  if (directions < 1 || directions > mostDirections)
   {
     return "NumberOfDirections is " + std::to_string(directions) +
-      ": expected a whole number from 1 to 1000000.";
+      ": expected a whole number from 1 to " + std::to_string(mostDirections) + ".";
   }
-  if (iterations < 1 || iterations > 1000)
+  const int mostIterations = static_cast<int>(connectorDeclared::Maximum::MaximumNumberOfIterations);
+  if (iterations < 1 || iterations > mostIterations)
   {
     return "MaximumNumberOfIterations is " + std::to_string(iterations) +
-      ": expected a whole number from 1 to 1000.";
+      ": expected a whole number from 1 to " + std::to_string(mostIterations) + ".";
   }
   return std::string();
 }

@@ -62,7 +62,8 @@ public:
   ///@{
   /// |end - EndPosition| (coordinate distance) each geodesic reaches, in
   /// [MinimumTolerance, MaximumTolerance] (below 1e-13 the integration's own
-  /// rounding would keep Newton from it). Default 1e-9.
+  /// rounding would keep Newton from it). Defaults, ranges and help of this
+  /// class's settings: vtkRiemannGeodesicConnector.settings.json.
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   static constexpr double MinimumTolerance = 1e-13;
@@ -80,13 +81,13 @@ public:
 
   ///@{
   /// Directions of the shooting grid, in [1, 1000000]. More finds geodesics
-  /// that only a narrow pencil of directions sends past q. Default 2000.
+  /// that only a narrow pencil of directions sends past q.
   vtkSetMacro(NumberOfDirections, int);
   vtkGetMacro(NumberOfDirections, int);
   ///@}
 
   ///@{
-  /// Newton iterations per candidate at most, in [1, 1000]. Default 40.
+  /// Newton iterations per candidate at most, in [1, 1000].
   vtkSetMacro(MaximumNumberOfIterations, int);
   vtkGetMacro(MaximumNumberOfIterations, int);
   ///@}
@@ -101,11 +102,12 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double StartPosition[3] = { 0.0, 0.0, 0.0 };
-  double EndPosition[3] = { 1.0, 0.0, 0.0 };
-  double Tolerance = 1e-9;
-  int NumberOfDirections = 2000;
-  int MaximumNumberOfIterations = 40;
+  // The declared defaults (vtkRiemannGeodesicConnector.settings.json), set in the constructor.
+  double StartPosition[3];
+  double EndPosition[3];
+  double Tolerance;
+  int NumberOfDirections;
+  int MaximumNumberOfIterations;
   int NumberOfGeodesics = 0;
 
 private:

@@ -36,6 +36,7 @@ PARAVIEW = os.path.join(BUILD, "Common", "Settings", "ParaView")
 COMMANDS = {
     "vtkRiemannExponentialMap": ["expmap"],
     "vtkRiemannConjugateLocus": ["conjugate"],
+    "vtkRiemannGeodesicConnector": ["connect"],
     "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
 }
 # The integration settings' defaults are those of the filter a command runs

@@ -652,7 +652,7 @@ class ConnectTests(TempDirTest):
     def test_bad_input_is_refused_before_any_work(self):
         out = os.path.join(self.dir, "c.csv")
         for args, words in ((["--to", "0.5,0,0"], "the same point"),
-                            (["--to", "1,1,1", "--tolerance", "0.5"], "--tolerance 0.5: expected a number from 1e-13 to 0.01"),
+                            (["--to", "1,1,1", "--tolerance", "0.5"], '--tolerance: expected a number from 1e-13 to 0.01, got "0.5"'),
                             (["--to", "1,1,1", "-o", os.path.join(self.dir, "c.png")], "must end in .vtp or .csv")):
             with self.subTest(args=args):
                 line = ["connect", "-m", self.SPHERE, "--from", "0.5,0,0", *args]
