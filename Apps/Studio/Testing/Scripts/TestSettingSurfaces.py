@@ -5,7 +5,8 @@ For each kind of item whose toolkit class has a declaration
 setting of it:
 
 1. the properties panel has its field, with the declared label, type and range;
-2. a new item has the declared default;
+2. a new item has the declared default (and the integration settings'
+   fields, with the declared labels, types and ranges);
 3. a project saved with other values and opened again gives those values back
    under the property's name (the project key);
 4. the exported Python sets it, and run, builds filters that hold those values.
@@ -115,6 +116,15 @@ def main():
             check(field["help"].startswith(s["help"]), "%s: help %r" % (where, field["help"]))
             check(same(item[s["name"]], s["default"]),
                   "%s: a new item has %r, declared %r" % (where, item[s["name"]], s["default"]))
+        # Every item that integrates shows the declared integration settings.
+        for s in declared["vtkRiemannIntegrationSettings"]["settings"]:
+            field = fields.get(s["name"])
+            check(field is not None and field["label"] == s.get("label") and
+                  field["type"] == FIELD_TYPES[s["type"]],
+                  "%s: integration field %s: %r" % (kind, s["name"], field))
+            if field is not None and s["type"] in ("integer", "number"):
+                check(field["minimum"] == s.get("minimum", -1e300) and field["maximum"] == s.get("maximum", 1e300),
+                      "%s: integration field %s range %s..%s" % (kind, s["name"], field["minimum"], field["maximum"]))
         # Other values for every declared setting, and a short length (quick jobs).
         values[name] = {s["name"]: other_value(s) for s in doc["settings"]}
         studio.set(name, MaximumPropagation=1.0, **values[name])
