@@ -4,8 +4,11 @@ Reads the `#include "..."` lines of every library source under Common/,
 Filters/ and Rendering/ (tests, apps and generated headers aside) and checks:
 
 1. Layers: a file of a library includes headers of its own library and of
-   the libraries LAYERS lets it use, nothing above (the CMake targets'
-   dependencies, Documentation/Architecture.md's module graph).
+   the libraries it depends on, nothing else. The dependencies are CMake's
+   (target_link_libraries, vtk_module_link, vtk.module), read from the
+   build's RiemannModuleGraph.json (cmake/RiemannModuleGraph.cmake): they
+   are declared once, there, and an include of a library the target does
+   not link fails here even where the include path happens to allow it.
 2. Components: no cycle between components. A component is a header and
    the source of the same name (Foo.h + Foo.cxx), as in Lakos' physical
    design. A source without a header of its name belongs to the component
@@ -15,48 +18,35 @@ Filters/ and Rendering/ (tests, apps and generated headers aside) and checks:
    GlslSource.cxx counts as a cycle, JacobiField.cxx <-> JacobiFieldInternals.h
    does not.
 
-Usage: CheckIncludes.py SOURCE_DIR
+Usage: CheckIncludes.py SOURCE_DIR MODULE_GRAPH_JSON
 """
 import os
 import re
 import sys
 
-# Library folder -> the library folders its files may include from.
-CORE = ["Common/Settings", "Common/Packets", "Common/Metric", "Common/Expressions", "Common/Jacobi",
-        "Common/Distance", "Common/MetricFormat"]
-LAYERS = {
-    "Common/Settings": [],
-    "Common/Packets": [],
-    "Common/Metric": ["Common/Packets", "Common/Settings"],
-    "Common/Expressions": ["Common/Metric", "Common/Packets", "Common/Settings"],
-    "Common/Jacobi": ["Common/Metric", "Common/Packets", "Common/Settings"],
-    "Common/Distance": ["Common/Metric", "Common/Packets", "Common/Settings"],
-    "Common/MetricFormat": ["Common/Expressions", "Common/Metric", "Common/Packets", "Common/Settings"],
-    "Rendering/Core": CORE,
-    "Rendering/Meshes": ["Rendering/Core"] + CORE,
-    "Rendering/ImageIO": ["Rendering/Core"] + CORE,
-    "Common/Core": CORE,
-    "Filters/Geodesics": ["Common/Core"] + CORE,
-    "Filters/Fields": ["Common/Core"] + CORE,
-    "Rendering/Scene": ["Common/Core", "Rendering/Core"] + CORE,
-    "Rendering/CPU": ["Rendering/Scene", "Rendering/ImageIO", "Rendering/Meshes", "Common/Core",
-                      "Rendering/Core"] + CORE,
-    "Filters/Rays": ["Filters/Geodesics", "Rendering/Scene", "Rendering/Meshes", "Common/Core",
-                     "Rendering/Core"] + CORE,
-    "Rendering/OpenGL": ["Rendering/ImageIO", "Rendering/Meshes", "Rendering/Scene",
-                         "Rendering/Core", "Common/Core"] + CORE,
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ModuleGraph import ModuleGraph  # noqa: E402
+
+
+def layers_of(graph):
+    """Library folder -> the library folders its files may include from: those
+    of every library it depends on, as CMake declares (RiemannModuleGraph.json)."""
+    return {graph.folder(name): sorted(graph.folder(other) for other in graph.closure(name)
+                                       if other in graph.libraries)
+            for name in graph.names()}
+
+
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
-def library_files(source_dir):
+def library_files(source_dir, layers):
     """{file name: (library folder, path)} for every library source."""
     files = {}
     problems = []
-    for library in LAYERS:
+    for library in layers:
         folder = os.path.join(source_dir, library)
         if not os.path.isdir(folder):
-            problems.append("%s: no such folder (update LAYERS)" % library)
+            problems.append("%s: no such folder" % library)
             continue
         for name in sorted(os.listdir(folder)):
             if name.endswith((".h", ".cxx")):
@@ -108,8 +98,9 @@ def find_cycle(graph):
     return None
 
 
-def main(source_dir):
-    files, problems = library_files(source_dir)
+def main(source_dir, graph_file):
+    layers = layers_of(ModuleGraph(graph_file))
+    files, problems = library_files(source_dir, layers)
     included = {name: includes_of(path, files) for name, (_, path) in files.items()}
 
     # 1. Layers.
@@ -117,9 +108,9 @@ def main(source_dir):
         library = files[name][0]
         for target in targets:
             other = files[target][0]
-            if other != library and other not in LAYERS[library]:
-                problems.append("%s (%s) includes %s (%s): not a library below it"
-                                % (name, library, target, other))
+            if other != library and other not in layers[library]:
+                problems.append("%s (%s) includes %s (%s): %s does not depend on it in CMake"
+                                % (name, library, target, other, library))
 
     # 2. Components.
     first_include = {name: (targets[0] if targets else None) for name, targets in included.items()}
@@ -138,11 +129,11 @@ def main(source_dir):
         problems.append("include cycle between components: " + " -> ".join(cycle))
         graph[cycle[0]].discard(cycle[1])  # report each cycle once, then look for more
 
-    print("%d files, %d components, %d libraries checked" % (len(files), len(graph), len(LAYERS)))
+    print("%d files, %d components, %d libraries checked" % (len(files), len(graph), len(layers)))
     for p in problems:
         print("FAIL: " + p)
     return 1 if problems else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1]))
+    sys.exit(main(sys.argv[1], sys.argv[2]))

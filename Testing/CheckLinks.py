@@ -1,9 +1,10 @@
 """Each third-party library is linked only where its folder says (issue 29).
 
 Reads the direct dependencies (DT_NEEDED, `readelf -d`) of every
-libRiemann*.so in the build and checks them against the table below: the
-layer rules of Documentation/Architecture.md as sonames. A library may need
-only the third-party libraries and Riemann libraries listed for it (VTK's
+libRiemann*.so in the build and checks them: a library may need only the
+Riemann libraries CMake declares it depends on (RiemannModuleGraph.json,
+directly or through others), VTK only if it is a VTK module, and only the
+third-party libraries listed for it below (VTK's
 own libvtk*, the C and C++ runtimes and zlib-like system pieces are checked
 apart: none in the VTK-free base layer).
 
@@ -11,7 +12,7 @@ KNOWN lists what is linked today against the intended layering, with why:
 the test reports them, and fails on anything else (a new violation), and on
 a known one that went away (so that the table is kept true).
 
-Usage: CheckLinks.py BUILD_LIB_DIR
+Usage: CheckLinks.py BUILD_LIB_DIR MODULE_GRAPH_JSON
 """
 import os
 import re
@@ -22,42 +23,49 @@ import sys
 RUNTIME = re.compile(r"^(libstdc\+\+|libm|libc|libgcc_s|ld-linux-x86-64|libpthread|libdl)\.so")
 VTK = re.compile(r"^libvtk")
 
-# Riemann library -> (third-party soname prefixes, Riemann libraries, may it need VTK)
-CORE = ["RiemannCommonSettings", "RiemannCommonMetricFormat", "RiemannCommonExpressions", "RiemannCommonJacobi",
-        "RiemannCommonDistance", "RiemannCommonMetric", "RiemannCommonPackets"]
-ALLOWED = {
-    # The VTK-free core, bottom up: the packet engine (Highway), the metric
-    # core (nothing but the engine), typed expressions (GiNaC; Highway for
-    # their packet interpreter), Jacobi fields, distance fields, the JSON
-    # metric format.
-    "RiemannCommonSettings": ([], [], False),
-    "RiemannCommonPackets": (["libhwy"], [], False),
-    "RiemannCommonMetric": ([], ["RiemannCommonPackets", "RiemannCommonSettings"], False),
-    "RiemannCommonExpressions": (["libginac", "libcln", "libhwy"],
-                                 ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
-    "RiemannCommonJacobi": ([], ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
-    "RiemannCommonDistance": ([], ["RiemannCommonMetric", "RiemannCommonPackets", "RiemannCommonSettings"], False),
-    "RiemannCommonMetricFormat": ([], ["RiemannCommonExpressions", "RiemannCommonMetric",
-                                       "RiemannCommonPackets", "RiemannCommonSettings"], False),
-    "RiemannRenderingCore": ([], CORE, False),
-    "RiemannRenderingMeshes": (["libembree3"], ["RiemannRenderingCore"] + CORE, False),
-    "RiemannRenderingImageIO": (["libOpenImageIO", "libOpenImageIO_Util"],
-                                ["RiemannRenderingCore"] + CORE, False),
-    "RiemannCommonCore": (["libz"], CORE, True),
-    "RiemannFiltersGeodesics": (["libtbb"], ["RiemannCommonCore"] + CORE, True),
-    "RiemannFiltersFields": (["libtbb"], ["RiemannCommonCore"] + CORE, True),
-    "RiemannRenderingScene": ([], ["RiemannCommonCore", "RiemannRenderingCore"] + CORE, True),
-    "RiemannRenderingCPU": (["libtbb"],
-                            ["RiemannRenderingScene", "RiemannRenderingImageIO",
-                             "RiemannRenderingMeshes", "RiemannCommonCore", "RiemannRenderingCore"] + CORE,
-                            True),
-    "RiemannFiltersRays": (["libtbb"],
-                           ["RiemannFiltersGeodesics", "RiemannRenderingScene", "RiemannRenderingMeshes",
-                            "RiemannCommonCore", "RiemannRenderingCore"] + CORE, True),
-    "RiemannRenderingOpenGL": (["libGLEW"],
-                               ["RiemannRenderingImageIO", "RiemannRenderingMeshes", "RiemannRenderingScene",
-                                "RiemannRenderingCore", "RiemannCommonCore"] + CORE, True),
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ModuleGraph import ModuleGraph  # noqa: E402
+
+# Riemann library -> the soname prefixes of the third-party libraries it may
+# need. Which Riemann libraries each may need, and whether VTK, is not
+# written here: it is CMake's declaration (RiemannModuleGraph.json). This
+# table is about what the linker brings for the third-party targets (the
+# GiNaC target needs libcln; VTK's SMP backend brings libtbb): Embree only
+# in Rendering/Meshes, OpenImageIO only in Rendering/ImageIO, Highway only in
+# Common/Packets and Common/Expressions, GiNaC only in Common/Expressions.
+THIRD_PARTY = {
+    "RiemannCommonSettings": [],
+    "RiemannCommonPackets": ["libhwy"],
+    "RiemannCommonMetric": [],
+    "RiemannCommonExpressions": ["libginac", "libcln", "libhwy"],
+    "RiemannCommonJacobi": [],
+    "RiemannCommonDistance": [],
+    "RiemannCommonTractography": [],
+    "RiemannCommonMetricFormat": [],
+    "RiemannCommonObserver": [],
+    "RiemannRenderingCore": [],
+    "RiemannRenderingMeshes": ["libembree3"],
+    "RiemannRenderingImageIO": ["libOpenImageIO", "libOpenImageIO_Util"],
+    "RiemannCommonCore": ["libz"],
+    "RiemannFiltersGeodesics": ["libtbb"],
+    "RiemannFiltersFields": ["libtbb"],
+    "RiemannRenderingScene": [],
+    "RiemannRenderingCPU": ["libtbb"],
+    "RiemannFiltersRays": ["libtbb"],
+    "RiemannRenderingOpenGL": ["libGLEW"],
 }
+
+
+def allowed_of(graph):
+    """Riemann library file name -> (third-party prefixes, Riemann libraries, may it need VTK)."""
+    allowed = {}
+    for name in graph.names():
+        library = graph.file_name(name)
+        allowed[library] = (THIRD_PARTY.get(library),
+                            sorted(graph.file_name(other) for other in graph.closure(name)),
+                            graph.libraries[name]["kind"] == "vtk-module")
+    return allowed
+
 
 # Linked today against the layering above: (library, dependency) -> why.
 KNOWN = {
@@ -77,17 +85,21 @@ def riemann_name(soname):
     return m.group(1) if m else None
 
 
-def main(folder):
+def main(folder, graph_file):
     problems, seen_known, checked = [], set(), 0
+    ALLOWED = allowed_of(ModuleGraph(graph_file))
     for name in sorted(os.listdir(folder)):
         m = re.match(r"^lib(Riemann\w+)\.so$", name)
         if not m:
             continue
         library = m.group(1)
         if library not in ALLOWED:
-            problems.append("%s: not in CheckLinks.py's table (add its rule)" % library)
+            problems.append("%s: not in the module graph CMake wrote" % library)
             continue
         third_party, riemann, vtk = ALLOWED[library]
+        if third_party is None:
+            problems.append("%s: not in CheckLinks.py's THIRD_PARTY table (add its rule)" % library)
+            continue
         checked += 1
         for dependency in needed(os.path.join(folder, name)):
             other = riemann_name(dependency)
@@ -121,4 +133,4 @@ def main(folder):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1]))
+    sys.exit(main(sys.argv[1], sys.argv[2]))

@@ -13,6 +13,7 @@
 include(GenerateExportHeader)
 
 set_property(GLOBAL PROPERTY RIEMANN_VTK_FREE_FOLDERS "")
+set_property(GLOBAL PROPERTY RIEMANN_PLAIN_LIBRARIES "")
 
 function (riemann_add_library name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" ""
@@ -55,4 +56,5 @@ function (riemann_add_library name)
     DESTINATION "${RIEMANN_HEADERS_DESTINATION}"
     COMPONENT   development)
   set_property(GLOBAL APPEND PROPERTY RIEMANN_VTK_FREE_FOLDERS "${CMAKE_CURRENT_SOURCE_DIR}")
+  set_property(GLOBAL APPEND PROPERTY RIEMANN_PLAIN_LIBRARIES "${target}")
 endfunction ()

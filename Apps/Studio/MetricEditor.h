@@ -4,7 +4,7 @@
  *
  * Each edit restarts a short timer (debounce); when it fires the text goes
  * to StudioDocument::SetMetricText. A bad text is underlined where the
- * error is (the core's path or column, located by LocateMetricError) and
+ * error is (the core's path or column, located by the parser as data: vtkRiemannMetric::GetLastErrorPlace) and
  * the message, with line and column, is shown under the text, while the last
  * good metric stays on screen.
  */

@@ -1,9 +1,10 @@
 /**
  * @file MetricText.h
  * @brief What the metric editor of riemann-studio needs to know about the
- * *text* of a metric definition (Documentation/MetricFormat.md): where an
- * error message points, which parameters the text defines, how to rewrite
- * their values without touching anything else, and how to colour it.
+ * *text* of a metric definition (Documentation/MetricFormat.md): which
+ * parameters the text defines, how to rewrite their values without
+ * touching anything else, and how to colour it. Where an error is comes
+ * from the parser as data (riemann::JsonErrorPlace), not from this file.
  *
  * Qt-free and VTK-free (nlohmann::json and the standard library), so the
  * editor's logic is tested without a display. Byte offsets index the UTF-8
@@ -11,6 +12,8 @@
  */
 #ifndef RiemannStudioMetricText_h
 #define RiemannStudioMetricText_h
+
+#include "JsonInputError.h"
 
 #include <map>
 #include <string>
@@ -20,40 +23,9 @@ namespace riemann
 {
 namespace studio
 {
-/// A place in a text. Line and Column are 1-based; Column counts characters
-/// (UTF-8 code points) from the start of the line, as an editor shows them.
-struct TextLocation
-{
-  bool Known = false;
-  int Line = 0;
-  int Column = 0;
-  int Offset = -1; ///< byte offset into the text (may equal its size: the end)
-};
-
-/**
- * Where in `text` the error `message` of the metric parser points, for a
- * message produced by parsing `text` (riemann::ParseMetricDefinition or
- * vtkRiemannMetric::GetLastError()). Prefixes such as a file name
- * ("twist.json: ") or a time ("at t = 0.700000: ") are skipped.
- *
- * - "invalid JSON: parse error at line L, column C: ...": nlohmann's place
- *   (its column counts bytes; the result's counts characters).
- *   "invalid JSON: number overflow parsing '1e999'": that number.
- * - "metric.a.b[2]: ...": the start of the value at that path.
- * - "metric.f: column 7: ...": character 7 of the expression string.
- * - "metric...: unknown key \"k\"; ...": the key "k" in that object.
- * - Any other "metric: ..." message (validation of the whole metric, a
- *   missing key of the root object) is about the whole definition and has
- *   no place in the text: Known is false.
- * - A path that the text does not hold (the text was edited since), text
- *   that is not JSON, or any other message: Known is false.
- *
- * Never throws.
- */
-TextLocation LocateMetricError(const std::string& text, const std::string& message);
-
-/// "line 3, column 7", or an empty string when the location is not known.
-std::string FormatLocation(const TextLocation& location);
+/// A place in the metric's text (the core's, JsonInputError.h): errors are
+/// located by the parser, as data (vtkRiemannMetric::GetLastErrorPlace).
+using TextLocation = riemann::TextPlace;
 
 /// A named number of a "parameters" object (MetricFormat.md, "Parameters").
 struct MetricParameter

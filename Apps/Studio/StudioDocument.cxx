@@ -72,10 +72,16 @@ MetricStatus StudioDocument::Install(
   }
   if (!this->CurrentMetric->SetDefinition(effective.c_str(), this->MetricFolder.c_str()))
   {
-    const std::string message = this->CurrentMetric->GetLastError();
-    status.Message = QString::fromStdString(message);
-    // Parameter values only change number tokens: paths and lines are the text's.
-    status.Location = LocateMetricError(text, message);
+    status.Message = QString::fromStdString(this->CurrentMetric->GetLastError());
+    // The parser located the error in the text it read. Parameter values
+    // only change number tokens, so the failing path is the same in the
+    // user's text; its line and column are found there.
+    JsonErrorPlace place = this->CurrentMetric->GetLastErrorPlace();
+    if (!values.empty())
+    {
+      LocateJsonError(text, place);
+    }
+    status.Location = place.Text;
   }
   return status;
 }

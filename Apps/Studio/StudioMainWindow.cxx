@@ -843,8 +843,8 @@ QString StudioMainWindow::OpenFile(const QString& path, bool showDialog)
         vtkNew<vtkRiemannMetric> check;
         if (!check->SetDefinition(utf8.c_str(), folder.c_str()))
         {
-          const TextLocation where = LocateMetricError(utf8, check->GetLastError());
-          error = (where.Known ? QString::fromStdString(FormatLocation(where)) + ": " : QString()) +
+          const TextLocation where = check->GetLastErrorPlace().Text;
+          error = (where.Known ? QString::fromStdString(DescribeTextPlace(where)) + ": " : QString()) +
             QString::fromUtf8(check->GetLastError());
         }
         else

@@ -49,6 +49,7 @@ bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& base
   if (!json)
   {
     this->LastError = "no definition given (null)";
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
   std::shared_ptr<const riemann::Metric> metric;
@@ -59,6 +60,7 @@ bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& base
   catch (const riemann::MetricDefinitionError& e)
   {
     this->LastError = e.what();
+    this->LastErrorPlace = e.Place;
     return false;
   }
   // Atomic: a filter running on another thread may be copying the pointer.
@@ -67,6 +69,7 @@ bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& base
   this->BaseDirectory = baseDirectory;
   this->FromTensorData = false;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
   return true;
 }
@@ -99,6 +102,7 @@ bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName,
   catch (const std::exception& e)
   {
     this->LastError = std::string("tensor data: ") + e.what();
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
   std::atomic_store(&this->Metric, metric);
@@ -111,6 +115,7 @@ bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName,
   this->BaseDirectory.clear();
   this->FromTensorData = true;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
   return true;
 }
@@ -127,6 +132,7 @@ bool vtkRiemannMetric::SetParsedDefinition(const std::string& json,
   this->BaseDirectory = baseDirectory;
   this->FromTensorData = false;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
   return true;
 }
@@ -143,6 +149,7 @@ void vtkRiemannMetric::ShallowCopy(vtkRiemannMetric* other)
   this->FromTensorData = other->FromTensorData;
   this->Time = other->Time;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
 }
 
@@ -175,6 +182,7 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
   if (!path)
   {
     this->LastError = "no file name given (null)";
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
   std::string text;
@@ -185,6 +193,7 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
   catch (const riemann::MetricDefinitionError& e)
   {
     this->LastError = e.what();
+    this->LastErrorPlace = e.Place;
     return false;
   }
   if (!this->SetDefinitionIn(text.c_str(), vtksys::SystemTools::GetFilenamePath(path)))
@@ -193,6 +202,21 @@ bool vtkRiemannMetric::SetDefinitionFile(const char* path)
     return false;
   }
   return true;
+}
+
+int vtkRiemannMetric::GetLastErrorLine() const
+{
+  return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Line : 0;
+}
+
+int vtkRiemannMetric::GetLastErrorColumn() const
+{
+  return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Column : 0;
+}
+
+int vtkRiemannMetric::GetLastErrorOffset() const
+{
+  return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Offset : -1;
 }
 
 std::shared_ptr<const riemann::Metric> vtkRiemannMetric::GetMetric() const

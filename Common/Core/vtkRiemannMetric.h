@@ -22,6 +22,7 @@
 #ifndef vtkRiemannMetric_h
 #define vtkRiemannMetric_h
 
+#include "JsonInputError.h"         // For riemann::JsonErrorPlace
 #include "RiemannCommonCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
@@ -117,6 +118,30 @@ public:
   /// Why the last SetDefinition/SetDefinitionFile failed ("" after a success).
   const char* GetLastError() const { return this->LastError.c_str(); }
 
+  ///@{
+  /**
+   * Where in the definition's text the last error is, as data: the 1-based
+   * line and column (in characters) and the byte offset of the offending
+   * value, key, expression character or syntax error. 0 (offset -1) when
+   * the error has no place in the text: the metric as a whole is not valid,
+   * a file cannot be read, or after a success. An editor underlines from
+   * these; it need not read the message.
+   */
+  int GetLastErrorLine() const;
+  int GetLastErrorColumn() const;
+  int GetLastErrorOffset() const;
+  ///@}
+
+  /// The JSON pointer of the failing value ("/compose/1/phi/0"; "" for the
+  /// whole definition or no place).
+  const char* GetLastErrorPointer() const { return this->LastErrorPlace.Pointer.c_str(); }
+
+  /// All of the last error's place (path, key, expression column, text place).
+  VTK_WRAPEXCLUDE const riemann::JsonErrorPlace& GetLastErrorPlace() const
+  {
+    return this->LastErrorPlace;
+  }
+
   /// True once a valid definition is set.
   bool HasDefinition() const;
 
@@ -165,6 +190,7 @@ private:
   /// True when the metric came from SetTensorData (no text to parse again).
   bool FromTensorData = false;
   std::string LastError;
+  riemann::JsonErrorPlace LastErrorPlace;
   double Time = 0.0;
 };
 

@@ -1,14 +1,17 @@
 /**
  * @file JsonValidation.h
  * @brief Checks shared by the JSON readers (metric and scene definitions):
- * each failure throws `Error` with a message that names the JSON path, e.g.
- * `scene.objects[2]: unknown key "radus"; expected one of ...`.
+ * each failure throws `Error` (a JsonInputError) with a message that names
+ * the JSON path, e.g. `scene.objects[2]: unknown key "radus"; expected one
+ * of ...`, and the path and key as data (JsonErrorPlace).
  *
  * Internal (not installed): it exposes nlohmann::json, which the public API
  * of the toolkit does not.
  */
 #ifndef RiemannJsonValidation_h
 #define RiemannJsonValidation_h
+
+#include "JsonInputError.h"
 
 #include <nlohmann/json.hpp>
 
@@ -62,10 +65,24 @@ inline std::string Describe(const Json& value)
   }
 }
 
+/// Throws `Error` about the value at `path`.
 template <class Error>
 [[noreturn]] void Fail(const std::string& path, const std::string& message)
 {
-  throw Error(path + ": " + message);
+  JsonErrorPlace place;
+  place.Path = path;
+  throw Error(place, message);
+}
+
+/// Throws `Error` about the key `key` of the object at `path`.
+template <class Error>
+[[noreturn]] void FailAtKey(const std::string& path, const std::string& key, const std::string& message)
+{
+  JsonErrorPlace place;
+  place.Path = path;
+  place.AtKey = true;
+  place.Key = key;
+  throw Error(place, message);
 }
 
 /// Refuse non-objects and keys outside `allowed` (plus "name" and
@@ -101,7 +118,7 @@ void CheckKeys(const Json& object, const std::string& path, const Keys& allowed)
       {
         expected += std::string(expected.empty() ? "" : ", ") + "\"" + a + "\"";
       }
-      Fail<Error>(path,
+      FailAtKey<Error>(path, key,
         "unknown key " + Quoted(key) + "; expected one of " + expected + ", \"name\", \"description\"");
     }
   }

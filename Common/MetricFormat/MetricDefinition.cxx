@@ -38,6 +38,15 @@ using json::Json;
   json::Fail<MetricDefinitionError>(path, message);
 }
 
+/// An expression's error at `path`, its column kept as data.
+[[noreturn]] void FailInExpression(const std::string& path, const ExpressionError& error)
+{
+  JsonErrorPlace place;
+  place.Path = path;
+  place.ExpressionColumn = error.Column;
+  throw MetricDefinitionError(place, error.what());
+}
+
 void CheckKeys(
   const Json& object, const std::string& path, std::initializer_list<const char*> allowed)
 {
@@ -260,7 +269,7 @@ std::vector<std::string> ExpressionList(
     }
     catch (const ExpressionError& e)
     {
-      Fail(item, e.what());
+      FailInExpression(item, e);
     }
   }
   return sources;
@@ -283,7 +292,7 @@ std::shared_ptr<const ScalarField> ScalarTerms(const Json& object, const std::st
     }
     catch (const ExpressionError& e)
     {
-      Fail(expressionPath, e.what());
+      FailInExpression(expressionPath, e);
     }
     // A typed expression is the whole field unless a constant is added explicitly.
     defaultConstant = 0.0;
@@ -379,7 +388,7 @@ std::shared_ptr<const SpaceMap> Diffeomorphism(
     }
     catch (const ExpressionError& e)
     {
-      Fail(path + ".phi", e.what());
+      FailInExpression(path + ".phi", e);
     }
   }
   if (!object.contains("preset"))
@@ -476,7 +485,7 @@ std::shared_ptr<const TensorField> TensorExpressions(
   }
   catch (const ExpressionError& e)
   {
-    Fail(path, e.what());
+    FailInExpression(path, e);
   }
 }
 
@@ -747,14 +756,30 @@ std::shared_ptr<const Metric> ParseMetricDefinition(
   }
   catch (const Json::exception& e)
   {
-    // Syntax errors and number overflows; line and column kept.
-    throw MetricDefinitionError("invalid JSON: " + json::WithoutExceptionId(e.what()));
+    // Syntax errors and number overflows: nlohmann's words, and where it
+    // stopped as data.
+    JsonErrorPlace place;
+    place.SyntaxOffset = JsonSyntaxErrorOffset(json);
+    MetricDefinitionError error(place, "invalid JSON: " + json::WithoutExceptionId(e.what()));
+    LocateJsonError(json, error.Place);
+    throw error;
   }
-  std::shared_ptr<const Metric> metric = Build(root);
+  std::shared_ptr<const Metric> metric;
+  try
+  {
+    metric = Build(root);
+  }
+  catch (MetricDefinitionError& e)
+  {
+    LocateJsonError(json, e.Place);
+    throw;
+  }
   const std::string why = ParseHasExpressions ? std::string() : metric->Validate();
   if (!why.empty())
   {
-    throw MetricDefinitionError("metric: " + why);
+    JsonErrorPlace wholeMetric;
+    wholeMetric.Path = "metric";
+    throw MetricDefinitionError(wholeMetric, why);
   }
   return metric;
 }
@@ -782,7 +807,7 @@ std::shared_ptr<const Metric> LoadMetricDefinitionFile(const std::string& path, 
   }
   catch (const MetricDefinitionError& e)
   {
-    throw MetricDefinitionError(path + ": " + e.what());
+    throw MetricDefinitionError(path + ": ", e);
   }
 }
 } // namespace riemann

@@ -56,6 +56,7 @@
 
 #include "Metric.h"
 #include "SampledTensorField.h"
+#include "JsonInputError.h"
 #include "RiemannCommonMetricFormatExport.h"
 
 #include <functional>
@@ -66,10 +67,10 @@
 namespace riemann
 {
 /// A definition that cannot be turned into a metric; what() says where and why.
-class RIEMANNCOMMONMETRICFORMAT_EXPORT MetricDefinitionError : public std::runtime_error
+class RIEMANNCOMMONMETRICFORMAT_EXPORT MetricDefinitionError : public JsonInputError
 {
 public:
-  using std::runtime_error::runtime_error;
+  using JsonInputError::JsonInputError;
 };
 
 /**

@@ -29,6 +29,7 @@
 
 #include "Integrators.h"
 #include "Jets.h"
+#include "JsonInputError.h"
 #include "ObserverCamera.h"
 #include "RiemannRenderingCoreExport.h" // RIEMANNRENDERINGCORE_EXPORT
 
@@ -41,10 +42,10 @@
 namespace riemann
 {
 /// A scene that cannot be parsed or makes no sense; what() says where and why.
-class RIEMANNRENDERINGCORE_EXPORT SceneDefinitionError : public std::runtime_error
+class RIEMANNRENDERINGCORE_EXPORT SceneDefinitionError : public JsonInputError
 {
 public:
-  using std::runtime_error::runtime_error;
+  using JsonInputError::JsonInputError;
 };
 
 enum class MaterialType : int

@@ -648,10 +648,8 @@ void ParseObjects(
   }
 }
 
-} // namespace
-
-//------------------------------------------------------------------------------
-Scene ParseScene(const std::string& json, const std::string& baseDirectory)
+/// ParseScene, its errors not yet located in the text.
+Scene ParseSceneText(const std::string& json, const std::string& baseDirectory)
 {
   const std::string path = "scene";
   Json root;
@@ -662,7 +660,10 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   catch (const Json::exception& e)
   {
     // Syntax errors, and numbers out of double's range (out_of_range.406).
-    Fail(path, "invalid JSON: " + json::WithoutExceptionId(e.what()));
+    JsonErrorPlace place;
+    place.Path = path;
+    place.SyntaxOffset = JsonSyntaxErrorOffset(json);
+    throw SceneDefinitionError(place, "invalid JSON: " + json::WithoutExceptionId(e.what()));
   }
   if (!root.is_object())
   {
@@ -751,6 +752,22 @@ Scene ParseScene(const std::string& json, const std::string& baseDirectory)
   return scene;
 }
 
+} // namespace
+
+//------------------------------------------------------------------------------
+Scene ParseScene(const std::string& json, const std::string& baseDirectory)
+{
+  try
+  {
+    return ParseSceneText(json, baseDirectory);
+  }
+  catch (SceneDefinitionError& e)
+  {
+    LocateJsonError(json, e.Place);
+    throw;
+  }
+}
+
 Scene LoadSceneFile(const std::string& path)
 {
   std::string text;
@@ -773,7 +790,7 @@ Scene LoadSceneFile(const std::string& path)
   }
   catch (const SceneDefinitionError& e)
   {
-    throw SceneDefinitionError(path + ": " + e.what());
+    throw SceneDefinitionError(path + ": ", e);
   }
 }
 } // namespace riemann

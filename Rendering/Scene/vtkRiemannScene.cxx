@@ -31,6 +31,7 @@ bool vtkRiemannScene::Install(std::shared_ptr<const riemann::Scene> scene,
   this->Definition = definition;
   this->DefinitionFile = file;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
   return true;
 }
@@ -46,6 +47,7 @@ void vtkRiemannScene::ShallowCopy(vtkRiemannScene* other)
   this->Definition = other->Definition;
   this->DefinitionFile = other->DefinitionFile;
   this->LastError.clear();
+  this->LastErrorPlace = riemann::JsonErrorPlace();
   this->Modified();
 }
 
@@ -54,6 +56,7 @@ bool vtkRiemannScene::SetDefinition(const char* json)
   if (!json)
   {
     this->LastError = "no definition given (null)";
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
   try
@@ -63,9 +66,16 @@ bool vtkRiemannScene::SetDefinition(const char* json)
     auto scene = std::make_shared<const riemann::Scene>(std::move(parsed));
     return this->Install(std::move(scene), json, std::string());
   }
+  catch (const riemann::JsonInputError& e)
+  {
+    this->LastError = e.what();
+    this->LastErrorPlace = e.Place;
+    return false;
+  }
   catch (const std::exception& e)
   {
     this->LastError = e.what();
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
 }
@@ -75,6 +85,7 @@ bool vtkRiemannScene::SetDefinitionFile(const char* path)
   if (!path || !*path)
   {
     this->LastError = "no file name given";
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
   try
@@ -88,9 +99,16 @@ bool vtkRiemannScene::SetDefinitionFile(const char* path)
     text << in.rdbuf();
     return this->Install(std::move(scene), text.str(), path);
   }
+  catch (const riemann::JsonInputError& e)
+  {
+    this->LastError = e.what();
+    this->LastErrorPlace = e.Place;
+    return false;
+  }
   catch (const std::exception& e)
   {
     this->LastError = e.what();
+    this->LastErrorPlace = riemann::JsonErrorPlace();
     return false;
   }
 }

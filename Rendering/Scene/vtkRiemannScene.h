@@ -33,6 +33,7 @@
 #ifndef vtkRiemannScene_h
 #define vtkRiemannScene_h
 
+#include "JsonInputError.h"              // For riemann::JsonErrorPlace
 #include "RiemannRenderingSceneModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
@@ -81,6 +82,20 @@ public:
 
   /// Why the last SetDefinition/SetDefinitionFile failed ("" after a success).
   const char* GetLastError() const { return this->LastError.c_str(); }
+
+  ///@{
+  /**
+   * Where in the scene's text the last error is, as data (as
+   * vtkRiemannMetric's): 1-based line and column in characters, byte
+   * offset, and the failing value's JSON pointer; 0, -1 and "" when the
+   * error has no place in the text.
+   */
+  int GetLastErrorLine() const { return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Line : 0; }
+  int GetLastErrorColumn() const { return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Column : 0; }
+  int GetLastErrorOffset() const { return this->LastErrorPlace.Text.Known ? this->LastErrorPlace.Text.Offset : -1; }
+  const char* GetLastErrorPointer() const { return this->LastErrorPlace.Pointer.c_str(); }
+  VTK_WRAPEXCLUDE const riemann::JsonErrorPlace& GetLastErrorPlace() const { return this->LastErrorPlace; }
+  ///@}
 
   /// True once a valid definition is set (otherwise the scene is the default one).
   bool HasDefinition() const;
@@ -139,6 +154,7 @@ private:
   std::string Definition;
   std::string DefinitionFile;
   std::string LastError;
+  riemann::JsonErrorPlace LastErrorPlace;
 };
 
 #endif

@@ -141,6 +141,28 @@ class MetricDefinitionTest(unittest.TestCase):
         self.assertIn('"gaussians"', error)  # what was expected
         self.assertFalse(m.HasDefinition())
 
+    def test_error_places_are_data(self):
+        # Line, column (characters), byte offset and JSON pointer of what is
+        # wrong: an editor underlines from these, not from the message.
+        m = riemann.vtkRiemannMetric()
+        text = '{\n  "type": "diffeo",\n  "phi": ["x", "y + w", "z"]\n}'
+        self.assertFalse(m.SetDefinition(text))
+        self.assertEqual(m.GetLastErrorPointer(), '/phi/1')
+        self.assertEqual((m.GetLastErrorLine(), m.GetLastErrorColumn()), (3, 21))
+        self.assertEqual(text[m.GetLastErrorOffset()], 'w')
+        self.assertFalse(m.SetDefinition('{"type": "graph",\n "f": x}'))
+        self.assertEqual((m.GetLastErrorLine(), m.GetLastErrorColumn()), (2, 7))
+        # About the whole metric: no place.
+        self.assertFalse(m.SetDefinition('{"type": "conformal", "constant": -1}'))
+        self.assertEqual((m.GetLastErrorLine(), m.GetLastErrorColumn(),
+                          m.GetLastErrorOffset()), (0, 0, -1))
+        self.assertTrue(m.SetDefinition('{"type": "euclidean"}'))
+        self.assertEqual((m.GetLastErrorLine(), m.GetLastErrorPointer()), (0, ''))
+        scene = riemann.vtkRiemannScene()
+        self.assertFalse(scene.SetDefinition('{"camera": {"fov": 60,\n "positon": [0, 0, 5]}}'))
+        self.assertEqual((scene.GetLastErrorLine(), scene.GetLastErrorColumn()), (2, 2))
+        self.assertEqual(scene.GetLastErrorPointer(), '/camera')
+
     def test_bad_definitions_name_the_problem(self):
         m = riemann.vtkRiemannMetric()
         cases = [

@@ -23,7 +23,7 @@
 #ifndef RiemannPictureSchema_h
 #define RiemannPictureSchema_h
 
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonObserverExport.h"
 #include "SettingRange.h"
 
 #include <array>
@@ -125,35 +125,35 @@ constexpr const PictureSetting& PictureSettingOf(PictureSettingId id)
 }
 
 /// A Choice's names, in order ({"perspective", "equirectangular"}).
-RIEMANNCOMMONMETRIC_EXPORT std::vector<std::string> PictureChoices(const PictureSetting& setting);
+RIEMANNCOMMONOBSERVER_EXPORT std::vector<std::string> PictureChoices(const PictureSetting& setting);
 
 /// The index of `name` among a Choice's names; -1 when it is none of them.
-RIEMANNCOMMONMETRIC_EXPORT int PictureChoiceIndex(
+RIEMANNCOMMONOBSERVER_EXPORT int PictureChoiceIndex(
   const PictureSetting& setting, const std::string& name);
 
 /// The name of a Choice's default ("perspective").
-RIEMANNCOMMONMETRIC_EXPORT std::string PictureDefaultChoice(const PictureSetting& setting);
+RIEMANNCOMMONOBSERVER_EXPORT std::string PictureDefaultChoice(const PictureSetting& setting);
 
 /// The valid values as words: "a number above 0 and at most 179 (degrees)",
 /// "perspective or equirectangular", "three numbers X,Y,Z, not all 0".
-RIEMANNCOMMONMETRIC_EXPORT std::string DescribePictureValues(const PictureSetting& setting);
+RIEMANNCOMMONOBSERVER_EXPORT std::string DescribePictureValues(const PictureSetting& setting);
 
 /// The valid values in brief: "(0, 179]", "perspective|equirectangular", "X,Y,Z".
-RIEMANNCOMMONMETRIC_EXPORT std::string PictureInterval(const PictureSetting& setting);
+RIEMANNCOMMONOBSERVER_EXPORT std::string PictureInterval(const PictureSetting& setting);
 
 /**
  * "" when `value` is valid for a Number or Count `setting`; else why not,
  * naming it `name` ("scene.camera.fov is 180: expected a number above 0 and
  * at most 179 (degrees)").
  */
-RIEMANNCOMMONMETRIC_EXPORT std::string CheckPictureValue(
+RIEMANNCOMMONOBSERVER_EXPORT std::string CheckPictureValue(
   const PictureSetting& setting, double value, const std::string& name);
 
 /**
  * "" when `value` is valid for a Point or Direction `setting` (finite; a
  * direction not zero); else why not, naming it `name`.
  */
-RIEMANNCOMMONMETRIC_EXPORT std::string CheckPictureVector(
+RIEMANNCOMMONOBSERVER_EXPORT std::string CheckPictureVector(
   const PictureSetting& setting, const double value[3], const std::string& name);
 } // namespace riemann
 

@@ -71,18 +71,20 @@ Json ToJson(const Vec3& v)
 {
   return Json::array({ v[0], v[1], v[2] });
 }
-} // namespace
-
-CameraPathFile ParseCameraPathFile(const std::string& text, const std::string& where)
+/// ParseCameraPathFile, its errors not yet located in the text.
+CameraPathFile ParseCameraPathText(const std::string& text, const std::string& where)
 {
   Json root;
   try
   {
     root = Json::parse(text);
   }
-  catch (const Json::parse_error& e)
+  catch (const Json::exception& e)
   {
-    Fail(where, json::WithoutExceptionId(e.what()));
+    JsonErrorPlace place;
+    place.Path = where;
+    place.SyntaxOffset = JsonSyntaxErrorOffset(text);
+    throw CameraPathFileError(place, json::WithoutExceptionId(e.what()));
   }
   const char* position = SceneKey(PictureSettingId::Position);
   const char* lookAt = SceneKey(PictureSettingId::LookAt);
@@ -158,6 +160,20 @@ CameraPathFile ParseCameraPathFile(const std::string& text, const std::string& w
     ReadTime(root.at("time"), where + ".time", file);
   }
   return file;
+}
+} // namespace
+
+CameraPathFile ParseCameraPathFile(const std::string& text, const std::string& where)
+{
+  try
+  {
+    return ParseCameraPathText(text, where);
+  }
+  catch (CameraPathFileError& e)
+  {
+    LocateJsonError(text, e.Place);
+    throw;
+  }
 }
 
 CameraPathFile ReadCameraPathFile(const std::string& fileName)

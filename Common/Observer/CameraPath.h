@@ -27,7 +27,7 @@
 
 #include "Metric.h"
 #include "ObserverCamera.h"
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonObserverExport.h"
 
 #include <functional>
 #include <stdexcept>
@@ -46,7 +46,7 @@ enum class CameraPathKind : int
 };
 
 /// "geodesic", "spline".
-RIEMANNCOMMONMETRIC_EXPORT const char* CameraPathKindName(CameraPathKind kind);
+RIEMANNCOMMONOBSERVER_EXPORT const char* CameraPathKindName(CameraPathKind kind);
 
 struct CameraPathSettings
 {
@@ -80,7 +80,7 @@ struct CameraFrame
 };
 
 /// Bad settings, a degenerate metric on the way, or a cancelled flight.
-class RIEMANNCOMMONMETRIC_EXPORT CameraPathError : public std::runtime_error
+class RIEMANNCOMMONOBSERVER_EXPORT CameraPathError : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
@@ -93,12 +93,12 @@ public:
  * keys, a length or step that is not positive and finite) or where the metric
  * is degenerate on the path.
  */
-RIEMANNCOMMONMETRIC_EXPORT std::vector<CameraFrame> ComputeCameraPath(const Metric& metric,
+RIEMANNCOMMONOBSERVER_EXPORT std::vector<CameraFrame> ComputeCameraPath(const Metric& metric,
   const CameraPathSettings& settings, const std::function<bool(double)>& progress = {});
 
 /// The camera settings that show frame `frame` (LookAt one unit ahead along
 /// Forward), for ObserverCamera or a vtkCamera; the rest from `base`.
-RIEMANNCOMMONMETRIC_EXPORT CameraSettings CameraSettingsOf(
+RIEMANNCOMMONOBSERVER_EXPORT CameraSettings CameraSettingsOf(
   const CameraFrame& frame, const CameraSettings& base);
 } // namespace riemann
 

@@ -13,7 +13,7 @@
 #define RiemannTractStops_h
 
 #include "GeodesicTrace.h"
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonTractographyExport.h"
 
 #include <array>
 #include <vector>
@@ -27,7 +27,7 @@ namespace riemann
  * box holds it), as DIPY's binary stopping criterion and tract selection
  * read masks.
  */
-struct RIEMANNCOMMONMETRIC_EXPORT VoxelMask
+struct RIEMANNCOMMONTRACTOGRAPHY_EXPORT VoxelMask
 {
   Vec3 Origin = Vec3::Zero();
   Vec3 Spacing = Vec3::Ones();
@@ -45,7 +45,7 @@ struct RIEMANNCOMMONMETRIC_EXPORT VoxelMask
  * Fractional anisotropy of a tensor with these eigenvalues:
  * sqrt(3/2) |l - mean(l)| / |l|, 0 for an isotropic tensor, 1 for a line.
  */
-RIEMANNCOMMONMETRIC_EXPORT double FractionalAnisotropy(const Vec3& eigenvalues);
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT double FractionalAnisotropy(const Vec3& eigenvalues);
 
 /**
  * The fractional anisotropy of the diffusion tensor that `metric` stands
@@ -54,15 +54,15 @@ RIEMANNCOMMONMETRIC_EXPORT double FractionalAnisotropy(const Vec3& eigenvalues);
  * and sharpened metrics of D); for any other metric, g^-1 (the metric read
  * as a diffusion tensor's inverse). False where g fails.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool FractionalAnisotropyOfMetric(
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT bool FractionalAnisotropyOfMetric(
   const Metric& metric, const Vec3& x, double& anisotropy);
 
 /// The q of FractionalAnisotropyOfMetric for `metric` (found once: the
 /// stops ask for the anisotropy at every step).
-RIEMANNCOMMONMETRIC_EXPORT double DiffusionExponentOf(const Metric& metric);
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT double DiffusionExponentOf(const Metric& metric);
 
 /// FractionalAnisotropyOfMetric with the metric's q already known.
-RIEMANNCOMMONMETRIC_EXPORT bool FractionalAnisotropyOfMetric(
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT bool FractionalAnisotropyOfMetric(
   const Metric& metric, double exponent, const Vec3& x, double& anisotropy);
 
 /**
@@ -71,7 +71,7 @@ RIEMANNCOMMONMETRIC_EXPORT bool FractionalAnisotropyOfMetric(
  * where FractionalAnisotropyOfMetric is below it, or fails: LowAnisotropy).
  * Put in GeodesicOptions::Stop; the metric must outlive it.
  */
-class RIEMANNCOMMONMETRIC_EXPORT TractStopRules : public StopCondition
+class RIEMANNCOMMONTRACTOGRAPHY_EXPORT TractStopRules : public StopCondition
 {
 public:
   explicit TractStopRules(const Metric& metric)
@@ -100,13 +100,13 @@ private:
  * the tract's Euclidean curvature, in degrees per mm). The path keeps its
  * points up to k and the Reason SharpTurn. Returns whether it was cut.
  */
-RIEMANNCOMMONMETRIC_EXPORT bool CutAtSharpTurn(GeodesicPath& path, double degreesPerMillimetre);
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT bool CutAtSharpTurn(GeodesicPath& path, double degreesPerMillimetre);
 
 /// The Euclidean length of a path's polyline.
-RIEMANNCOMMONMETRIC_EXPORT double EuclideanLength(const GeodesicPath& path);
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT double EuclideanLength(const GeodesicPath& path);
 
 /// Which tracts are kept; a tract is a seed's paths (both halves for a two-way trace).
-struct RIEMANNCOMMONMETRIC_EXPORT TractSelection
+struct RIEMANNCOMMONTRACTOGRAPHY_EXPORT TractSelection
 {
   /// Keep only tracts with a point in it (empty: no such rule).
   VoxelMask Include;
@@ -132,13 +132,13 @@ enum TractRejection : int
 constexpr int LastTractRejection = TractCrossedExclude;
 
 /// A short English name of a TractRejection ("shorter than the minimum length", ...).
-RIEMANNCOMMONMETRIC_EXPORT const char* TractRejectionName(int rejection);
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT const char* TractRejectionName(int rejection);
 
 /**
  * Whether the tract made of `paths[0..count)` is kept, or why not: first an
  * exclude region it enters, then an include region it misses, then its length.
  */
-RIEMANNCOMMONMETRIC_EXPORT int SelectTract(
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT int SelectTract(
   const GeodesicPath* const* paths, int count, const TractSelection& selection);
 } // namespace riemann
 

@@ -17,17 +17,18 @@
 #define RiemannCameraPathFile_h
 
 #include "CameraPath.h"
-#include "RiemannCommonMetricFormatExport.h"
+#include "JsonInputError.h"
+#include "RiemannCommonObserverExport.h"
 
 #include <stdexcept>
 #include <string>
 
 namespace riemann
 {
-class RIEMANNCOMMONMETRICFORMAT_EXPORT CameraPathFileError : public std::runtime_error
+class RIEMANNCOMMONOBSERVER_EXPORT CameraPathFileError : public JsonInputError
 {
 public:
-  using std::runtime_error::runtime_error;
+  using JsonInputError::JsonInputError;
 };
 
 struct CameraPathFile
@@ -42,12 +43,12 @@ struct CameraPathFile
 };
 
 /// Parses the text of a camera path file; `where` names it in errors.
-RIEMANNCOMMONMETRICFORMAT_EXPORT CameraPathFile ParseCameraPathFile(
+RIEMANNCOMMONOBSERVER_EXPORT CameraPathFile ParseCameraPathFile(
   const std::string& text, const std::string& where = "camera path");
 /// Reads and parses a camera path file.
-RIEMANNCOMMONMETRICFORMAT_EXPORT CameraPathFile ReadCameraPathFile(const std::string& fileName);
+RIEMANNCOMMONOBSERVER_EXPORT CameraPathFile ReadCameraPathFile(const std::string& fileName);
 /// The file's text (pretty-printed JSON) that ParseCameraPathFile reads back.
-RIEMANNCOMMONMETRICFORMAT_EXPORT std::string CameraPathFileText(const CameraPathFile& file);
+RIEMANNCOMMONOBSERVER_EXPORT std::string CameraPathFileText(const CameraPathFile& file);
 } // namespace riemann
 
 #endif

@@ -16,7 +16,7 @@
 
 #include "Metric.h"
 #include "PictureSchema.h"
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonObserverExport.h"
 
 namespace riemann
 {
@@ -46,7 +46,7 @@ struct CameraSettings
     static_cast<Projection>(static_cast<int>(PictureSettingOf(PictureSettingId::Projection).Default[0]));
 };
 
-class RIEMANNCOMMONMETRIC_EXPORT ObserverCamera
+class RIEMANNCOMMONOBSERVER_EXPORT ObserverCamera
 {
 public:
   /**
