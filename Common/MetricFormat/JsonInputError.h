@@ -71,6 +71,25 @@ RIEMANNCOMMONMETRICFORMAT_EXPORT void LocateJsonError(
   const std::string& text, JsonErrorPlace& place);
 
 /**
+ * What `parse()` returns; a JsonInputError it throws (of any reader's
+ * type, which `throw;` keeps) is first located in `text`, the document it
+ * parses. The readers wrap their work in this once.
+ */
+template <class Parse>
+auto LocatingErrorsIn(const std::string& text, Parse&& parse) -> decltype(parse())
+{
+  try
+  {
+    return parse();
+  }
+  catch (JsonInputError& e)
+  {
+    LocateJsonError(text, e.Place);
+    throw;
+  }
+}
+
+/**
  * The byte offset at which nlohmann's parser refuses `text` (the offending
  * character; for an overflowing number, its first), or -1 when it reads
  * `text` as JSON.

@@ -764,16 +764,7 @@ std::shared_ptr<const Metric> ParseMetricDefinition(
     LocateJsonError(json, error.Place);
     throw error;
   }
-  std::shared_ptr<const Metric> metric;
-  try
-  {
-    metric = Build(root);
-  }
-  catch (MetricDefinitionError& e)
-  {
-    LocateJsonError(json, e.Place);
-    throw;
-  }
+  std::shared_ptr<const Metric> metric = LocatingErrorsIn(json, [&]() { return Build(root); });
   const std::string why = ParseHasExpressions ? std::string() : metric->Validate();
   if (!why.empty())
   {

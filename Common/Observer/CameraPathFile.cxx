@@ -165,15 +165,7 @@ CameraPathFile ParseCameraPathText(const std::string& text, const std::string& w
 
 CameraPathFile ParseCameraPathFile(const std::string& text, const std::string& where)
 {
-  try
-  {
-    return ParseCameraPathText(text, where);
-  }
-  catch (CameraPathFileError& e)
-  {
-    LocateJsonError(text, e.Place);
-    throw;
-  }
+  return LocatingErrorsIn(text, [&]() { return ParseCameraPathText(text, where); });
 }
 
 CameraPathFile ReadCameraPathFile(const std::string& fileName)

@@ -757,15 +757,7 @@ Scene ParseSceneText(const std::string& json, const std::string& baseDirectory)
 //------------------------------------------------------------------------------
 Scene ParseScene(const std::string& json, const std::string& baseDirectory)
 {
-  try
-  {
-    return ParseSceneText(json, baseDirectory);
-  }
-  catch (SceneDefinitionError& e)
-  {
-    LocateJsonError(json, e.Place);
-    throw;
-  }
+  return LocatingErrorsIn(json, [&]() { return ParseSceneText(json, baseDirectory); });
 }
 
 Scene LoadSceneFile(const std::string& path)

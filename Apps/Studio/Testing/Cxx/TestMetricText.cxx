@@ -2,6 +2,7 @@
 // in place, highlighting. Where errors are is the parser's (the core's
 // TestJsonErrorPlace.cxx), not the editor's.
 #include "MetricText.h"
+#include "ShippedMetricTexts.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,21 +28,12 @@ namespace
 {
 using Json = nlohmann::json;
 
+using riemann::testing::ShippedMetrics;
+
 std::string ReadMetric(const std::string& name)
 {
-  const std::string path = std::string(RIEMANN_SOURCE_DIR) + "/Data/metrics/" + name;
-  std::ifstream file(path, std::ios::binary);
-  EXPECT_TRUE(file) << "cannot open " << path << " (set RIEMANN_SOURCE_DIR)";
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+  return riemann::testing::ReadShippedMetric(std::string(RIEMANN_SOURCE_DIR) + "/Data", name);
 }
-
-const char* const ShippedMetrics[] = { "astigmatic-lens.json", "bump-translation.json",
-  "constant-tensor.json", "eight-gaussians.json", "euclidean.json", "gaussian-bump-typed.json",
-  "gaussian-bump.json", "gaussian-lens.json", "local-twist.json", "nil.json", "paraboloid.json",
-  "poincare-ball.json", "round-sphere.json", "saddle.json", "twist.json",
-  "two-bump-composition.json", "two-bumps.json", "wavy-diffeo.json" };
 
 // --- never crash ---------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 #include "JsonInputError.h"
 #include "JsonTextScan.h"
 #include "MetricDefinition.h"
+#include "ShippedMetricTexts.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,21 +25,12 @@ namespace
 {
 using Json = nlohmann::json;
 
+using testing::ShippedMetrics;
+
 std::string ReadMetric(const std::string& name)
 {
-  const std::string path = std::string(RIEMANN_TEST_DATA_DIR) + "/metrics/" + name;
-  std::ifstream file(path, std::ios::binary);
-  EXPECT_TRUE(file) << "cannot open " << path;
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+  return testing::ReadShippedMetric(RIEMANN_TEST_DATA_DIR, name);
 }
-
-const char* const ShippedMetrics[] = { "astigmatic-lens.json", "bump-translation.json",
-  "constant-tensor.json", "eight-gaussians.json", "euclidean.json", "gaussian-bump-typed.json",
-  "gaussian-bump.json", "gaussian-lens.json", "local-twist.json", "nil.json", "paraboloid.json",
-  "poincare-ball.json", "round-sphere.json", "saddle.json", "twist.json",
-  "two-bump-composition.json", "two-bumps.json", "wavy-diffeo.json" };
 
 /// The error of parsing `text`; fails the test when it parses.
 MetricDefinitionError ErrorOf(const std::string& text)
