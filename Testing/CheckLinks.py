@@ -47,6 +47,7 @@ THIRD_PARTY = {
     "RiemannRenderingMeshes": ["libembree3"],
     "RiemannRenderingImageIO": ["libOpenImageIO", "libOpenImageIO_Util"],
     "RiemannCommonCore": ["libz"],
+    "RiemannIOFilm": [],
     "RiemannFiltersGeodesics": ["libtbb"],
     "RiemannFiltersFields": ["libtbb"],
     "RiemannRenderingScene": [],

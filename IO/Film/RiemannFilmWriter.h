@@ -12,7 +12,7 @@
 #ifndef RiemannFilmWriter_h
 #define RiemannFilmWriter_h
 
-#include "RiemannCommonCoreModule.h" // For export macro
+#include "RiemannIOFilmModule.h" // For export macro
 
 #include <memory>
 #include <stdexcept>
@@ -23,15 +23,15 @@ namespace riemann
 /// The numbered pictures written instead of a film: "dir/out.png", 3 ->
 /// "dir/out_0003.png" (`riemann render --frames`, riemann-studio's Export
 /// Animation).
-RIEMANNCOMMONCORE_EXPORT std::string FramePath(const std::string& path, int frame);
+RIEMANNIOFILM_EXPORT std::string FramePath(const std::string& path, int frame);
 
-class RIEMANNCOMMONCORE_EXPORT FilmWriterError : public std::runtime_error
+class RIEMANNIOFILM_EXPORT FilmWriterError : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
 };
 
-class RIEMANNCOMMONCORE_EXPORT FilmWriter
+class RIEMANNIOFILM_EXPORT FilmWriter
 {
 public:
   /// Whether `path` names a film this writer writes (.ogv, any case).
