@@ -65,6 +65,27 @@ inline std::string Describe(const Json& value)
   }
 }
 
+/**
+ * `text` parsed. A syntax error or an overflowing number throws `Error` at
+ * `path` with nlohmann's words after `prefix` and the offset it stopped at
+ * as data (located in the text by the reader's LocatingErrorsIn).
+ */
+template <class Error>
+Json Parse(const std::string& text, const std::string& path, const std::string& prefix)
+{
+  try
+  {
+    return Json::parse(text);
+  }
+  catch (const Json::exception& e)
+  {
+    JsonErrorPlace place;
+    place.Path = path;
+    place.SyntaxOffset = JsonSyntaxErrorOffset(text);
+    throw Error(place, prefix + WithoutExceptionId(e.what()));
+  }
+}
+
 /// Throws `Error` about the value at `path`.
 template <class Error>
 [[noreturn]] void Fail(const std::string& path, const std::string& message)

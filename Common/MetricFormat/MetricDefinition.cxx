@@ -749,22 +749,10 @@ std::shared_ptr<const Metric> ParseMetricDefinition(
       ParseHasExpressions = this->SavedExpressions;
     }
   } scope(time);
-  Json root;
-  try
-  {
-    root = Json::parse(json);
-  }
-  catch (const Json::exception& e)
-  {
-    // Syntax errors and number overflows: nlohmann's words, and where it
-    // stopped as data.
-    JsonErrorPlace place;
-    place.SyntaxOffset = JsonSyntaxErrorOffset(json);
-    MetricDefinitionError error(place, "invalid JSON: " + json::WithoutExceptionId(e.what()));
-    LocateJsonError(json, error.Place);
-    throw error;
-  }
-  std::shared_ptr<const Metric> metric = LocatingErrorsIn(json, [&]() { return Build(root); });
+  // Syntax errors and number overflows: nlohmann's words, and where it
+  // stopped as data.
+  std::shared_ptr<const Metric> metric = LocatingErrorsIn(
+    json, [&]() { return Build(json::Parse<MetricDefinitionError>(json, "", "invalid JSON: ")); });
   const std::string why = ParseHasExpressions ? std::string() : metric->Validate();
   if (!why.empty())
   {

@@ -74,18 +74,7 @@ Json ToJson(const Vec3& v)
 /// ParseCameraPathFile, its errors not yet located in the text.
 CameraPathFile ParseCameraPathText(const std::string& text, const std::string& where)
 {
-  Json root;
-  try
-  {
-    root = Json::parse(text);
-  }
-  catch (const Json::exception& e)
-  {
-    JsonErrorPlace place;
-    place.Path = where;
-    place.SyntaxOffset = JsonSyntaxErrorOffset(text);
-    throw CameraPathFileError(place, json::WithoutExceptionId(e.what()));
-  }
+  const Json root = json::Parse<CameraPathFileError>(text, where, "");
   const char* position = SceneKey(PictureSettingId::Position);
   const char* lookAt = SceneKey(PictureSettingId::LookAt);
   const char* viewUp = SceneKey(PictureSettingId::ViewUp);

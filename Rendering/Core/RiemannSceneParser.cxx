@@ -652,19 +652,8 @@ void ParseObjects(
 Scene ParseSceneText(const std::string& json, const std::string& baseDirectory)
 {
   const std::string path = "scene";
-  Json root;
-  try
-  {
-    root = Json::parse(json);
-  }
-  catch (const Json::exception& e)
-  {
-    // Syntax errors, and numbers out of double's range (out_of_range.406).
-    JsonErrorPlace place;
-    place.Path = path;
-    place.SyntaxOffset = JsonSyntaxErrorOffset(json);
-    throw SceneDefinitionError(place, "invalid JSON: " + json::WithoutExceptionId(e.what()));
-  }
+  // Syntax errors, and numbers out of double's range (out_of_range.406).
+  const Json root = json::Parse<SceneDefinitionError>(json, path, "invalid JSON: ");
   if (!root.is_object())
   {
     Fail(path, "expected a JSON object, got " + Describe(root));
