@@ -226,7 +226,7 @@ void InsideView::StartCpuTrace()
   tracer->SetSamplesPerPixel(this->Samples);
   auto timer = std::make_shared<QElapsedTimer>();
   timer->start();
-  this->Document->Jobs()->Start(this, tracer, QStringLiteral("CPU render"),
+  this->Document->Jobs()->Start(this, std::move(tracer), QStringLiteral("CPU render"),
     [this, timer](vtkAlgorithm* job, bool ok, const QString& error) {
       if (ok)
       {

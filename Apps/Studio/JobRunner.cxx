@@ -18,6 +18,7 @@
 #include <atomic>
 #include <mutex>
 #include <sstream>
+#include <utility>
 
 namespace riemann
 {
@@ -25,6 +26,13 @@ namespace studio
 {
 struct JobRunner::Job
 {
+  // Constructed from the moved handle: VTK 9.1's vtkSmartPointer has a move
+  // constructor but no move assignment (assigning registers a second
+  // reference and leaves the caller's).
+  explicit Job(vtkSmartPointer<vtkAlgorithm>&& algorithm)
+    : Algorithm(std::move(algorithm))
+  {
+  }
   vtkSmartPointer<vtkAlgorithm> Algorithm;
   QString Label;
   Finished WhenFinished;
@@ -75,15 +83,14 @@ void JobRunner::Close()
   this->WaitForAll();
 }
 
-void JobRunner::Start(
-  const void* key, vtkSmartPointer<vtkAlgorithm> algorithm, const QString& label, Finished finished)
+void JobRunner::Start(const void* key, vtkSmartPointer<vtkAlgorithm>&& algorithm,
+  const QString& label, Finished finished)
 {
   if (this->Closed)
   {
     return;
   }
-  auto job = std::make_shared<Job>();
-  job->Algorithm = std::move(algorithm);
+  auto job = std::make_shared<Job>(std::move(algorithm));
   job->Label = label;
   job->WhenFinished = std::move(finished);
   auto running = this->Running.find(key);
@@ -97,12 +104,16 @@ void JobRunner::Start(
   this->Launch(key, job);
 }
 
-void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
+void JobRunner::Launch(const void* key, std::shared_ptr<Job> owned)
 {
-  this->Running[key] = job;
+  // The Running entry owns the job until Done(); the worker and the signal
+  // see it through plain pointers, so nothing on either thread registers or
+  // unregisters the algorithm while it runs (JobRunner.h).
+  Job* job = owned.get();
+  this->Running[key] = std::move(owned);
   Q_EMIT this->RunningChanged(static_cast<int>(this->Running.size()));
-  QObject::connect(&job->Watcher, &QFutureWatcher<void>::finished, this,
-    [this, key, job]() { this->Done(key, job); });
+  QObject::connect(
+    &job->Watcher, &QFutureWatcher<void>::finished, this, [this, key]() { this->Done(key); });
   QPointer<JobRunner> runner(this);
   job->Watcher.setFuture(QtConcurrent::run([job, runner]() {
     ProgressContext context{ runner, job->Label };
@@ -110,7 +121,7 @@ void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
     progress->SetCallback(ForwardProgress);
     progress->SetClientData(&context);
     vtkNew<vtkCallbackCommand> errors;
-    errors->SetClientData(job.get());
+    errors->SetClientData(job);
     errors->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
       auto* owner = static_cast<Job*>(clientData);
       std::lock_guard<std::mutex> lock(owner->ErrorLock);
@@ -123,18 +134,25 @@ void JobRunner::Launch(const void* key, std::shared_ptr<Job> job)
     // Observers are added here, on the job's thread: the algorithm may still
     // be running the job this one replaces when Start() queues it. A Cancel
     // requested before this point is kept by JobStop and honoured at once.
-    job->Stop.Watch(job->Algorithm);
-    job->Algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
-    job->Algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
-    job->Algorithm->Update();
-    job->Algorithm->RemoveObservers(vtkCommand::ProgressEvent);
-    job->Algorithm->RemoveObservers(vtkCommand::ErrorEvent);
+    vtkAlgorithm* algorithm = job->Algorithm.Get();
+    job->Stop.Watch(algorithm);
+    algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
+    algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
+    algorithm->Update();
+    algorithm->RemoveObservers(vtkCommand::ProgressEvent);
+    algorithm->RemoveObservers(vtkCommand::ErrorEvent);
   }));
 }
 
-void JobRunner::Done(const void* key, std::shared_ptr<Job> job)
+void JobRunner::Done(const void* key)
 {
-  this->Running.erase(key);
+  auto found = this->Running.find(key);
+  if (found == this->Running.end())
+  {
+    return;
+  }
+  std::shared_ptr<Job> job = std::move(found->second);
+  this->Running.erase(found);
   // The job is over: its stop must not stop the next job of this algorithm.
   job->Stop.Release();
   const bool cancelled = job->Stop.Requested() || job->Algorithm->GetAbortExecute();
@@ -148,16 +166,27 @@ void JobRunner::Done(const void* key, std::shared_ptr<Job> job)
   {
     Q_EMIT this->JobFailed(job->Label, error);
   }
+  // The job queued behind this one, taken before the callback: a Start for
+  // this key from inside the callback is newer, and wins over it.
+  std::shared_ptr<Job> next;
+  auto queued = this->Queued.find(key);
+  if (queued != this->Queued.end())
+  {
+    next = std::move(queued->second);
+    this->Queued.erase(queued);
+  }
   if (job->WhenFinished)
   {
     job->WhenFinished(job->Algorithm, ok, cancelled ? QString() : error);
   }
-  auto queued = this->Queued.find(key);
-  if (queued != this->Queued.end())
+  // This runs inside the job's watcher's signal: free the job (its
+  // algorithm, output and watcher) once that signal has returned, on this
+  // thread.
+  QObject::disconnect(&job->Watcher, nullptr, this, nullptr);
+  QMetaObject::invokeMethod(this, [job]() {}, Qt::QueuedConnection);
+  if (next && !this->Closed && this->Running.count(key) == 0 && this->Queued.count(key) == 0)
   {
-    auto next = queued->second;
-    this->Queued.erase(queued);
-    this->Launch(key, next);
+    this->Launch(key, std::move(next));
     return;
   }
   Q_EMIT this->RunningChanged(static_cast<int>(this->Running.size()));

@@ -9,6 +9,15 @@
  * job's output is dropped and the item keeps its last result. A new Start for
  * a key whose job is still running cancels that job and runs the new one when
  * it has stopped (the latest request wins: moving a slider re-runs once).
+ *
+ * While a job runs, the runner holds the only reference to its algorithm and
+ * neither thread registers or unregisters it: VTK's garbage collector (which
+ * runs on every UnRegister of an algorithm, data object or executive, and
+ * walks the whole pipeline) is not thread-safe, and a reference dropped on
+ * the GUI thread while the worker updates the pipeline let it free the
+ * running algorithm. Start() therefore takes the algorithm by move, the
+ * worker sees a plain pointer, and a finished job is freed on the GUI thread
+ * after its callback.
  */
 #ifndef RiemannStudio_JobRunner_h
 #define RiemannStudio_JobRunner_h
@@ -39,7 +48,8 @@ public:
   explicit JobRunner(QObject* parent = nullptr);
   ~JobRunner() override;
 
-  void Start(const void* key, vtkSmartPointer<vtkAlgorithm> job, const QString& label,
+  /// `job` is moved in: the caller keeps no reference (see above).
+  void Start(const void* key, vtkSmartPointer<vtkAlgorithm>&& job, const QString& label,
     Finished finished);
   /// Cancel the job of `key` (and forget a queued one).
   void Cancel(const void* key);
@@ -63,7 +73,7 @@ Q_SIGNALS:
 private:
   struct Job;
   void Launch(const void* key, std::shared_ptr<Job> job);
-  void Done(const void* key, std::shared_ptr<Job> job);
+  void Done(const void* key);
 
   std::map<const void*, std::shared_ptr<Job>> Running;
   std::map<const void*, std::shared_ptr<Job>> Queued;

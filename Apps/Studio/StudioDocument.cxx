@@ -382,7 +382,7 @@ void StudioDocument::Run(PipelineItem* item)
   this->Stale.erase(item);
   vtkSmartPointer<vtkAlgorithm> job = item->MakeJob(this->MakeJobInputs());
   const nlohmann::json started = item->Settings();
-  this->Runner.Start(item, job, item->Name(),
+  this->Runner.Start(item, std::move(job), item->Name(),
     [this, item, started](vtkAlgorithm* finished, bool ok, const QString& error) {
       if (this->IndexOf(item) < 0)
       {
@@ -455,7 +455,7 @@ void StudioDocument::SampleTimeRange(PipelineItem* item)
     inputs.Metric = metric;
     sampler->AddJob(item->MakeJob(inputs));
   }
-  this->Runner.Start(item->TimeRangeKey(), sampler, item->Name() + ": colour range over t",
+  this->Runner.Start(item->TimeRangeKey(), std::move(sampler), item->Name() + ": colour range over t",
     [this, item, source](vtkAlgorithm* finished, bool ok, const QString&) {
       double range[2];
       if (ok && this->IndexOf(item) >= 0 && TimeRangeSampler::GetRange(finished->GetOutputDataObject(0), range))

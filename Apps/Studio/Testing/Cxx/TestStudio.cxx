@@ -17,6 +17,7 @@
 #include "PropertiesPanel.h"
 #include "StudioDocument.h"
 #include "AnimationExport.h"
+#include "JobRunner.h"
 #include "PythonShell.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -43,13 +44,18 @@
 #include "vtkCoordinate.h"
 #include "vtkHandleWidget.h"
 #include "vtkImageData.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProp3DCollection.h"
 #include "vtkRenderer.h"
 #include "vtkLookupTable.h"
 #include "vtkScalarBarActor.h"
+#include "vtkWeakPointer.h"
 #include "vtkXMLPolyDataReader.h"
 
+#include <atomic>
+#include <chrono>
+#include <thread>
 #include <QAction>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -80,6 +86,41 @@
 #include <memory>
 
 using namespace riemann::studio;
+
+namespace
+{
+/// A job that records, on its worker thread, its own reference count when
+/// it starts and again once the test lets it go on, after the caller's
+/// scope that started it has ended: equal when nothing on the GUI thread
+/// kept, registered or dropped a reference to the running algorithm
+/// (JobRunner.h: VTK's garbage collector is not thread-safe, and a caller's
+/// reference dropped while the job ran freed it).
+class ReferenceProbe : public vtkPolyDataAlgorithm
+{
+public:
+  static ReferenceProbe* New();
+  vtkTypeMacro(ReferenceProbe, vtkPolyDataAlgorithm);
+  std::atomic<int> Before{ -1 };
+  std::atomic<int> After{ -1 };
+  std::atomic<bool> Entered{ false };
+  std::atomic<bool> GoOn{ false };
+
+protected:
+  ReferenceProbe() { this->SetNumberOfInputPorts(0); }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override
+  {
+    this->Before = this->GetReferenceCount();
+    this->Entered = true;
+    for (int waited = 0; !this->GoOn && waited < 10000; ++waited)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    this->After = this->GetReferenceCount();
+    return 1;
+  }
+};
+vtkStandardNewMacro(ReferenceProbe);
+}
 
 namespace
 {
@@ -224,6 +265,7 @@ private Q_SLOTS:
   void PickedPixelShowsBundleRay();
   void ProjectRoundTrip();
   void CancelledJobLeavesAppResponsive();
+  void JobsOwnTheirAlgorithmsAloneAndFreeThem();
   void BadProjectIsRefusedWithDialog();
   void ProjectIntegrationFollowsTheSchema();
   void InsideViewFormFollowsThePictureSchema();
@@ -515,6 +557,44 @@ void TestStudio::ProjectRoundTrip()
   QCOMPARE(window->Browser()->Row(window->Document()->Items().front().get())->text(1), QString("Fan"));
   QCOMPARE(DifferentPixels(inside, window->Inside()->Capture()), 0.0);
   QVERIFY(DifferentPixels(outside, window->Outside()->Capture()) < 0.001);
+}
+
+void TestStudio::JobsOwnTheirAlgorithmsAloneAndFreeThem()
+{
+  JobRunner runner;
+  vtkWeakPointer<ReferenceProbe> freed[2];
+  ReferenceProbe* running[2] = { nullptr, nullptr };
+  int finished = 0;
+  for (int k = 0; k < 2; ++k)
+  {
+    {
+      // The handle as the document holds it (a converted handle would be
+      // emptied by the conversion, hiding a copy made by Start).
+      vtkSmartPointer<vtkAlgorithm> probe = vtkSmartPointer<ReferenceProbe>::New();
+      running[k] = static_cast<ReferenceProbe*>(probe.Get());
+      freed[k] = running[k];
+      runner.Start(&freed[k], std::move(probe), "probe",
+        [&finished](vtkAlgorithm* job, bool ok, const QString& error) {
+          auto* done = static_cast<ReferenceProbe*>(job);
+          QVERIFY(ok && error.isEmpty());
+          QVERIFY(done->Before > 0);
+          QCOMPARE(done->After.load(), done->Before.load());
+          ++finished;
+        });
+      QVERIFY(runner.IsRunning(&freed[k]));
+      // The job has started and counted its references; the caller's handle
+      // is still in scope.
+      QVERIFY(QTest::qWaitFor([&]() { return running[k]->Entered.load(); }, 10000));
+    }
+    // The caller's scope is over: the job counts again (the second job
+    // starts while the first waits).
+    running[k]->GoOn = true;
+  }
+  runner.WaitForAll();
+  QTRY_COMPARE(finished, 2);
+  // A finished job is freed (its algorithm and output), on this thread,
+  // once its callback has run: not kept for the runner's life.
+  QTRY_VERIFY(!freed[0] && !freed[1]);
 }
 
 void TestStudio::CancelledJobLeavesAppResponsive()
