@@ -5,7 +5,7 @@
 #include "StudioDocument.h"
 
 #include "vtkRiemannScene.h"
-#include "vtkRiemannSceneSource.h"
+#include "vtkRiemannOutsideScene.h"
 
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -46,17 +46,6 @@ void SetUpActor(vtkActor* actor, vtkAlgorithmOutput* input, const double color[3
   actor->GetProperty()->SetColor(color[0], color[1], color[2]);
 }
 
-/// Length of the frustum drawn for the observer: a fifth of the scene.
-double FrustumLength(vtkRiemannSceneSource* scene)
-{
-  scene->Update();
-  double bounds[6];
-  scene->GetOutput()->GetBounds(bounds);
-  const double size = vtkMath::AreBoundsInitialized(bounds)
-    ? std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] })
-    : 5.0;
-  return std::max(0.5, 0.2 * size);
-}
 }
 
 OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
@@ -64,34 +53,15 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
   , Document(document)
 {
   this->setMinimumSize(200, 150);
-  this->SceneRenderer->SetBackground(0.12, 0.13, 0.16);
-  this->SceneRenderer->SetBackground2(0.30, 0.32, 0.38);
-  this->SceneRenderer->GradientBackgroundOn();
   this->renderWindow()->AddRenderer(this->SceneRenderer);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   this->interactor()->SetInteractorStyle(style);
 
-  // The scene as ordinary geometry, translucent, in its material colours.
-  this->SceneGeometry->SetScene(document->Scene());
-  vtkNew<vtkPolyDataMapper> sceneMapper;
-  sceneMapper->SetInputConnection(this->SceneGeometry->GetOutputPort());
-  sceneMapper->SetColorModeToDirectScalars();
-  this->SceneActor->SetMapper(sceneMapper);
-  this->SceneActor->GetProperty()->SetOpacity(0.2);
-  this->SceneRenderer->AddActor(this->SceneActor);
-
-  // The observer: an eye (a handle to drag) and its view frustum.
-  const double white[3] = { 1.0, 1.0, 1.0 };
-  vtkNew<vtkPolyDataMapper> frustumMapper;
-  frustumMapper->SetInputData(this->FrustumLines);
-  this->FrustumActor->SetMapper(frustumMapper);
-  this->FrustumActor->GetProperty()->SetColor(1.0, 1.0, 0.6);
-  this->FrustumActor->GetProperty()->SetLineWidth(1.5);
-  this->FrustumActor->PickableOff();
-  this->SceneRenderer->AddActor(this->FrustumActor);
-  SetUpActor(this->EyeActor, this->Eye->GetOutputPort(), white);
-  this->EyeActor->PickableOff();
-  this->SceneRenderer->AddActor(this->EyeActor);
+  // The scene, the observer's eye (a handle to drag) and its view frustum:
+  // the outside view's picture as `riemann render --bundle` draws it.
+  this->Picture->SetScene(document->Scene());
+  this->Picture->SetObserver(document->Observer());
+  this->Picture->AddToRenderer(this->SceneRenderer);
   vtkNew<vtkPointHandleRepresentation3D> handle;
   handle->AllOff();
   handle->SetHandleSize(12);
@@ -145,7 +115,7 @@ OutsideView::OutsideView(StudioDocument* document, QWidget* parent)
     this->ScheduleRender();
   });
   QObject::connect(document, &StudioDocument::SceneChanged, this, [this]() {
-    this->SceneGeometry->Modified();
+    this->UpdateObserver();
     this->ResetCamera();
     this->ScheduleRender();
   });
@@ -257,56 +227,13 @@ void OutsideView::RemoveItem(PipelineItem* item)
 
 void OutsideView::UpdateObserver()
 {
-  vtkCamera* camera = this->Document->Observer();
-  double eye[3], focal[3], up[3];
-  camera->GetPosition(eye);
-  camera->GetFocalPoint(focal);
-  camera->GetViewUp(up);
-  double forward[3] = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
-  vtkMath::Normalize(forward);
-  double right[3];
-  vtkMath::Cross(forward, up, right);
-  vtkMath::Normalize(right);
-  vtkMath::Cross(right, forward, up);
-
-  // The frustum's four edges, as long as a fifth of the scene; the aspect
-  // ratio is the inside view's.
-  const double length = FrustumLength(this->SceneGeometry);
-  const double halfHeight = length * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle()));
-  const double aspect = static_cast<double>(this->Document->ViewWidth()) /
-    std::max(1, this->Document->ViewHeight());
-  const double halfWidth = halfHeight * aspect;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(eye);
-  const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
-  for (const auto& corner : corners)
-  {
-    double p[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      p[i] = eye[i] + length * forward[i] + corner[0] * halfWidth * right[i] +
-        corner[1] * halfHeight * up[i];
-    }
-    points->InsertNextPoint(p);
-  }
-  vtkNew<vtkCellArray> lines;
-  for (vtkIdType corner = 1; corner <= 4; ++corner)
-  {
-    const vtkIdType edge[2] = { 0, corner };
-    lines->InsertNextCell(2, edge);
-    const vtkIdType rim[2] = { corner, corner % 4 + 1 };
-    lines->InsertNextCell(2, rim);
-  }
-  this->FrustumLines->SetPoints(points);
-  this->FrustumLines->SetLines(lines);
-  this->FrustumLines->Modified();
-
-  this->Eye->SetCenter(eye);
-  this->Eye->SetRadius(0.06 * length);
+  this->Picture->SetAspectRatio(
+    static_cast<double>(this->Document->ViewWidth()) / std::max(1, this->Document->ViewHeight()));
+  this->Picture->Update();
   if (!this->MovingEye)
   {
     vtkHandleRepresentation::SafeDownCast(this->EyeHandle->GetRepresentation())
-      ->SetWorldPosition(eye);
+      ->SetWorldPosition(this->Document->Observer()->GetPosition());
   }
 }
 
@@ -333,38 +260,7 @@ void OutsideView::MoveObserverToHandle()
 
 void OutsideView::ResetCamera()
 {
-  // Frame the scene and the observer, seen from above and to the side of
-  // the observer's own view so the bending of rays shows.
-  this->SceneGeometry->Update();
-  double bounds[6];
-  this->SceneGeometry->GetOutput()->GetBounds(bounds);
-  if (!vtkMath::AreBoundsInitialized(bounds))
-  {
-    const double unit[6] = { -1, 1, -1, 1, -1, 1 };
-    std::copy(unit, unit + 6, bounds);
-  }
-  vtkCamera* observer = this->Document->Observer();
-  const double* eye = observer->GetPosition();
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    bounds[2 * axis] = std::min(bounds[2 * axis], eye[axis]);
-    bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], eye[axis]);
-  }
-  const double* focal = observer->GetFocalPoint();
-  const double* up = observer->GetViewUp();
-  double forward[3] = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
-  vtkMath::Normalize(forward);
-  double side[3];
-  vtkMath::Cross(forward, up, side);
-  vtkCamera* camera = this->SceneRenderer->GetActiveCamera();
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0] - forward[0] + 1.2 * side[0] + 0.8 * up[0],
-    center[1] - forward[1] + 1.2 * side[1] + 0.8 * up[1],
-    center[2] - forward[2] + 1.2 * side[2] + 0.8 * up[2]);
-  camera->SetViewUp(up);
-  this->SceneRenderer->ResetCamera(bounds);
+  this->Picture->PlaceCamera(this->SceneRenderer);
 }
 
 void OutsideView::ScheduleRender()
@@ -406,7 +302,7 @@ void OutsideView::ShowPickedRay(vtkPolyData* ray)
     ray->GetPoint(ray->GetNumberOfPoints() - 1, end);
     this->RayEnd->SetCenter(end);
     // Sized with the scene, like the frustum: visible at any scale.
-    const double length = FrustumLength(this->SceneGeometry);
+    const double length = this->Picture->GetFrustumLength();
     this->RayEnd->SetRadius(0.04 * length);
     this->RayTube->SetRadius(0.012 * length);
   }
@@ -455,7 +351,7 @@ void OutsideView::PickPoint(int x, int y)
 
 vtkPolyData* OutsideView::Frustum() const
 {
-  return this->FrustumLines;
+  return this->Picture->GetFrustum();
 }
 }
 }

@@ -1,8 +1,10 @@
 /**
  * @file OutsideView.h
  * @brief The outside view: ordinary (Euclidean) VTK rendering of the scene
- * objects (vtkRiemannSceneSource, translucent), the observer as an eye with
- * its view frustum, every pipeline item, and the picked ray.
+ * and the observer as `riemann render --bundle` draws them
+ * (vtkRiemannOutsideScene: the scene translucent, an eye with its view
+ * frustum, the same camera placement), every pipeline item, and the picked
+ * ray.
  *
  * The eye is a handle: dragging it moves the observer (position and look-at
  * point together), so the inside view follows; navigating the inside view
@@ -30,7 +32,7 @@ class vtkActor;
 class vtkHandleWidget;
 class vtkPolyData;
 class vtkRenderer;
-class vtkRiemannSceneSource;
+class vtkRiemannOutsideScene;
 class vtkSphereSource;
 
 namespace riemann
@@ -96,12 +98,8 @@ private:
 
   StudioDocument* Document;
   vtkNew<vtkRenderer> SceneRenderer;
-  vtkNew<vtkRiemannSceneSource> SceneGeometry;
-  vtkNew<vtkActor> SceneActor;
-  vtkNew<vtkPolyData> FrustumLines;
-  vtkNew<vtkActor> FrustumActor;
-  vtkNew<vtkSphereSource> Eye;
-  vtkNew<vtkActor> EyeActor;
+  /// The scene, the observer's eye and frustum (Rendering/Scene).
+  vtkNew<vtkRiemannOutsideScene> Picture;
   vtkNew<vtkHandleWidget> EyeHandle;
   vtkNew<vtkPolyData> Ray;
   vtkNew<vtkTubeFilter> RayTube;

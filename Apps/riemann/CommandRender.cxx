@@ -18,17 +18,10 @@
 #include "RiemannFilmWriter.h"
 #include "RiemannImageIO.h"
 #include "RiemannScene.h"
-#include "vtkActor.h"
-#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRiemannCPURayTracer.h"
@@ -36,10 +29,8 @@
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayBundle.h"
 #include "vtkRiemannRayTracePass.h"
+#include "vtkRiemannOutsideScene.h"
 #include "vtkRiemannScene.h"
-#include "vtkRiemannSceneSource.h"
-#include "vtkSphereSource.h"
-#include "vtkTubeFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -159,37 +150,6 @@ Image SideBySide(const Image& left, const Image& right)
   return both;
 }
 
-/// Bounds of the outside view's geometry without its planes (drawn as large
-/// patches, they would shrink everything else to a speck), unless the scene
-/// has nothing but planes.
-const double* FramedBounds(vtkPolyData* geometry, vtkRiemannScene* scene)
-{
-  static thread_local double bounds[6];
-  const riemann::Scene description = scene->GetScene();
-  vtkDataArray* objects = geometry->GetCellData()->GetArray("ObjectIndex");
-  vtkBoundingBox box;
-  for (vtkIdType cell = 0; objects && cell < geometry->GetNumberOfCells(); ++cell)
-  {
-    const int object = static_cast<int>(objects->GetTuple1(cell));
-    if (object >= 0 && object < static_cast<int>(description.Objects.size()) &&
-      description.Objects[object].Type != riemann::ObjectType::Plane)
-    {
-      double cellBounds[6];
-      geometry->GetCellBounds(cell, cellBounds);
-      box.AddBounds(cellBounds);
-    }
-  }
-  if (box.IsValid())
-  {
-    box.GetBounds(bounds);
-  }
-  else
-  {
-    geometry->GetBounds(bounds);
-  }
-  return bounds;
-}
-
 /**
  * How the rays go, for every renderer of this command (the pass or the CPU
  * tracer, and the bundle): the scene's settings unless an option overrides
@@ -210,106 +170,6 @@ struct RaySetup
   }
 };
 
-// RenderOutside's steps: trace the bundle -> AddSceneGeometry -> AddRayTubes
-// -> AddEye -> PlaceOutsideCamera -> render.
-
-/// The scene as ordinary geometry, translucent; `bounds` gets what the
-/// outside camera frames (FramedBounds).
-void AddSceneGeometry(vtkRenderer* renderer, vtkRiemannScene* scene, double bounds[6])
-{
-  vtkNew<vtkRiemannSceneSource> geometry;
-  geometry->SetScene(scene);
-  vtkNew<vtkPolyDataMapper> geometryMapper;
-  geometryMapper->SetInputConnection(geometry->GetOutputPort());
-  geometryMapper->SetColorModeToDirectScalars();
-  vtkNew<vtkActor> geometryActor;
-  geometryActor->SetMapper(geometryMapper);
-  geometryActor->GetProperty()->SetOpacity(0.2);
-  renderer->AddActor(geometryActor);
-  geometry->Update();
-  const double* framed = FramedBounds(geometry->GetOutput(), scene);
-  std::copy(framed, framed + 6, bounds);
-}
-
-/// The rays as tubes of radius 0.003 `size`. Rays that hit are coloured by
-/// the surface where they end (the inside view's colour there); rays that
-/// escape are light grey, visible on the dark background.
-void AddRayTubes(vtkRenderer* renderer, vtkPolyData* bundle, double size)
-{
-  vtkNew<vtkPolyData> rayLines;
-  rayLines->ShallowCopy(bundle);
-  vtkNew<vtkUnsignedCharArray> rayColors;
-  rayColors->DeepCopy(rayLines->GetCellData()->GetArray("EndColor"));
-  rayColors->SetName("RayColor");
-  vtkDataArray* hits = rayLines->GetCellData()->GetArray("Hit");
-  for (vtkIdType i = 0; i < rayColors->GetNumberOfTuples(); ++i)
-  {
-    if (hits->GetTuple1(i) == 0)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        rayColors->SetTypedComponent(i, c, 200);
-      }
-    }
-  }
-  rayLines->GetCellData()->AddArray(rayColors);
-  vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputData(rayLines);
-  tubes->SetRadius(0.003 * size);
-  tubes->SetNumberOfSides(6);
-  vtkNew<vtkPolyDataMapper> rayMapper;
-  rayMapper->SetInputConnection(tubes->GetOutputPort());
-  rayMapper->SetScalarModeToUseCellFieldData();
-  rayMapper->SelectColorArray("RayColor");
-  rayMapper->SetColorModeToDirectScalars();
-  vtkNew<vtkActor> rays;
-  rays->SetMapper(rayMapper);
-  renderer->AddActor(rays);
-}
-
-/// The observer as a white sphere of radius 0.015 `size`.
-void AddEye(vtkRenderer* renderer, const double position[3], double size)
-{
-  vtkNew<vtkSphereSource> eye;
-  eye->SetCenter(position[0], position[1], position[2]);
-  eye->SetRadius(0.015 * size);
-  vtkNew<vtkPolyDataMapper> eyeMapper;
-  eyeMapper->SetInputConnection(eye->GetOutputPort());
-  vtkNew<vtkActor> eyeActor;
-  eyeActor->SetMapper(eyeMapper);
-  eyeActor->GetProperty()->SetColor(1, 1, 1);
-  renderer->AddActor(eyeActor);
-}
-
-/// Look at the scene and the observer from above and to the side of the
-/// observer's own view, so the bending of the rays shows; frame the scene
-/// and the observer, not the escaping rays' far ends.
-void PlaceOutsideCamera(
-  vtkRenderer* renderer, vtkCamera* inside, const double bounds[6], double size)
-{
-  vtkCamera* outside = renderer->GetActiveCamera();
-  const double* eyePosition = inside->GetPosition();
-  const double* focal = inside->GetFocalPoint();
-  double forward[3] = { focal[0] - eyePosition[0], focal[1] - eyePosition[1],
-    focal[2] - eyePosition[2] };
-  const double* up = inside->GetViewUp();
-  double side[3] = { forward[1] * up[2] - forward[2] * up[1],
-    forward[2] * up[0] - forward[0] * up[2], forward[0] * up[1] - forward[1] * up[0] };
-  outside->SetFocalPoint(focal);
-  outside->SetPosition(eyePosition[0] - forward[0] + 1.2 * side[0] + 0.8 * size * up[0],
-    eyePosition[1] - forward[1] + 1.2 * side[1] + 0.8 * size * up[1],
-    eyePosition[2] - forward[2] + 1.2 * side[2] + 0.8 * size * up[2]);
-  outside->SetViewUp(up);
-  double frame[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    frame[2 * axis] = std::min(frame[2 * axis], eyePosition[axis]);
-    frame[2 * axis + 1] = std::max(frame[2 * axis + 1], eyePosition[axis]);
-  }
-  renderer->ResetCamera(frame);
-  outside->Zoom(1.2);
-}
-
 /// The outside view: the scene as ordinary geometry, the observer, and the
 /// bundle of its curved rays coloured by where they end.
 Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera* inside,
@@ -328,16 +188,13 @@ Image RenderOutside(vtkRiemannMetric* metric, vtkRiemannScene* scene, vtkCamera*
   errors->ThrowIfAny("tracing the ray bundle failed:");
 
   vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.12, 0.13, 0.16);
-  renderer->SetBackground2(0.30, 0.32, 0.38);
-  renderer->GradientBackgroundOn();
-  double bounds[6];
-  AddSceneGeometry(renderer, scene, bounds);
-  const double size =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-  AddRayTubes(renderer, bundle->GetOutput(), size);
-  AddEye(renderer, inside->GetPosition(), size);
-  PlaceOutsideCamera(renderer, inside, bounds, size);
+  vtkNew<vtkRiemannOutsideScene> outside;
+  outside->SetScene(scene);
+  outside->SetObserver(inside);
+  outside->SetAspectRatio(static_cast<double>(args.Width) / args.Height);
+  outside->SetRays(bundle->GetOutput());
+  outside->AddToRenderer(renderer);
+  outside->PlaceCamera(renderer);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
