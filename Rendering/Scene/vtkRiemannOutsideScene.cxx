@@ -92,8 +92,20 @@ vtkRiemannScene* vtkRiemannOutsideScene::GetScene()
 
 void vtkRiemannOutsideScene::GetFramedBounds(double bounds[6])
 {
+  // Asked on every observer move (the frustum's length): walk the scene's
+  // cells only when its geometry changed.
   this->SceneGeometry->Update();
   vtkPolyData* geometry = this->SceneGeometry->GetOutput();
+  if (geometry->GetMTime() != this->FramedGeometryTime)
+  {
+    this->ComputeFramedBounds(geometry);
+    this->FramedGeometryTime = geometry->GetMTime();
+  }
+  std::copy(this->Framed, this->Framed + 6, bounds);
+}
+
+void vtkRiemannOutsideScene::ComputeFramedBounds(vtkPolyData* geometry)
+{
   vtkBoundingBox box;
   vtkDataArray* objects = geometry->GetCellData()->GetArray("ObjectIndex");
   vtkRiemannScene* scene = this->SceneGeometry->GetScene();
@@ -121,7 +133,7 @@ void vtkRiemannOutsideScene::GetFramedBounds(double bounds[6])
     const double unit[6] = { -1, 1, -1, 1, -1, 1 };
     box.AddBounds(unit);
   }
-  box.GetBounds(bounds);
+  box.GetBounds(this->Framed);
 }
 
 double vtkRiemannOutsideScene::GetSceneSize()

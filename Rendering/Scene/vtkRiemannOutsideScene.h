@@ -122,6 +122,11 @@ private:
   // Update's steps.
   void UpdateObserver(double frustumLength);
   void UpdateRays(double frustumLength);
+  /// GetFramedBounds' walk over the scene's cells, into Framed.
+  void ComputeFramedBounds(vtkPolyData* geometry);
+
+  double Framed[6] = { -1, 1, -1, 1, -1, 1 };
+  vtkMTimeType FramedGeometryTime = 0;
 
   vtkNew<vtkRiemannSceneSource> SceneGeometry;
   vtkNew<vtkActor> SceneActor;
