@@ -33,10 +33,12 @@ KINDS = {
     "direction": "Direction",
     "choice": "Choice",
     "number_list": "NumberList",
+    "bounds": "Bounds",
+    "dimensions": "Dimensions",
 }
 KEYS = {"like", "name", "type", "default", "minimum", "maximum", "minimum_exclusive",
         "choices", "unit", "label", "help", "aliases", "commands"}
-TOP_KEYS = {"class", "label", "help", "paraview_group", "settings", "presets"}
+TOP_KEYS = {"class", "label", "help", "paraview_group", "settings", "presets", "abstract"}
 
 
 class DeclarationError(Exception):
@@ -91,6 +93,32 @@ def read_declaration(path):
     return doc
 
 
+def valid_value(s, value):
+    """Whether `value` is one setting `s` may hold (a preset's)."""
+    kind = s["type"]
+    number = lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)
+    lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
+    in_range = lambda x: number(x) and (x > lo if s.get("minimum_exclusive") else x >= lo) and x <= hi
+    if kind == "choice":
+        return value in s["choices"]
+    if kind == "boolean":
+        return isinstance(value, bool)
+    if kind == "integer":
+        return in_range(value) and float(value).is_integer()
+    if kind == "number":
+        return in_range(value)
+    if kind in ("point", "direction"):
+        return isinstance(value, list) and len(value) == 3 and all(number(x) for x in value) and \
+            (kind == "point" or any(x != 0 for x in value))
+    if kind == "bounds":
+        return isinstance(value, list) and len(value) == 6 and all(number(x) for x in value) and \
+            all(value[2 * a] < value[2 * a + 1] for a in range(3))
+    if kind == "dimensions":
+        return isinstance(value, list) and len(value) == 3 and \
+            all(in_range(x) and float(x).is_integer() for x in value)
+    return isinstance(value, list) and all(in_range(x) for x in value)
+
+
 def check_declaration(doc):
     where = doc["class"] + ".settings.json"
     settings = doc["settings"]
@@ -117,6 +145,12 @@ def check_declaration(doc):
             check(at, isinstance(d, bool), "the default must be true or false")
         elif kind in ("point", "direction"):
             check(at, isinstance(d, list) and len(d) == 3, "the default must be three numbers")
+        elif kind == "bounds":
+            check(at, valid_value(s, d), "the default must be six numbers x0,x1,y0,y1,z0,z1 with x0 < x1, y0 < y1, z0 < z1")
+        elif kind == "dimensions":
+            check(at, "minimum" in s and "maximum" in s and -2**31 <= s["minimum"] and s["maximum"] < 2**31,
+                  "dimensions need a minimum and a maximum within an int's range")
+            check(at, valid_value(s, d), "the default must be three whole numbers in the range")
         elif kind == "number_list":
             check(at, isinstance(d, list), "the default must be a list")
             for key in ("add", "clear", "count", "get"):
@@ -126,17 +160,23 @@ def check_declaration(doc):
             check(at, isinstance(d, (int, float)) and not isinstance(d, bool), "the default must be a number")
             if kind == "integer":
                 check(at, float(d).is_integer(), "the default must be whole")
+                # The VTK property and ParaView's IntVectorProperty hold an int.
+                check(at, "minimum" in s and "maximum" in s and -2**31 <= s["minimum"] and s["maximum"] < 2**31,
+                      "an integer needs a minimum and a maximum within an int's range")
         lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
         if kind in ("integer", "number"):
             ok = (d > lo if s.get("minimum_exclusive") else d >= lo) and d <= hi
             check(at, ok, f"the default {d} is outside the declared range")
         aliases = s.get("aliases", {})
         for surface in aliases:
-            check(at, surface in ("cli", "scene", "choices"), f"\"aliases\": unknown surface \"{surface}\"")
+            check(at, surface in ("cli", "scene", "choices", "project"), f"\"aliases\": unknown surface \"{surface}\"")
         for old, new in aliases.get("choices", {}).items():
             check(at, kind == "choice" and new in s.get("choices", []), f"\"aliases\": {old} names no choice")
         check(at, isinstance(aliases.get("cli", []), list), "\"aliases\": \"cli\" must be a list of option names")
         check(at, isinstance(aliases.get("scene", ""), str), "\"aliases\": \"scene\" must be a key")
+        check(at, isinstance(aliases.get("project", []), list) and
+              all(isinstance(k, str) and k[:1].isupper() for k in aliases.get("project", [])),
+              "\"aliases\": \"project\" must be a list of old property names")
     by_name = {s["name"]: s for s in settings}
     for preset, values in doc.get("presets", {}).items():
         at = f"{where}: presets.{preset}"
@@ -144,11 +184,7 @@ def check_declaration(doc):
         for name, value in values.items():
             check(at, name in by_name, f"{name} is not a declared setting")
             s = by_name[name]
-            ok = (value in s["choices"]) if s["type"] == "choice" else \
-                isinstance(value, (int, float)) and not isinstance(value, bool) and \
-                (value > s.get("minimum", -1e300) if s.get("minimum_exclusive") else value >= s.get("minimum", -1e300)) \
-                and value <= s.get("maximum", 1e300) if s["type"] in ("integer", "number") else False
-            check(at, ok, f"{name}: {value} is not a valid value")
+            check(at, valid_value(s, value), f"{name}: {value} is not a valid value")
 
 
 def resolve_likes(docs):
@@ -190,6 +226,7 @@ def setting_row(s):
         cxx_string(commands.get("get", "")),
         cxx_string(s.get("aliases", {}).get("scene", "")),
         cxx_string(",".join(f"{old}={new}" for old, new in s.get("aliases", {}).get("choices", {}).items())),
+        cxx_string(",".join(s.get("aliases", {}).get("project", []))),
     ]
     return "  { " + ", ".join(fields) + " },"
 
@@ -206,16 +243,21 @@ def constants(doc):
             defaults.append(f"constexpr bool {name} = {'true' if d else 'false'};")
         elif kind in ("point", "direction"):
             defaults.append(f"constexpr double {name}[3] = {{ {', '.join(cxx_number(x) for x in d)} }};")
+        elif kind == "bounds":
+            defaults.append(f"constexpr double {name}[6] = {{ {', '.join(cxx_number(x) for x in d)} }};")
+        elif kind == "dimensions":
+            defaults.append(f"constexpr int {name}[3] = {{ {', '.join(str(int(x)) for x in d)} }};")
         elif kind == "choice":
             defaults.append(f"constexpr int {name} = {s['choices'].index(d)}; // {d}")
-        if kind in ("integer", "number", "number_list"):
+        if kind in ("integer", "number", "number_list", "dimensions"):
             minima.append(f"constexpr double {name} = {cxx_number(s.get('minimum', -1e300))};")
             maxima.append(f"constexpr double {name} = {cxx_number(s.get('maximum', 1e300))};")
     return defaults, minima, maxima
 
 
 def preset_constants(doc):
-    """namespace <Preset> { constexpr ... }: a preset's values, typed as the settings."""
+    """namespace <Preset> { constexpr ... }: a preset's values, typed as the settings, and
+    the preset as JSON text (Json), for the surfaces that start from it."""
     by_name = {s["name"]: s for s in doc["settings"]}
     blocks = []
     for preset, values in doc.get("presets", {}).items():
@@ -226,8 +268,13 @@ def preset_constants(doc):
                 lines.append(f"constexpr long long {name} = {int(value)};")
             elif kind == "choice":
                 lines.append(f"constexpr int {name} = {by_name[name]['choices'].index(value)}; // {value}")
-            else:
+            elif kind == "boolean":
+                lines.append(f"constexpr bool {name} = {'true' if value else 'false'};")
+            elif kind in ("point", "direction"):
+                lines.append(f"constexpr double {name}[3] = {{ {', '.join(cxx_number(x) for x in value)} }};")
+            elif kind == "number":
                 lines.append(f"constexpr double {name} = {cxx_number(value)};")
+        lines.append(f"constexpr const char* Json = {cxx_string(json.dumps(values))};")
         blocks.append(f"namespace {preset}\n{{\n" + "\n".join(lines) + f"\n}} // namespace {preset}\n")
     return "".join(blocks)
 
@@ -272,6 +319,10 @@ def apply_lines(s):
         return [f"object->Set{n}(value.get<double>());"]
     if kind in ("point", "direction"):
         return [f"object->Set{n}(value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>());"]
+    if kind == "bounds":
+        return [f"object->Set{n}(" + ", ".join(f"value.at({i}).get<double>()" for i in range(6)) + ");"]
+    if kind == "dimensions":
+        return [f"object->Set{n}(" + ", ".join(f"static_cast<int>(value.at({i}).get<double>())" for i in range(3)) + ");"]
     if kind == "choice":
         return [f"object->Set{n}(riemann::ChoiceIndex(riemann::declared::{{cls}}::List[{{index}}], value.get<std::string>()));"]
     c = s["commands"]
@@ -290,8 +341,10 @@ def value_lines(s, index, cls):
         return [f"values[\"{n}\"] = static_cast<long long>(object->Get{n}());"]
     if kind == "number":
         return [f"values[\"{n}\"] = static_cast<double>(object->Get{n}());"]
-    if kind in ("point", "direction"):
+    if kind in ("point", "direction", "dimensions"):
         return [f"values[\"{n}\"] = {{ object->Get{n}()[0], object->Get{n}()[1], object->Get{n}()[2] }};"]
+    if kind == "bounds":
+        return [f"values[\"{n}\"] = {{ " + ", ".join(f"object->Get{n}()[{i}]" for i in range(6)) + " };"]
     if kind == "choice":
         return [f"values[\"{n}\"] = riemann::ChoiceNames(riemann::declared::{cls}::List[{index}]).at(static_cast<std::size_t>(object->Get{n}()));"]
     c = s["commands"]
@@ -388,10 +441,16 @@ def paraview_property(s):
     if kind == "number":
         return (f"    <DoubleVectorProperty {attrs} command=\"Set{n}\" number_of_elements=\"1\" default_values=\"{xml_number(d)}\">\n"
                 f"{rng}{doc}    </DoubleVectorProperty>\n")
-    if kind in ("point", "direction"):
+    if kind in ("point", "direction", "bounds"):
         values = " ".join(xml_number(x) for x in d)
-        return (f"    <DoubleVectorProperty {attrs} command=\"Set{n}\" number_of_elements=\"3\" default_values=\"{values}\">\n"
+        return (f"    <DoubleVectorProperty {attrs} command=\"Set{n}\" number_of_elements=\"{len(d)}\" default_values=\"{values}\">\n"
                 f"{doc}    </DoubleVectorProperty>\n")
+    if kind == "dimensions":
+        values = " ".join(str(int(x)) for x in d)
+        each = lambda x: " ".join([xml_number(x)] * 3)
+        return (f"    <IntVectorProperty {attrs} command=\"Set{n}\" number_of_elements=\"3\" default_values=\"{values}\">\n"
+                f"      <IntRangeDomain name=\"range\" min=\"{each(lo)}\" max=\"{each(hi)}\" />\n"
+                f"{doc}    </IntVectorProperty>\n")
     c = s["commands"]
     values = " ".join(xml_number(x) for x in d)
     count = f" default_values=\"{values}\"" if d else ""
@@ -459,7 +518,9 @@ def main():
             cls = doc["class"]
             write_whole(os.path.join(args.output, table_header(cls)), settings_header(doc))
             write_whole(os.path.join(args.output, f"{cls}SettingAccess.h"), access_header(doc))
-            write_whole(os.path.join(args.output, "ParaView", f"{cls}.xml"), paraview_xml(doc))
+            # An abstract class (a base whose settings its subclasses take with "like") has no proxy.
+            if not doc.get("abstract"):
+                write_whole(os.path.join(args.output, "ParaView", f"{cls}.xml"), paraview_xml(doc))
     except DeclarationError as e:
         print(f"RiemannSettings.py: {e}", file=sys.stderr)
         return 1

@@ -6,6 +6,8 @@
 #include "vtkNew.h"
 #include "vtkRiemannIntegrationSettings.h"
 
+#include <algorithm>
+
 namespace riemann
 {
 namespace studio
@@ -24,6 +26,10 @@ PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting)
     help += ": " + riemann::DescribeSettingRange(setting);
   }
   spec.Help = QString::fromStdString(help);
+  for (const QString& alias : QString::fromUtf8(setting.ProjectAliases).split(',', Qt::SkipEmptyParts))
+  {
+    spec.Aliases << alias;
+  }
   switch (setting.Type)
   {
     case riemann::SettingDeclaration::Boolean:
@@ -52,22 +58,56 @@ PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting)
     case riemann::SettingDeclaration::NumberList:
       spec.Type = PropertySpec::NumberList;
       break;
+    case riemann::SettingDeclaration::Bounds:
+      spec.Type = PropertySpec::Numbers6;
+      break;
+    case riemann::SettingDeclaration::Dimensions:
+      spec.Type = PropertySpec::Integers3;
+      break;
   }
   return spec;
 }
 
-std::vector<PropertySpec> DeclaredPropertySpecs(const riemann::SettingTable& table)
+namespace
+{
+bool IsDeclaredSettingLeftOut(const std::string& name, const std::vector<std::string>& leftOut)
+{
+  return std::find(leftOut.begin(), leftOut.end(), name) != leftOut.end();
+}
+}
+
+std::vector<PropertySpec> DeclaredPropertySpecs(
+  const riemann::SettingTable& table, const std::vector<std::string>& leftOut)
 {
   std::vector<PropertySpec> specs;
   for (const riemann::SettingDeclaration& setting : table)
   {
-    specs.push_back(DeclaredPropertySpec(setting));
+    if (!IsDeclaredSettingLeftOut(setting.Name, leftOut))
+    {
+      specs.push_back(DeclaredPropertySpec(setting));
+    }
   }
   return specs;
 }
-nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSettings* integration,
-  const nlohmann::json& own)
+
+nlohmann::json DeclaredDefaults(
+  nlohmann::json declared, const std::vector<std::string>& leftOut, const char* preset)
 {
+  for (const std::string& name : leftOut)
+  {
+    declared.erase(name);
+  }
+  if (preset)
+  {
+    declared.update(nlohmann::json::parse(preset));
+  }
+  return declared;
+}
+
+nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSettings* integration,
+  const nlohmann::json& own, const std::vector<std::string>& leftOut, const char* preset)
+{
+  declared = DeclaredDefaults(std::move(declared), leftOut, preset);
   declared.update(IntegrationValues(integration));
   if (own.is_object())
   {

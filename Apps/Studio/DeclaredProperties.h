@@ -27,18 +27,31 @@ namespace studio
 /// The field of one declared setting.
 PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting);
 
-/// The fields of every setting of `table`, in its order.
-std::vector<PropertySpec> DeclaredPropertySpecs(const riemann::SettingTable& table);
+/// The fields of every setting of `table`, in its order, but those `leftOut`
+/// names (settings of inputs the item cannot give: the tracer's mask seeds).
+std::vector<PropertySpec> DeclaredPropertySpecs(
+  const riemann::SettingTable& table, const std::vector<std::string>& leftOut = {});
+
+/**
+ * A new filter's declared settings (`declared`: its SettingValues) but the
+ * `leftOut` ones, with the declared `preset`'s values (its JSON text) when
+ * the item starts from one.
+ */
+nlohmann::json DeclaredDefaults(nlohmann::json declared,
+  const std::vector<std::string>& leftOut = {}, const char* preset = nullptr);
 
 /**
  * The settings of an item, as a new filter has them: its declared settings
  * (`declared`: riemann::settings::SettingValues of a new filter, from its
  * `<Class>SettingAccess.h`) and its integration settings (`integration`,
  * the new filter's), then the item's `own` (display settings). One default
- * per setting: the filter's, as the CLI and Python have it.
+ * per setting: the filter's, as the CLI and Python have it, or the declared
+ * `preset`'s (its JSON text, `<Preset>::Json` of the declaration) where the
+ * item starts from one. The `leftOut` settings are not the item's.
  */
 nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSettings* integration,
-  const nlohmann::json& own);
+  const nlohmann::json& own, const std::vector<std::string>& leftOut = {},
+  const char* preset = nullptr);
 
 /**
  * The Python lines of an item that runs `Filter` as variable `var`: the

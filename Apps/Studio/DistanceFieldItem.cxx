@@ -4,6 +4,9 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
+#include "SettingValues.h"
+#include "vtkRiemannDistanceFieldSettingAccess.h"
 
 #include "vtkRiemannCutLocus.h"
 #include "vtkRiemannDistanceField.h"
@@ -25,11 +28,23 @@ namespace riemann
 {
 namespace studio
 {
+namespace
+{
+namespace distance = riemann::declared::vtkRiemannDistanceField;
+
+/// A new item: the declared grid and seed radius, one seed left of the middle.
+nlohmann::json DistanceFieldDefaults()
+{
+  vtkNew<vtkRiemannDistanceField> filter;
+  nlohmann::json values = DeclaredDefaults(riemann::settings::SettingValues(filter));
+  values.update({ { "Seed", { -1.5, 0.0, 0.0 } }, { "SliceNormal", "z" }, { "SliceOffset", 0.0 },
+    { "NumberOfWavefronts", 20 }, { "ShowCutLocus", true }, { "ColorArray", "Distance" } });
+  return values;
+}
+}
+
 DistanceFieldItem::DistanceFieldItem(const QString& name)
-  : PipelineItem(name,
-      { { "Seed", { -1.5, 0.0, 0.0 } }, { "Bounds", { -2.0, 2.0, -2.0, 2.0, -2.0, 2.0 } },
-        { "Dimensions", { 49, 49, 49 } }, { "SliceNormal", "z" }, { "SliceOffset", 0.0 },
-        { "NumberOfWavefronts", 20 }, { "ShowCutLocus", true }, { "ColorArray", "Distance" } })
+  : PipelineItem(name, DistanceFieldDefaults())
 {
   for (vtkActor* actor : { this->Slice.Get(), this->Wavefronts.Get(), this->CutLocus.Get() })
   {
@@ -58,21 +73,6 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
   seed.Help = "The point the distance is measured from, inside the bounds (Ctrl+click in the "
               "outside view places it)";
 
-  PropertySpec bounds;
-  bounds.Key = "Bounds";
-  bounds.Label = "Bounds";
-  bounds.Type = PropertySpec::Numbers6;
-  bounds.Help = "x0 x1 y0 y1 z0 z1 of the grid";
-
-  PropertySpec dimensions;
-  dimensions.Key = "Dimensions";
-  dimensions.Label = "Samples";
-  dimensions.Type = PropertySpec::Integers3;
-  dimensions.Minimum = 2;
-  dimensions.Maximum = 512;
-  dimensions.Help = "Grid points per axis (first order: the error halves with the spacing, up "
-                    "to a logarithm)";
-
   PropertySpec fronts;
   fronts.Key = "NumberOfWavefronts";
   fronts.Label = "Wavefronts";
@@ -89,7 +89,11 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
   cut.Help = "Where two minimal geodesics from the seed meet (vtkRiemannCutLocus)";
   cut.Display = true;
 
-  std::vector<PropertySpec> specs{ seed, bounds, dimensions };
+  std::vector<PropertySpec> specs{ seed };
+  for (const PropertySpec& spec : DeclaredPropertySpecs(distance::Settings))
+  {
+    specs.push_back(spec);
+  }
   for (const PropertySpec& spec : this->SliceProperties())
   {
     specs.push_back(spec);
@@ -109,12 +113,9 @@ vtkSmartPointer<vtkAlgorithm> DistanceFieldItem::MakeJob(const JobInputs& inputs
   vtkNew<vtkRiemannMetric> metric;
   metric->ShallowCopy(inputs.Metric);
   field->SetMetric(metric);
-  double bounds[6], seed[3];
-  this->Vector("Bounds", bounds, 6);
+  riemann::settings::ApplySettings(field, this->Settings());
+  double seed[3];
   this->Vector("Seed", seed, 3);
-  field->SetBounds(bounds);
-  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
-  field->SetDimensions(dimensions[0].get<int>(), dimensions[1].get<int>(), dimensions[2].get<int>());
   field->AddSeed(seed);
   return field;
 }
@@ -173,14 +174,16 @@ void DistanceFieldItem::UpdateDisplay()
 
 std::vector<std::string> DistanceFieldItem::PythonLines(const std::string& var) const
 {
-  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
-  return {
+  std::vector<std::string> lines{
     var + " = riemann.vtkRiemannDistanceField()",
     var + ".SetMetric(metric)",
-    var + ".SetBounds" + PythonTuple(this->Settings().at("Bounds")),
-    var + ".SetDimensions" + PythonTuple(dimensions),
-    var + ".AddSeed" + PythonTuple(this->Settings().at("Seed")),
   };
+  for (const std::string& line : riemann::SettingPythonLines(distance::Settings, var, this->Settings()))
+  {
+    lines.push_back(line);
+  }
+  lines.push_back(var + ".AddSeed" + PythonTuple(this->Settings().at("Seed")));
+  return lines;
 }
 
 bool DistanceFieldItem::TakePickedPoint(const double point[3])

@@ -3,6 +3,9 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
+#include "SettingValues.h"
+#include "vtkRiemannFieldAlgorithmSettingAccess.h"
 
 #include "vtkRiemannCurvatureField.h"
 #include "vtkRiemannMetric.h"
@@ -43,14 +46,23 @@ std::string FirstScalarArray(vtkImageData* image)
   }
   return std::string();
 }
+
+/// The grid every field filter samples (declared by vtkRiemannFieldAlgorithm).
+namespace grid = riemann::declared::vtkRiemannFieldAlgorithm;
+
+/// A new item: the declared grid, the curvature shown as a slice.
+nlohmann::json FieldDefaults()
+{
+  vtkNew<vtkRiemannCurvatureField> filter;
+  nlohmann::json values = DeclaredDefaults(riemann::settings::SettingValues(filter.Get()));
+  values.update({ { "Field", "curvature" }, { "Representation", "slice" }, { "SliceNormal", "z" },
+    { "SliceOffset", 0.0 }, { "ContourValue", 0.5 }, { "ColorArray", "ScalarCurvature" } });
+  return values;
+}
 }
 
 FieldItem::FieldItem(const QString& name)
-  : PipelineItem(name,
-      { { "Field", "curvature" }, { "Bounds", { -2.0, 2.0, -2.0, 2.0, -2.0, 2.0 } },
-        { "Dimensions", { 41, 41, 41 } }, { "Representation", "slice" },
-        { "SliceNormal", "z" }, { "SliceOffset", 0.0 }, { "ContourValue", 0.5 },
-        { "ColorArray", "ScalarCurvature" } })
+  : PipelineItem(name, FieldDefaults())
 {
   vtkNew<vtkPolyDataMapper> mapper;
   this->Surface->SetMapper(mapper);
@@ -76,19 +88,6 @@ std::vector<PropertySpec> FieldItem::Properties() const
   field.Help = "curvature: scalar, Ricci and sectional curvatures; volume-form: sqrt(det g); "
                "metric-tensor: g and its inverse";
 
-  PropertySpec bounds;
-  bounds.Key = "Bounds";
-  bounds.Label = "Bounds";
-  bounds.Type = PropertySpec::Numbers6;
-  bounds.Help = "x0 x1 y0 y1 z0 z1 of the sampling grid";
-
-  PropertySpec dimensions;
-  dimensions.Key = "Dimensions";
-  dimensions.Label = "Samples";
-  dimensions.Type = PropertySpec::Integers3;
-  dimensions.Minimum = 2;
-  dimensions.Maximum = 1024;
-
   PropertySpec representation;
   representation.Key = "Representation";
   representation.Label = "Show as";
@@ -103,7 +102,12 @@ std::vector<PropertySpec> FieldItem::Properties() const
   contour.Help = "Value of the colouring array (or the first scalar) on the isosurface";
   contour.Display = true;
 
-  std::vector<PropertySpec> specs{ field, bounds, dimensions, representation };
+  std::vector<PropertySpec> specs{ field };
+  for (const PropertySpec& spec : DeclaredPropertySpecs(grid::Settings))
+  {
+    specs.push_back(spec);
+  }
+  specs.push_back(representation);
   for (const PropertySpec& spec : this->SliceProperties())
   {
     specs.push_back(spec);
@@ -135,12 +139,7 @@ vtkSmartPointer<vtkAlgorithm> FieldItem::MakeJob(const JobInputs& inputs) const
   vtkNew<vtkRiemannMetric> metric;
   metric->ShallowCopy(inputs.Metric);
   filter->SetMetric(metric);
-  double bounds[6];
-  this->Vector("Bounds", bounds, 6);
-  filter->SetBounds(bounds);
-  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
-  filter->SetDimensions(
-    dimensions[0].get<int>(), dimensions[1].get<int>(), dimensions[2].get<int>());
+  riemann::settings::ApplySettings(filter.Get(), this->Settings());
   return filter;
 }
 
@@ -213,13 +212,15 @@ void FieldItem::UpdateDisplay()
 
 std::vector<std::string> FieldItem::PythonLines(const std::string& var) const
 {
-  const nlohmann::json& dimensions = this->Settings().at("Dimensions");
-  return {
+  std::vector<std::string> lines{
     var + " = riemann." + this->FilterClass() + "()",
     var + ".SetMetric(metric)",
-    var + ".SetBounds" + PythonTuple(this->Settings().at("Bounds")),
-    var + ".SetDimensions" + PythonTuple(dimensions),
   };
+  for (const std::string& line : riemann::SettingPythonLines(grid::Settings, var, this->Settings()))
+  {
+    lines.push_back(line);
+  }
+  return lines;
 }
 }
 }

@@ -278,25 +278,29 @@ QString PipelineItem::ApplySettings(const nlohmann::json& settings)
   const std::vector<PropertySpec> specs = this->Properties();
   bool needsRun = false;
   bool changed = false;
-  // Check everything first: a bad value leaves every setting as it was.
+  // Check everything first: a bad value leaves every setting as it was. An
+  // old key (a declared project alias) is taken as the setting's own.
+  nlohmann::json taken = nlohmann::json::object();
   for (const auto& entry : settings.items())
   {
+    const QString key = QString::fromStdString(entry.key());
     const PropertySpec* spec = nullptr;
     for (const PropertySpec& candidate : specs)
     {
-      spec = candidate.Key == entry.key() ? &candidate : spec;
+      spec = candidate.Key == entry.key() || candidate.Aliases.contains(key) ? &candidate : spec;
     }
     if (!spec)
     {
       return QStringLiteral("%1: no such setting for a %2 item")
-        .arg(QString::fromStdString(entry.key()), QString::fromStdString(this->Kind()));
+        .arg(key, QString::fromStdString(this->Kind()));
     }
     const QString why = CheckPropertyValue(*spec, entry.value());
     if (!why.isEmpty())
     {
       return QStringLiteral("%1: %2").arg(spec->Label, why);
     }
-    if (this->Values.value(entry.key(), nlohmann::json()) != entry.value())
+    taken[spec->Key] = entry.value();
+    if (this->Values.value(spec->Key, nlohmann::json()) != entry.value())
     {
       changed = true;
       needsRun = needsRun || !spec->Display;
@@ -306,7 +310,7 @@ QString PipelineItem::ApplySettings(const nlohmann::json& settings)
   {
     return QString();
   }
-  for (const auto& entry : settings.items())
+  for (const auto& entry : taken.items())
   {
     this->Values[entry.key()] = entry.value();
   }

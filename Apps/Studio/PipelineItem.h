@@ -77,6 +77,8 @@ struct PropertySpec
   /// the next result will have): an editable combo box.
   bool OpenChoice = false;
   QString Help;
+  /// Old keys a project or script may still use for it ("ConeAxis"): taken as Key.
+  QStringList Aliases;
   /// Display-only (colouring, opacity): changing it does not re-run the job.
   bool Display = false;
 };
@@ -129,6 +131,8 @@ public:
   virtual std::string Kind() const = 0;
   /// The toolkit class this item runs (for tooltips and the Python trace).
   virtual std::string FilterClass() const = 0;
+  /// The preset of the class's declaration a new item starts from ("Fan"), or "".
+  virtual std::string Preset() const { return std::string(); }
 
   QString Name() const { return this->ItemName; }
   void SetName(const QString& name);

@@ -48,6 +48,7 @@ public:
   explicit GeodesicsItem(const QString& name);
   std::string Kind() const override { return "geodesics"; }
   std::string FilterClass() const override { return "vtkRiemannGeodesicTracer"; }
+  std::string Preset() const override { return "Fan"; }
   std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;

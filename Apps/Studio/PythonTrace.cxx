@@ -64,31 +64,11 @@ import argparse
 import os
 import sys
 
-from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
 from vtkmodules.vtkRenderingCore import vtkCamera
 
 import riemann
-
-
-def seeds_from_cone(position, axis, angle, count):
-    """Seeds at `position` with the cone of directions of vtkRiemannDirectionGrid."""
-    grid = riemann.vtkRiemannDirectionGrid()
-    grid.SetNumberOfDirections(count)
-    grid.SetConeAxis(axis)
-    grid.SetConeAngle(angle)
-    grid.Update()
-    directions = grid.GetOutput().GetPoints().GetData().NewInstance()
-    directions.DeepCopy(grid.GetOutput().GetPoints().GetData())
-    directions.SetName("Direction")
-    points = vtkPoints()
-    for _ in range(directions.GetNumberOfTuples()):
-        points.InsertNextPoint(position)
-    seeds = vtkPolyData()
-    seeds.SetPoints(points)
-    seeds.GetPointData().AddArray(directions)
-    return seeds
 
 
 def write(data, path):

@@ -2,7 +2,10 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
 #include "InsideViewRays.h"
+#include "SettingValues.h"
+#include "vtkRiemannRayBundleSettingAccess.h"
 
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
@@ -20,9 +23,31 @@ namespace riemann
 {
 namespace studio
 {
+namespace
+{
+namespace bundle = riemann::declared::vtkRiemannRayBundle;
+
+/// The bundle's settings the inside view gives (its size, projection and
+/// whether the scene's settings apply), not the item.
+const std::vector<std::string>& InsideViewSettings()
+{
+  static const std::vector<std::string> names{ "Width", "Height", "Projection", "UseSceneSettings" };
+  return names;
+}
+
+/// A new item: the declared sub-grid, coloured by where each ray ends, as the inside view shows it.
+nlohmann::json RayBundleDefaults()
+{
+  vtkNew<vtkRiemannRayBundle> filter;
+  nlohmann::json values =
+    DeclaredDefaults(riemann::settings::SettingValues(filter), InsideViewSettings());
+  values["ColorArray"] = "EndColor";
+  return values;
+}
+}
+
 RayBundleItem::RayBundleItem(const QString& name)
-  // Coloured by where each ray ends, as the inside view shows it.
-  : PipelineItem(name, { { "SubgridResolution", 8 }, { "ColorArray", "EndColor" } })
+  : PipelineItem(name, RayBundleDefaults())
 {
   vtkNew<vtkPolyDataMapper> mapper;
   this->Rays->SetMapper(mapper);
@@ -33,15 +58,7 @@ RayBundleItem::RayBundleItem(const QString& name)
 
 std::vector<PropertySpec> RayBundleItem::Properties() const
 {
-  PropertySpec grid;
-  grid.Key = "SubgridResolution";
-  grid.Label = "Rays per side";
-  grid.Type = PropertySpec::Integer;
-  grid.Minimum = 1;
-  grid.Maximum = 256;
-  grid.Help = "N: the rays of an N x N grid of the inside view's pixels (its camera, its "
-              "integration settings)";
-  std::vector<PropertySpec> specs{ grid };
+  std::vector<PropertySpec> specs = DeclaredPropertySpecs(bundle::Settings, InsideViewSettings());
   for (const PropertySpec& spec : this->DisplayProperties())
   {
     specs.push_back(spec);
@@ -51,10 +68,10 @@ std::vector<PropertySpec> RayBundleItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> RayBundleItem::MakeJob(const JobInputs& inputs) const
 {
-  auto bundle = vtkSmartPointer<vtkRiemannRayBundle>::New();
-  SetUpInsideViewRays(bundle.Get(), inputs, inputs.Width, inputs.Height, true);
-  bundle->SetSubgridResolution(this->Integer("SubgridResolution"));
-  return bundle;
+  auto job = vtkSmartPointer<vtkRiemannRayBundle>::New();
+  SetUpInsideViewRays(job.Get(), inputs, inputs.Width, inputs.Height, true);
+  riemann::settings::ApplySettings(job, this->Settings());
+  return job;
 }
 
 void RayBundleItem::UpdateDisplay()
@@ -72,7 +89,8 @@ void RayBundleItem::UpdateDisplay()
 
 std::vector<std::string> RayBundleItem::PythonLines(const std::string& var) const
 {
-  return {
+  // The inside view's size, scene, camera and ray settings, then the item's own.
+  std::vector<std::string> lines{
     var + " = riemann.vtkRiemannRayBundle()",
     var + ".SetMetric(metric)",
     var + ".SetScene(scene)",
@@ -81,8 +99,12 @@ std::vector<std::string> RayBundleItem::PythonLines(const std::string& var) cons
     var + ".SetHeight(height)",
     var + ".SetUseSceneSettings(use_scene_settings)",
     var + ".GetIntegrationSettings().DeepCopy(ray_settings)",
-    var + ".SetSubgridResolution(" + std::to_string(this->Integer("SubgridResolution")) + ")",
   };
+  for (const std::string& line : riemann::SettingPythonLines(bundle::Settings, var, this->Settings()))
+  {
+    lines.push_back(line);
+  }
+  return lines;
 }
 }
 }

@@ -62,7 +62,8 @@ def set(item, **properties):
 
 def get(item):
     """The item's settings, with its "kind", "class" (the toolkit class it
-    runs) and "visible"."""
+    runs), "visible", and "preset" when a new item starts from a preset of
+    the class's declaration."""
     return _call("get", item)
 
 

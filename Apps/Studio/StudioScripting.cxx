@@ -183,6 +183,10 @@ Json StudioGet(StudioMainWindow& window, const Json& args)
   Json settings = item->Settings();
   settings["kind"] = item->Kind();
   settings["class"] = item->FilterClass();
+  if (!item->Preset().empty())
+  {
+    settings["preset"] = item->Preset();
+  }
   settings["visible"] = item->IsVisible();
   return settings;
 }

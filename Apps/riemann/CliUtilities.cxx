@@ -1,5 +1,7 @@
 #include "CliUtilities.h"
 
+#include "SettingValues.h"
+
 #include "Interrupts.h"
 #include "RiemannVtkMessages.h"
 
@@ -98,17 +100,8 @@ void ParseVector3(const std::string& text, const std::string& option, double out
 
 std::string CheckDirection(const double v[3], const std::string& text)
 {
-  if (v[0] == 0 && v[1] == 0 && v[2] == 0)
-  {
-    return "\"" + text + "\" is the zero vector: a direction must not be zero";
-  }
-  const double squared = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  if (!(squared >= DBL_MIN && squared <= DBL_MAX))
-  {
-    return "\"" + text + "\": the length of this direction is too " +
-      (squared < 1.0 ? "small" : "large") + " to normalise (scale it)";
-  }
-  return {};
+  const std::string why = DirectionProblem(v);
+  return why.empty() ? std::string() : "\"" + text + "\" " + why;
 }
 
 CLI::Validator Checked(

@@ -6,6 +6,7 @@
 // streamline-count connectome). Matrices as CSV, regions in ascending label
 // order, named on a leading "#" line, as numpy.loadtxt and MRtrix read them.
 #include "CliUtilities.h"
+#include "DeclaredOptions.h"
 #include "IntegrationOptions.h"
 #include "Commands.h"
 #include "Distributed.h"
@@ -14,6 +15,7 @@
 #include "ProgressBar.h"
 #include "RiemannScalarImages.h"
 #include "TractOptions.h"
+#include "vtkRiemannGeodesicTracerSettingAccess.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -52,8 +54,9 @@ struct ConnectivityArguments
   std::string Labels;
   std::string Output;
   std::string TractCounts;
-  long long SeedsPerVoxel = 1;
   double SeedRadius = 2.5;
+  /// The tracer's settings that --tract-counts uses (seeds per voxel, the stops).
+  std::unique_ptr<DeclaredOptions> Tracer;
   /// The integration options, with the tracer's defaults (IntegrationOptions.h).
   std::unique_ptr<DeclaredOptions> Integration;
   TractArguments Tracts;
@@ -259,7 +262,7 @@ std::vector<std::vector<long long>> TractCounts(
   errors->Observe(tracer);
   tracer->SetMetric(metric);
   tracer->SetInputData(mask);
-  tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
+  riemann::settings::ApplySettings(tracer, args.Tracer->Given());
   tracer->SetIntegrationDirectionToBoth();
   ApplyIntegrationOptions(*args.Integration, tracer->GetIntegrationSettings());
   ApplyTractOptions(args.Tracts, tracer);
@@ -357,10 +360,12 @@ void RegisterConnectivityCommand(CLI::App& app)
   command->add_option("--tract-counts", args->TractCounts,
     "Also trace tracts from every labelled voxel (e1, both ways, with the stop options) and "
     "write how many join each two regions (by the voxels of their two ends) to this .csv");
-  command
-    ->add_option("--seeds-per-voxel", args->SeedsPerVoxel,
-      "Seeds in each labelled voxel for --tract-counts (default 1)")
-    ->check(WholeNumber(1, 1000));
+  // --tract-counts seeds every labelled voxel along e1, both ways: the tracer's
+  // own seed, fan, way and Jacobi fields are not this command's.
+  args->Tracer = std::make_unique<DeclaredOptions>(command,
+    riemann::declared::vtkRiemannGeodesicTracer::Settings,
+    "StartPosition,StartDirection,NumberOfDirections,ConeAngle,IntegrationDirection,SeedDirection,"
+    "ComputeTransverseJacobian");
   args->Integration =
     AddIntegrationOptions(command, vtkNew<vtkRiemannGeodesicTracer>()->GetIntegrationSettings());
   AddTractOptions(command, args->Tracts);

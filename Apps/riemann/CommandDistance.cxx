@@ -9,7 +9,9 @@
 #include "CsvColumns.h"
 #include "GeodesicCsv.h"
 #include "Distributed.h"
+#include "DeclaredOptions.h"
 #include "GridOptions.h"
+#include "vtkRiemannDistanceFieldSettingAccess.h"
 #include "ProgressBar.h"
 
 #include "vtkDataArray.h"
@@ -43,9 +45,8 @@ struct DistanceArguments
   std::string Metric;
   std::vector<std::string> Seeds;
   std::string SeedsFile;
-  std::string Bounds = "-2,2,-2,2,-2,2";
-  std::string Dimensions = "33,33,33";
-  double SeedRadius = 2.5; // vtkRiemannDistanceField's default
+  /// The field's grid and seed radius (vtkRiemannDistanceField.settings.json).
+  std::unique_ptr<DeclaredOptions> Field;
   std::string CutLocus;
   double MinimumAngle = 20.0; // vtkRiemannCutLocus's default
   std::vector<std::string> Targets;
@@ -157,15 +158,10 @@ void RunDistance(const DistanceArguments& args)
                   "the grid is not split into pieces)",
       2);
   }
+  // Checked while parsing (the declared ranges, at least 2 points per axis, and LimitGridPoints).
   double box[6];
   int dims[3];
-  ParseGridOptions(args.Bounds, args.Dimensions, box, dims, false);
-  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
-  {
-    throw Failure("--dims " + args.Dimensions +
-        ": the distance needs at least 2 points along each axis (geodesics leave any plane)",
-      2);
-  }
+  GridOf(*args.Field, box, dims);
   const std::vector<double> seeds = ReadSeedPoints(args);
   CheckSeedsInBox(seeds, box);
 
@@ -174,9 +170,7 @@ void RunDistance(const DistanceArguments& args)
   vtkNew<ErrorCollector> errors;
   errors->Observe(field);
   field->SetMetric(metric);
-  field->SetBounds(box);
-  field->SetDimensions(dims);
-  field->SetSeedRadius(args.SeedRadius);
+  riemann::settings::ApplySettings(field, args.Field->Given());
   for (std::size_t s = 0; s + 2 < seeds.size(); s += 3)
   {
     field->AddSeed(seeds.data() + s);
@@ -280,11 +274,9 @@ void RegisterDistanceCommand(CLI::App& app)
     ->check(Point3());
   command->add_option("--seeds", args->SeedsFile, "CSV of seeds with a header x,y,z")
     ->check(CLI::ExistingFile);
-  AddGridOptions(command, args->Bounds, args->Dimensions, false);
-  command
-    ->add_option("--seed-radius", args->SeedRadius,
-      "Points within this many grid spacings of a seed take the local distance (default 2.5)")
-    ->check(FiniteNumber(1.0, 20.0));
+  args->Field = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannDistanceField::Settings);
+  LimitGridPoints(*args->Field, false);
   command->add_option("--cut-locus", args->CutLocus,
     "Also write the cut locus (.vtp squares; cell data Angle, Kind: 1 two minimal geodesics "
     "from one seed meet, 2 the closest seed changes; Distance)");

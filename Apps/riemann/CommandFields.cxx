@@ -4,8 +4,10 @@
 #include "CliUtilities.h"
 #include "Commands.h"
 #include "CsvWriter.h"
+#include "DeclaredOptions.h"
 #include "Distributed.h"
 #include "GridOptions.h"
+#include "vtkRiemannCurvatureFieldSettingAccess.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -40,8 +42,8 @@ namespace
 struct FieldsArguments
 {
   std::string Metric;
-  std::string Bounds = "-2,2,-2,2,-2,2";
-  std::string Dimensions = "33,33,33";
+  /// The grid (vtkRiemannFieldAlgorithm.settings.json, as the three field filters take it).
+  std::unique_ptr<DeclaredOptions> Grid;
   std::string Compress = "lz4";
   bool Gather = false;
   std::string Output;
@@ -103,10 +105,10 @@ void RunFields(const FieldsArguments& args)
     throw Failure("-o " + args.Output + ": the output must end in .vti, .pvti or .csv", 2);
   }
   const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvti");
-  // Checked while parsing (the validators below); parsed here.
+  // Checked while parsing (the declared ranges and LimitGridPoints).
   double bounds[6];
   int dims[3];
-  ParseGridOptions(args.Bounds, args.Dimensions, bounds, dims);
+  GridOf(*args.Grid, bounds, dims);
   if (layout == OutputLayout::Gathered &&
     static_cast<double>(dims[0]) * dims[1] * dims[2] > MaximumPointsPerProcess)
   {
@@ -215,7 +217,9 @@ void RegisterFieldsCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  AddGridOptions(command, args->Bounds, args->Dimensions);
+  args->Grid = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannCurvatureField::Settings);
+  LimitGridPoints(*args->Grid);
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command

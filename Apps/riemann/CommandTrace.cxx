@@ -6,6 +6,7 @@
 #include "Commands.h"
 #include "CsvColumns.h"
 #include "CsvWriter.h"
+#include "DeclaredOptions.h"
 #include "Distributed.h"
 #include "GeodesicCsv.h"
 #include "GeodesicTrace.h"
@@ -13,6 +14,7 @@
 #include "IntegrationOptions.h"
 #include "RiemannScalarImages.h"
 #include "TractOptions.h"
+#include "vtkRiemannGeodesicTracerSettingAccess.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -51,19 +53,13 @@ constexpr int MaximumReason = LastTerminationReason;
 struct TraceArguments
 {
   std::string Metric;
-  std::string Seed = "0,0,0";
-  std::string Direction = "1,0,0";
   std::string SeedsFile;
   std::string SeedMask;
-  long long SeedsPerVoxel = 1;
-  std::string SeedDirection = "e1";
-  long long RandomSeed = 1;
-  /// Whether --propagation was given (with --seed-mask its default is "both").
-  bool PropagationGiven = false;
+  /// The tracer's settings (vtkRiemannGeodesicTracer.settings.json): the seed
+  /// and its fan, the mask's seeds, the way, the stops, the Jacobi fields.
+  std::unique_ptr<DeclaredOptions> Settings;
   /// The integration options, with the tracer's defaults (IntegrationOptions.h).
   std::unique_ptr<DeclaredOptions> Integration;
-  std::string Propagation = "forward";
-  bool TransverseJacobian = false;
   TractArguments Tracts;
   std::string Compress = "lz4";
   bool Gather = false;
@@ -111,7 +107,7 @@ vtkSmartPointer<vtkImageData> ReadSeedMask(const TraceArguments& args, vtkIdType
   count = 0;
   for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
   {
-    count += values->GetTuple1(i) != 0.0 ? args.SeedsPerVoxel : 0;
+    count += values->GetTuple1(i) != 0.0 ? args.Settings->Integer("SeedsPerVoxel") : 0;
   }
   if (count == 0)
   {
@@ -158,13 +154,13 @@ constexpr double MaximumOutputPoints = 2e8;
  * `--max-steps 1e9 --step 1e-9 --length 1e9` once wrote 80 MB/s until the
  * disk was full.
  */
-void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds)
+void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds, const std::string& propagation)
 {
   const DeclaredOptions& integration = *args.Integration;
   const double stepsPerGeodesic =
     std::min(static_cast<double>(integration.Integer("MaximumNumberOfSteps")),
       std::ceil(integration.Number("MaximumPropagation") / integration.Number("InitialIntegrationStep")));
-  const double ways = args.Propagation == "both" ? 2.0 : 1.0;
+  const double ways = propagation == "both" ? 2.0 : 1.0;
   const double points = static_cast<double>(numberOfSeeds) * ways * (stepsPerGeodesic + 1.0);
   if (points > MaximumOutputPoints)
   {
@@ -193,10 +189,6 @@ void RunTrace(const TraceArguments& args)
       "-o " + args.Output + ": the output must end in .vtp, .pvtp, .csv, .tck or .trk", 2);
   }
   const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
-  static const std::map<std::string, int> propagations = {
-    { "forward", vtkRiemannGeodesicTracer::FORWARD },
-    { "backward", vtkRiemannGeodesicTracer::BACKWARD }, { "both", vtkRiemannGeodesicTracer::BOTH }
-  };
 
   vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
   vtkNew<vtkRiemannGeodesicTracer> tracer;
@@ -204,14 +196,19 @@ void RunTrace(const TraceArguments& args)
   errors->Observe(tracer);
   tracer->SetMetric(metric);
   // Seeds from a mask go both ways along e1 unless --propagation says otherwise.
+  nlohmann::json settings = args.Settings->Given();
+  if (!args.SeedMask.empty() && args.Settings->Text("SeedDirection") == "e1" &&
+    !settings.contains("IntegrationDirection"))
+  {
+    settings["IntegrationDirection"] = "both";
+  }
   const std::string propagation =
-    !args.SeedMask.empty() && args.SeedDirection == "e1" && !args.PropagationGiven ? "both"
-                                                                                   : args.Propagation;
-  tracer->SetIntegrationDirection(propagations.at(propagation));
+    settings.value("IntegrationDirection", args.Settings->Text("IntegrationDirection"));
+  riemann::settings::ApplySettings(tracer, settings);
   ApplyIntegrationOptions(*args.Integration, tracer->GetIntegrationSettings());
-  tracer->SetComputeTransverseJacobian(args.TransverseJacobian);
   ApplyTractOptions(args.Tracts, tracer);
-  vtkIdType numberOfSeeds = 1;
+  // Without seeds from a file: one seed, fanned over NumberOfDirections.
+  vtkIdType numberOfSeeds = args.Settings->Integer("NumberOfDirections");
   if (!args.SeedsFile.empty())
   {
     vtkSmartPointer<vtkPolyData> seeds = ReadSeeds(args.SeedsFile);
@@ -223,12 +220,8 @@ void RunTrace(const TraceArguments& args)
   {
     seedMask = ReadSeedMask(args, numberOfSeeds);
     tracer->SetInputData(seedMask);
-    tracer->SetSeedsPerVoxel(static_cast<int>(args.SeedsPerVoxel));
-    tracer->SetSeedDirection(
-      args.SeedDirection == "random" ? vtkRiemannGeodesicTracer::RANDOM : vtkRiemannGeodesicTracer::E1);
-    tracer->SetRandomSeed(static_cast<unsigned>(args.RandomSeed));
   }
-  CheckOutputSize(args, numberOfSeeds);
+  CheckOutputSize(args, numberOfSeeds, propagation);
   // A .trk's reference, before the work: a run without one is refused at once.
   TractReference reference;
   if (extension == "trk")
@@ -236,15 +229,6 @@ void RunTrace(const TraceArguments& args)
     TractArguments tracts = args.Tracts;
     tracts.SeedMask = args.SeedMask;
     reference = ChooseTrkReference(tracts, metric, seedMask);
-  }
-  if (args.SeedsFile.empty() && args.SeedMask.empty())
-  {
-    double seed[3], direction[3];
-    // Checked while parsing (Point3, Direction3); parsed here.
-    ParseVector3(args.Seed, "--seed", seed);
-    ParseVector3(args.Direction, "--direction", direction);
-    tracer->SetStartPosition(seed);
-    tracer->SetStartDirection(direction);
   }
   // This rank's share of the seeds (all of them in a single process).
   UpdateThisRanksPiece(tracer);
@@ -336,65 +320,39 @@ void RegisterTraceCommand(CLI::App& app)
   command->add_option("--metric,-m", args->Metric, "Metric definition (JSON file)")
     ->required()
     ->check(CLI::ExistingFile);
-  command->add_option("--seed", args->Seed, "Start point X,Y,Z (default 0,0,0)")->check(Point3());
-  command
-    ->add_option("--direction", args->Direction,
-      "Initial direction DX,DY,DZ, normalised to unit speed in g (default 1,0,0)")
-    ->check(Direction3());
+  // The seed, its fan, the mask's seeds, the way, the stops, the Jacobi fields.
+  args->Settings = std::make_unique<DeclaredOptions>(command, riemann::declared::vtkRiemannGeodesicTracer::Settings);
+  CLI::Option* seed = args->Settings->OptionOf("StartPosition");
+  CLI::Option* direction = args->Settings->OptionOf("StartDirection");
   command
     ->add_option("--seeds", args->SeedsFile,
       "CSV of seeds with header x,y,z,dx,dy,dz, or a streamline file (.tck, .trk, .vtp: each "
       "streamline's first point along its tangent there) (replaces --seed/--direction)")
     ->check(CLI::ExistingFile)
-    ->excludes(command->get_option("--seed"))
-    ->excludes(command->get_option("--direction"));
+    ->excludes(seed)
+    ->excludes(direction);
   command
     ->add_option("--seed-mask", args->SeedMask,
       "Seeds from a mask or label image (.nii, .nii.gz, .nrrd, .nhdr, .vti, .vtk, placed by its "
-      "own affine): every voxel that is not 0 (replaces --seed/--seeds)")
+      "own affine): every voxel that is not 0, along --seed-direction (e1: traced both ways "
+      "unless --propagation says otherwise) (replaces --seed/--seeds)")
     ->check(CLI::ExistingFile)
-    ->excludes(command->get_option("--seed"))
-    ->excludes(command->get_option("--direction"))
+    ->excludes(seed)
+    ->excludes(direction)
     ->excludes(command->get_option("--seeds"));
-  command
-    ->add_option("--seeds-per-voxel", args->SeedsPerVoxel,
-      "Seeds in each voxel of --seed-mask: 1 (default) at its centre, more spread uniformly over "
-      "it (deterministic by --random-seed)")
-    ->check(WholeNumber(1, 1000));
-  command
-    ->add_option("--seed-direction", args->SeedDirection,
-      "Direction of the --seed-mask seeds: e1 (default: the direction g makes cheapest, a "
-      "diffusion tensor's principal direction for D^-1; traced both ways unless --propagation "
-      "says otherwise) or random (unit vectors, deterministic by --random-seed)")
-    ->check(CLI::IsMember({ "e1", "random" }));
-  command
-    ->add_option("--random-seed", args->RandomSeed,
-      "Seed of the random numbers of --seeds-per-voxel and --seed-direction random (default 1)")
-    ->check(WholeNumber(0, 4294967295LL));
   args->Integration =
     AddIntegrationOptions(command, vtkNew<vtkRiemannGeodesicTracer>()->GetIntegrationSettings());
-  CLI::Option* propagation =
-    command->add_option("--propagation", args->Propagation,
-             "forward (default; both for --seed-mask with e1), backward or both")
-      ->check(CLI::IsMember({ "forward", "backward", "both" }));
-  command->add_flag("--transverse-jacobian", args->TransverseJacobian,
-    "Also integrate Jacobi fields: point data TransverseJacobian and its singular values "
-    "(CSV: columns TransverseJacobian,SingularValue0,SingularValue1 after the others)");
   AddTractOptions(command, args->Tracts);
   AddCompressOption(command, args->Compress);
   AddGatherOption(command, args->Gather);
   command
     ->add_option("--output,-o", args->Output,
-      std::string("Output file: .vtp, .csv, .tck or .trk (streamlines in RAS+ mm, one per seed: "
-                  "both halves joined), or .pvtp ") +
+      std::string("Output file: .vtp, .csv (with --compute-transverse-jacobian its last columns "
+                  "are TransverseJacobian,SingularValue0,SingularValue1), .tck or .trk "
+                  "(streamlines in RAS+ mm, one per seed: both halves joined), or .pvtp ") +
         PiecesHelp)
     ->required();
-  command->callback(
-    [args, propagation]()
-    {
-      args->PropagationGiven = propagation->count() > 0;
-      RunTrace(*args);
-    });
+  command->callback([args]() { RunTrace(*args); });
 }
 } // namespace cli
 } // namespace riemann

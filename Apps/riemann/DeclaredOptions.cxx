@@ -34,16 +34,38 @@ CLI::Validator DeclaredCheck(const SettingDeclaration& setting)
   return CLI::Validator(
     [&setting](std::string& text) -> std::string
     {
+      if (setting.Type == SettingDeclaration::Boolean && text.empty())
+      {
+        return std::string(); // given alone: true (BooleanText)
+      }
       std::string error;
       const nlohmann::json value = ParseSettingText(setting, text, error);
-      if (error.empty() && CheckSettingValue(setting, value, "").empty())
+      const bool vector = setting.Type == SettingDeclaration::Point ||
+        setting.Type == SettingDeclaration::Direction || setting.Type == SettingDeclaration::Bounds ||
+        setting.Type == SettingDeclaration::Dimensions;
+      if (!error.empty())
+      {
+        return (vector ? error : "expected " + DescribeSettingRange(setting)) + ", got \"" + text + "\"";
+      }
+      if (CheckSettingValue(setting, value, "").empty())
       {
         return std::string();
       }
-      const std::string expected = error.empty() || setting.Type != SettingDeclaration::Point
-        ? "expected " + DescribeSettingRange(setting)
-        : error;
-      return expected + ", got \"" + text + "\"";
+      if (setting.Type == SettingDeclaration::Direction)
+      {
+        const double v[3] = { value[0].get<double>(), value[1].get<double>(), value[2].get<double>() };
+        return "\"" + text + "\" " + DirectionProblem(v);
+      }
+      if (setting.Type == SettingDeclaration::Bounds)
+      {
+        double b[6];
+        for (int i = 0; i < 6; ++i)
+        {
+          b[i] = value[i].get<double>();
+        }
+        return "\"" + text + "\": " + BoundsProblem(b);
+      }
+      return "expected " + DescribeSettingRange(setting) + ", got \"" + text + "\"";
     },
     "");
 }
@@ -100,7 +122,9 @@ DeclaredOptions::DeclaredOptions(CLI::App* command, const SettingTable& table,
     }
     else if (setting.Type == SettingDeclaration::Boolean)
     {
-      option->type_name("true|false");
+      // Alone it means true, as a flag: --transverse-jacobian stays a flag.
+      option->expected(0, 1);
+      option->type_name("[true|false]");
     }
     else if (setting.Type == SettingDeclaration::Choice)
     {
@@ -110,6 +134,14 @@ DeclaredOptions::DeclaredOptions(CLI::App* command, const SettingTable& table,
       setting.Type == SettingDeclaration::Direction)
     {
       option->type_name("X,Y,Z");
+    }
+    else if (setting.Type == SettingDeclaration::Bounds)
+    {
+      option->type_name("X0,X1,Y0,Y1,Z0,Z1");
+    }
+    else if (setting.Type == SettingDeclaration::Dimensions)
+    {
+      option->type_name("NX,NY,NZ");
     }
     else if (setting.Type == SettingDeclaration::NumberList)
     {
@@ -129,8 +161,11 @@ nlohmann::json DeclaredOptions::Given() const
       continue;
     }
     const SettingDeclaration* setting = this->Table.Find(entry.first);
+    const std::string& text = this->Texts.at(entry.first);
     std::string error; // checked while parsing (DeclaredCheck)
-    given[entry.first] = ParseSettingText(*setting, this->Texts.at(entry.first), error);
+    given[entry.first] = setting->Type == SettingDeclaration::Boolean && text.empty()
+      ? nlohmann::json(true)
+      : ParseSettingText(*setting, text, error);
   }
   return given;
 }

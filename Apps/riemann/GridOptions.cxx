@@ -1,9 +1,9 @@
 #include "GridOptions.h"
 
 #include "CliUtilities.h"
+#include "DeclaredOptions.h"
 #include "Distributed.h"
 
-#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -11,110 +11,56 @@ namespace riemann
 {
 namespace cli
 {
-std::string CheckBounds(const std::string& text, double bounds[6])
+namespace
 {
-  std::vector<double> b;
-  const std::string problem = CheckNumberList(text, 6, "X0,X1,Y0,Y1,Z0,Z1", b);
-  if (!problem.empty())
-  {
-    return problem;
-  }
-  const char* axes = "xyz";
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(b[2 * a] < b[2 * a + 1]))
-    {
-      std::ostringstream message;
-      message << "the " << axes[a] << " range needs " << axes[a] << "0 < " << axes[a] << "1, got "
-              << b[2 * a] << " >= " << b[2 * a + 1];
-      return message.str();
-    }
-    bounds[2 * a] = b[2 * a];
-    bounds[2 * a + 1] = b[2 * a + 1];
-  }
-  return {};
-}
-
-std::string CheckDimensions(const std::string& text, int dims[3], bool perProcess)
+/// What is wrong with the grid of `text` (three counts, each already in range) in all, or "".
+std::string CheckGridPoints(const std::string& text, bool perProcess)
 {
   std::vector<double> d;
-  const std::string problem = CheckNumberList(text, 3, "NX,NY,NZ", d);
-  if (!problem.empty())
+  if (!CheckNumberList(text, 3, "NX,NY,NZ", d).empty())
   {
-    return problem;
+    return {}; // the declared check says what is wrong with the text
   }
-  double total = 1.0;
+  const double total = d[0] * d[1] * d[2];
+  const long long maximum = MaximumPointsPerProcess * (perProcess ? NumberOfRanks() : 1);
+  if (total <= maximum)
+  {
+    return {};
+  }
+  std::ostringstream message;
+  message << static_cast<long long>(total) << " grid points; at most " << maximum;
+  if (maximum == MaximumPointsPerProcess)
+  {
+    message << " in one process" << (perProcess ? " (under mpirun, " : "")
+            << (perProcess ? std::to_string(MaximumPointsPerProcess) + " per rank)" : "");
+  }
+  else
+  {
+    message << " on " << NumberOfRanks() << " ranks (" << MaximumPointsPerProcess << " per rank)";
+  }
+  return message.str();
+}
+} // namespace
+
+void LimitGridPoints(const DeclaredOptions& grid, bool perProcess)
+{
+  grid.OptionOf("Dimensions")
+    ->check(Checked([perProcess](const std::string& text)
+      { return CheckGridPoints(text, perProcess); },
+      ""));
+}
+
+void GridOf(const DeclaredOptions& grid, double box[6], int dims[3])
+{
+  const nlohmann::json bounds = grid.Value("Bounds");
+  const nlohmann::json counts = grid.Value("Dimensions");
+  for (int i = 0; i < 6; ++i)
+  {
+    box[i] = bounds.at(i).get<double>();
+  }
   for (int a = 0; a < 3; ++a)
   {
-    if (d[a] != std::floor(d[a]))
-    {
-      return "\"" + text + "\": point counts must be whole numbers";
-    }
-    if (d[a] < 1 || d[a] > MaximumPerAxis)
-    {
-      std::ostringstream message;
-      message << d[a] << " points on an axis; each must be between 1 and " << MaximumPerAxis;
-      return message.str();
-    }
-    dims[a] = static_cast<int>(d[a]);
-    total *= d[a];
-  }
-  const long long maximum = MaximumPointsPerProcess * (perProcess ? NumberOfRanks() : 1);
-  if (total > maximum)
-  {
-    std::ostringstream message;
-    message << static_cast<long long>(total) << " grid points; at most " << maximum;
-    if (maximum == MaximumPointsPerProcess)
-    {
-      message << " in one process (under mpirun, " << MaximumPointsPerProcess << " per rank)";
-    }
-    else
-    {
-      message << " on " << NumberOfRanks() << " ranks (" << MaximumPointsPerProcess << " per rank)";
-    }
-    return message.str();
-  }
-  return {};
-}
-
-void AddGridOptions(CLI::App* command, std::string& bounds, std::string& dimensions, bool perProcess)
-{
-  command
-    ->add_option("--bounds", bounds, "Grid box X0,X1,Y0,Y1,Z0,Z1 (default -2,2,-2,2,-2,2)")
-    ->check(Checked(
-      [](const std::string& text)
-      {
-        double box[6];
-        return CheckBounds(text, box);
-      },
-      "X0,X1,Y0,Y1,Z0,Z1"));
-  command
-    ->add_option("--dims", dimensions,
-      perProcess ? "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, and 2e7 in "
-                   "all per process: under mpirun, per rank)"
-                 : "Grid points per axis NX,NY,NZ (default 33,33,33; at most 512 each, and 2e7 "
-                   "in all)")
-    ->check(Checked(
-      [perProcess](const std::string& text)
-      {
-        int dims[3];
-        return CheckDimensions(text, dims, perProcess);
-      },
-      "NX,NY,NZ"));
-}
-
-void ParseGridOptions(const std::string& bounds, const std::string& dimensions, double box[6],
-  int dims[3], bool perProcess)
-{
-  std::string problem = CheckBounds(bounds, box);
-  if (!problem.empty())
-  {
-    throw Failure("--bounds: " + problem, 2);
-  }
-  problem = CheckDimensions(dimensions, dims, perProcess);
-  if (!problem.empty())
-  {
-    throw Failure("--dims: " + problem, 2);
+    dims[a] = counts.at(a).get<int>();
   }
 }
 } // namespace cli

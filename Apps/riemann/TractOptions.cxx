@@ -136,16 +136,6 @@ void AddTractOptions(CLI::App* command, TractArguments& args)
       "Tractography: stop where this mask is 0, read at the voxel holding each point" + formats)
     ->check(CLI::ExistingFile);
   command
-    ->add_option("--stop-fa", args.StopAnisotropy,
-      "Tractography: stop where the fractional anisotropy of the diffusion tensor the metric "
-      "stands for is below this (0 to 1; 0: off)")
-    ->check(CLI::Range(0.0, 1.0));
-  command
-    ->add_option("--max-angle", args.MaximumAngle,
-      "Tractography: stop where the tract turns more than this many degrees per mm (per unit "
-      "of the voxels' placement) between two steps; the part before the turn is kept (0: off)")
-    ->check(CLI::Range(0.0, 1e6));
-  command
     ->add_option("--include", args.Include,
       "Tractography: keep only the tracts with a point in this region (not 0)" + formats)
     ->check(CLI::ExistingFile);
@@ -153,11 +143,6 @@ void AddTractOptions(CLI::App* command, TractArguments& args)
     ->add_option("--exclude", args.Exclude,
       "Tractography: drop the tracts with a point in this region (not 0)" + formats)
     ->check(CLI::ExistingFile);
-  command
-    ->add_option("--min-length", args.MinimumLength,
-      "Tractography: drop the tracts (both halves of a two-way seed together) shorter than this, "
-      "in mm (Euclidean length along the tract; 0: off)")
-    ->check(CLI::Range(0.0, 1e12));
   command
     ->add_option("--reference", args.Reference,
       "The image a .trk output is placed against (its grid and affine; default: a sampled "
@@ -185,9 +170,6 @@ void ApplyTractOptions(const TractArguments& args, vtkRiemannGeodesicTracer* tra
   {
     tracer->SetExcludeRegion(ReadRegion("--exclude", args.Exclude));
   }
-  tracer->SetStopFractionalAnisotropy(args.StopAnisotropy);
-  tracer->SetMaximumAngle(args.MaximumAngle);
-  tracer->SetMinimumLength(args.MinimumLength);
 }
 
 std::string DescribeRejectedTracts(const long long* byRejection)

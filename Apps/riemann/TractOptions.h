@@ -1,7 +1,9 @@
-// riemann trace's tractography: the stop and selection options (--stop-mask,
-// --stop-fa, --max-angle, --include, --exclude, --min-length), the .tck and
-// .trk outputs against a reference image (--reference), and seeds read back
-// from streamline files. One place for what `trace` and `connectivity` share.
+// riemann trace's tractography: the masks and regions (--stop-mask,
+// --include, --exclude), the .tck and .trk outputs against a reference image
+// (--reference), and seeds read back from streamline files. One place for
+// what `trace` and `connectivity` share. The stops' numbers (--stop-fa,
+// --max-angle, --min-length) are the tracer's declared settings
+// (vtkRiemannGeodesicTracer.settings.json, DeclaredOptions.h).
 #ifndef RiemannCliTractOptions_h
 #define RiemannCliTractOptions_h
 
@@ -29,11 +31,8 @@ namespace cli
 struct TractArguments
 {
   std::string StopMask;
-  double StopAnisotropy = 0.0;
-  double MaximumAngle = 0.0;
   std::string Include;
   std::string Exclude;
-  double MinimumLength = 0.0;
   std::string Reference;
   /// The seed mask's file (a .trk's last choice of reference), set by `trace`.
   std::string SeedMask;

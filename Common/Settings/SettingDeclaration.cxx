@@ -51,7 +51,8 @@ std::string CommandLineNames(const SettingDeclaration& setting)
 std::string DescribeSettingRange(const SettingDeclaration& setting)
 {
   const SettingRange range{ setting.Minimum, setting.MinimumExclusive, setting.Maximum,
-    setting.Type == SettingDeclaration::Integer, setting.Unit };
+    setting.Type == SettingDeclaration::Integer || setting.Type == SettingDeclaration::Dimensions,
+    setting.Unit };
   switch (setting.Type)
   {
     case SettingDeclaration::Boolean:
@@ -71,6 +72,12 @@ std::string DescribeSettingRange(const SettingDeclaration& setting)
       return "three numbers, not all zero";
     case SettingDeclaration::NumberList:
       return "numbers, each " + DescribeSettingRange(range).substr(std::strlen("a number "));
+    case SettingDeclaration::Bounds:
+      return "six numbers x0,x1,y0,y1,z0,z1 with x0 < x1, y0 < y1, z0 < z1" +
+        std::string(*setting.Unit ? " (" + std::string(setting.Unit) + ")" : "");
+    case SettingDeclaration::Dimensions:
+      return "three whole numbers, each " +
+        DescribeSettingRange(range).substr(std::strlen("a whole number "));
     case SettingDeclaration::Integer:
     case SettingDeclaration::Number:
       break;

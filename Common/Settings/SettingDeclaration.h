@@ -32,14 +32,16 @@ struct SettingDeclaration
     Point,     ///< three real numbers
     Direction, ///< three real numbers, not all zero
     Choice,    ///< one of Choices, stored by name; the VTK property holds its index
-    NumberList ///< zero or more real numbers in the range (Add/Clear commands)
+    NumberList, ///< zero or more real numbers in the range (Add/Clear commands)
+    Bounds,    ///< a box x0,x1,y0,y1,z0,z1 with x0 < x1, y0 < y1, z0 < z1
+    Dimensions ///< three whole numbers in the range (a grid's points per axis)
   };
   /// The VTK property (Set<Name>, Get<Name>); the key in projects and scripts.
   const char* Name;
   Kind Type;
   /// The default as JSON text ("400", "[0, 0, 1]", "\"rk4\"", "[]").
   const char* Default;
-  /// The valid range of a number (each number of a Point or NumberList):
+  /// The valid range of a number (each number of a Point, NumberList or Dimensions):
   /// Minimum < value (MinimumExclusive) or Minimum <= value, value <= Maximum.
   double Minimum;
   bool MinimumExclusive;
@@ -64,6 +66,9 @@ struct SettingDeclaration
   const char* SceneKey = "";
   /// A Choice's old names that keep working, "old=new" comma-separated ("adaptive=dp45").
   const char* ChoiceAliases = "";
+  /// Old property names a project or script may still use for it, comma-separated
+  /// ("ConeAxis" for the tracer's StartDirection); "" when there are none.
+  const char* ProjectAliases = "";
 };
 
 /// The declared settings of one VTK class, in the order forms list them.

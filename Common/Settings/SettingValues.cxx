@@ -2,6 +2,7 @@
 
 #include "SettingRange.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,12 +15,13 @@ namespace
 SettingRange RangeOf(const SettingDeclaration& setting)
 {
   return { setting.Minimum, setting.MinimumExclusive, setting.Maximum,
-    setting.Type == SettingDeclaration::Integer, setting.Unit };
+    setting.Type == SettingDeclaration::Integer || setting.Type == SettingDeclaration::Dimensions,
+    setting.Unit };
 }
 
-bool IsThreeNumbers(const nlohmann::json& value)
+bool IsFiniteNumbers(const nlohmann::json& value, std::size_t count)
 {
-  if (!value.is_array() || value.size() != 3)
+  if (!value.is_array() || value.size() != count)
   {
     return false;
   }
@@ -118,6 +120,36 @@ int ChoiceIndex(const SettingDeclaration& setting, const std::string& name)
   return -1;
 }
 
+std::string DirectionProblem(const double v[3])
+{
+  if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
+  {
+    return "is the zero vector: a direction must not be zero";
+  }
+  // Normalised later (in g): its squared length must be a normal double.
+  const double squared = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  if (!(squared >= DBL_MIN && squared <= DBL_MAX))
+  {
+    return std::string("is too ") + (squared < 1.0 ? "short" : "long") + " to normalise (scale it)";
+  }
+  return std::string();
+}
+
+std::string BoundsProblem(const double b[6])
+{
+  const char* axes = "xyz";
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(b[2 * a] < b[2 * a + 1]))
+    {
+      const char axis = axes[a];
+      return std::string("the ") + axis + " range needs " + axis + "0 < " + axis + "1, got " +
+        ShortestNumberText(b[2 * a]) + " >= " + ShortestNumberText(b[2 * a + 1]);
+    }
+  }
+  return std::string();
+}
+
 std::string CheckSettingValue(
   const SettingDeclaration& setting, const nlohmann::json& value, const std::string& name)
 {
@@ -131,13 +163,45 @@ std::string CheckSettingValue(
         ? std::string()
         : expected;
     case SettingDeclaration::Point:
-      return IsThreeNumbers(value) ? std::string() : expected;
+      return IsFiniteNumbers(value, 3) ? std::string() : expected;
     case SettingDeclaration::Direction:
-      return IsThreeNumbers(value) &&
-          (value[0].get<double>() != 0.0 || value[1].get<double>() != 0.0 ||
-            value[2].get<double>() != 0.0)
-        ? std::string()
-        : expected;
+    {
+      if (!IsFiniteNumbers(value, 3))
+      {
+        return expected;
+      }
+      const double v[3] = { value[0].get<double>(), value[1].get<double>(), value[2].get<double>() };
+      const std::string why = DirectionProblem(v);
+      return why.empty() ? std::string() : name + " " + why;
+    }
+    case SettingDeclaration::Bounds:
+    {
+      if (!IsFiniteNumbers(value, 6))
+      {
+        return expected;
+      }
+      double b[6];
+      for (int i = 0; i < 6; ++i)
+      {
+        b[i] = value[i].get<double>();
+      }
+      const std::string why = BoundsProblem(b);
+      return why.empty() ? std::string() : name + ": " + why;
+    }
+    case SettingDeclaration::Dimensions:
+      if (!IsFiniteNumbers(value, 3))
+      {
+        return expected;
+      }
+      for (const nlohmann::json& x : value)
+      {
+        const std::string why = riemann::CheckSettingValue(RangeOf(setting), x.get<double>(), name);
+        if (!why.empty())
+        {
+          return why;
+        }
+      }
+      return std::string();
     case SettingDeclaration::NumberList:
     {
       if (!value.is_array())
@@ -197,6 +261,32 @@ nlohmann::json ParseSettingText(
         return numbers;
       }
       error = "expected three finite comma-separated numbers X,Y,Z";
+      return nullptr;
+    case SettingDeclaration::Bounds:
+      if (ParseNumbers(text, numbers) && numbers.size() == 6)
+      {
+        return numbers;
+      }
+      error = "expected six finite comma-separated numbers X0,X1,Y0,Y1,Z0,Z1";
+      return nullptr;
+    case SettingDeclaration::Dimensions:
+      if (ParseNumbers(text, numbers) && numbers.size() == 3)
+      {
+        nlohmann::json counts = nlohmann::json::array();
+        for (double x : numbers)
+        {
+          if (x == std::floor(x) && std::abs(x) < 9e15)
+          {
+            counts.push_back(static_cast<long long>(x));
+          }
+          else
+          {
+            counts.push_back(x); // refused by CheckSettingValue, naming the range
+          }
+        }
+        return counts;
+      }
+      error = "expected three comma-separated whole numbers NX,NY,NZ";
       return nullptr;
     case SettingDeclaration::NumberList:
       if (ParseNumbers(text, numbers))
@@ -281,6 +371,17 @@ std::vector<std::string> SettingPythonLines(
         lines.push_back(set + python(value[0]) + ", " + python(value[1]) + ", " +
           python(value[2]) + ")");
         break;
+      case SettingDeclaration::Bounds:
+      case SettingDeclaration::Dimensions:
+      {
+        std::string arguments;
+        for (std::size_t i = 0; i < value.size(); ++i)
+        {
+          arguments += (i ? ", " : "") + python(value[i]);
+        }
+        lines.push_back(set + arguments + ")");
+        break;
+      }
       case SettingDeclaration::NumberList:
         lines.push_back(variable + "." + setting.ClearCommand + "()");
         for (const nlohmann::json& x : value)

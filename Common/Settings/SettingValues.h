@@ -32,6 +32,14 @@ RIEMANNCOMMONSETTINGS_EXPORT std::vector<std::string> ChoiceNames(const SettingD
 /// The index of `name` among a Choice's names (or its old names), or -1.
 RIEMANNCOMMONSETTINGS_EXPORT int ChoiceIndex(const SettingDeclaration& setting, const std::string& name);
 
+/// Why `v` cannot be a direction, as the end of a sentence ("is the zero
+/// vector: ...", "is too short to normalise (scale it)"), or "" when it can.
+RIEMANNCOMMONSETTINGS_EXPORT std::string DirectionProblem(const double v[3]);
+
+/// Why `b` (x0,x1,y0,y1,z0,z1) cannot be a box ("the x range needs x0 < x1,
+/// got 1 >= -1"), or "" when it can.
+RIEMANNCOMMONSETTINGS_EXPORT std::string BoundsProblem(const double b[6]);
+
 /**
  * "" when `value` has the declared type and range; else why not, naming the
  * setting `name` ("NumberOfDirections is 0: expected a whole number from 1

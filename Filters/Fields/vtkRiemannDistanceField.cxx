@@ -1,5 +1,7 @@
 #include "vtkRiemannDistanceField.h"
 
+#include "RiemannDistanceFieldDeclaration.h"
+
 #include "DistanceField.h"
 #include "Metric.h"
 #include "vtkDoubleArray.h"
@@ -21,7 +23,10 @@
 
 vtkStandardNewMacro(vtkRiemannDistanceField);
 
-vtkRiemannDistanceField::vtkRiemannDistanceField() = default;
+vtkRiemannDistanceField::vtkRiemannDistanceField()
+  : SeedRadius(riemann::declared::vtkRiemannDistanceField::Default::SeedRadius)
+{
+}
 vtkRiemannDistanceField::~vtkRiemannDistanceField() = default;
 
 void vtkRiemannDistanceField::AddSeed(double x, double y, double z)

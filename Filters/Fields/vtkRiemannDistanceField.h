@@ -73,7 +73,7 @@ protected:
   VTK_WRAPEXCLUDE bool ComputeFields(const riemann::Metric& metric, vtkDataSet* output) override;
 
   std::vector<double> Seeds;
-  double SeedRadius = 2.5;
+  double SeedRadius; // declared (vtkRiemannDistanceField.settings.json)
   vtkIdType NumberOfUpdates = 0;
   int NumberOfRounds = 0;
 

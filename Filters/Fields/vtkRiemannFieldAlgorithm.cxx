@@ -1,5 +1,7 @@
 #include "vtkRiemannFieldAlgorithm.h"
 
+#include "RiemannFieldAlgorithmDeclaration.h"
+
 #include "vtkRiemannReportError.h"
 
 #include "Metric.h"
@@ -40,7 +42,18 @@ vtkSmartPointer<vtkDoubleArray> vtkRiemannFieldAlgorithm::NewPointArray(
   return array;
 }
 
-vtkRiemannFieldAlgorithm::vtkRiemannFieldAlgorithm() = default;
+namespace
+{
+/// The declared grid (a name of its own: unity batches join this file with the others').
+namespace GridDefault = riemann::declared::vtkRiemannFieldAlgorithm::Default;
+}
+
+vtkRiemannFieldAlgorithm::vtkRiemannFieldAlgorithm()
+  : Bounds{ GridDefault::Bounds[0], GridDefault::Bounds[1], GridDefault::Bounds[2],
+    GridDefault::Bounds[3], GridDefault::Bounds[4], GridDefault::Bounds[5] }
+  , Dimensions{ GridDefault::Dimensions[0], GridDefault::Dimensions[1], GridDefault::Dimensions[2] }
+{
+}
 
 vtkRiemannFieldAlgorithm::~vtkRiemannFieldAlgorithm()
 {

@@ -2,6 +2,8 @@
  * @class   vtkRiemannFieldAlgorithm
  * @brief   Base of the filters that sample a field of a metric at points.
  *
+ * The grid's settings are declared in vtkRiemannFieldAlgorithm.settings.json
+ * (Documentation/Settings.md), which the subclasses' declarations take.
  * The points are either a regular grid, produced as vtkImageData over Bounds
  * (x0,x1,y0,y1,z0,z1; default [-2,2]^3) with Dimensions (nx,ny,nz; default
  * 33^3) points — the corners of the box are grid points — or, when an input
@@ -112,8 +114,9 @@ protected:
   VTK_WRAPEXCLUDE std::string CheckGrid() const;
 
   vtkRiemannMetric* Metric = nullptr;
-  double Bounds[6] = { -2.0, 2.0, -2.0, 2.0, -2.0, 2.0 };
-  int Dimensions[3] = { 33, 33, 33 };
+  // The declared defaults (vtkRiemannFieldAlgorithm.settings.json), set by the constructor.
+  double Bounds[6];
+  int Dimensions[3];
 
   /// GetLastError(): set by vtkRiemannReportErrorMacro, cleared where RequestData starts.
   std::string LastError;

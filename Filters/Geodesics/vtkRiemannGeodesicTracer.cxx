@@ -1,6 +1,8 @@
 #include "vtkRiemannGeodesicTracer.h"
 
+#include "DirectionLattice.h"
 #include "GeodesicTrace.h"
+#include "RiemannGeodesicTracerDeclaration.h"
 #include "JacobiField.h"
 #include "Metric.h"
 #include "PacketTrace.h"
@@ -59,7 +61,27 @@ static_assert(vtkRiemannIntegrationSettings::DORMAND_PRINCE45 ==
     static_cast<int>(riemann::IntegratorType::DormandPrince45),
   "integrator codes must match the core");
 
+namespace
+{
+/// The declared defaults (a name of its own: unity batches join this file with the others').
+namespace TracerDefault = riemann::declared::vtkRiemannGeodesicTracer::Default;
+}
+
 vtkRiemannGeodesicTracer::vtkRiemannGeodesicTracer()
+  : StartPosition{ TracerDefault::StartPosition[0], TracerDefault::StartPosition[1],
+    TracerDefault::StartPosition[2] }
+  , StartDirection{ TracerDefault::StartDirection[0], TracerDefault::StartDirection[1],
+    TracerDefault::StartDirection[2] }
+  , NumberOfDirections(static_cast<int>(TracerDefault::NumberOfDirections))
+  , ConeAngle(TracerDefault::ConeAngle)
+  , IntegrationDirection(TracerDefault::IntegrationDirection)
+  , ComputeTransverseJacobian(TracerDefault::ComputeTransverseJacobian)
+  , SeedsPerVoxel(static_cast<int>(TracerDefault::SeedsPerVoxel))
+  , SeedDirection(TracerDefault::SeedDirection)
+  , RandomSeed(static_cast<unsigned int>(TracerDefault::RandomSeed))
+  , StopFractionalAnisotropy(TracerDefault::StopFractionalAnisotropy)
+  , MaximumAngle(TracerDefault::MaximumAngle)
+  , MinimumLength(TracerDefault::MinimumLength)
 {
   this->SetDirectionArrayName("Direction");
 }
@@ -257,8 +279,21 @@ std::string GatherSeeds(vtkRiemannGeodesicTracer* self, vtkDataSet* input,
   }
   else
   {
+    // One seed: along StartDirection, or fanned over the cone around it.
     const double* position = self->GetStartPosition();
-    starts.emplace_back(riemann::Vec3(position[0], position[1], position[2]), startDirection);
+    const riemann::Vec3 seed(position[0], position[1], position[2]);
+    if (self->GetNumberOfDirections() > 1 && startDirection.squaredNorm() == 0.0)
+    {
+      return "StartDirection is zero: the cone of directions has no axis.";
+    }
+    const std::vector<riemann::Vec3> fan = self->GetNumberOfDirections() > 1
+      ? riemann::FibonacciDirections(
+          self->GetNumberOfDirections(), startDirection, self->GetConeAngle())
+      : std::vector<riemann::Vec3>{ startDirection };
+    for (const riemann::Vec3& direction : fan)
+    {
+      starts.emplace_back(seed, direction);
+    }
   }
   const int integrationDirection = self->GetIntegrationDirection();
   for (size_t i = 0; i < starts.size(); ++i)
@@ -615,6 +650,8 @@ void vtkRiemannGeodesicTracer::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->StartPosition[2] << "\n";
   os << indent << "StartDirection: " << this->StartDirection[0] << " " << this->StartDirection[1]
      << " " << this->StartDirection[2] << "\n";
+  os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
+  os << indent << "ConeAngle: " << this->ConeAngle << "\n";
   os << indent
      << "DirectionArrayName: " << (this->DirectionArrayName ? this->DirectionArrayName : "(none)")
      << "\n";

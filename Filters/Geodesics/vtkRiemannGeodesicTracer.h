@@ -8,7 +8,10 @@
  * - Seeds are the points of the input dataset (port 0, optional); the initial
  *   direction of each is the point-data vector named DirectionArrayName
  *   ("Direction" by default). Without an input, or without that array, the
- *   StartPosition and/or StartDirection ivars are used.
+ *   StartPosition and/or StartDirection ivars are used; without an input,
+ *   NumberOfDirections > 1 fans the seed over a cone around StartDirection.
+ * - The user-facing settings and their defaults and ranges are declared in
+ *   vtkRiemannGeodesicTracer.settings.json (Documentation/Settings.md).
  * - Directions are coordinate vectors; each is normalised to unit speed in g
  *   at its seed, so every length here is Riemannian arc length.
  * - How each geodesic is integrated is GetIntegrationSettings()'s
@@ -134,6 +137,20 @@ public:
 
   ///@{
   /**
+   * Without an input: NumberOfDirections geodesics from StartPosition, 1
+   * (default) along StartDirection, more spread over the cone of half-angle
+   * ConeAngle degrees (default 15) around it, as vtkRiemannDirectionGrid
+   * spreads them (riemann::FibonacciDirections; SeedIds number them in
+   * that order). Ignored with an input.
+   */
+  vtkSetClampMacro(NumberOfDirections, int, 1, 1000000);
+  vtkGetMacro(NumberOfDirections, int);
+  vtkSetClampMacro(ConeAngle, double, 0.0, 180.0);
+  vtkGetMacro(ConeAngle, double);
+  ///@}
+
+  ///@{
+  /**
    * Seeds from a mask: an input vtkImageData without the DirectionArrayName
    * array is a mask (a region of interest). Its voxels whose active scalar
    * is not 0 give SeedsPerVoxel seeds each (1: the voxel's centre; more:
@@ -253,22 +270,25 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double StartPosition[3] = { 0.0, 0.0, 0.0 };
-  double StartDirection[3] = { 1.0, 0.0, 0.0 };
+  // The declared settings' defaults (vtkRiemannGeodesicTracer.settings.json) are set by the constructor.
+  double StartPosition[3];
+  double StartDirection[3];
+  int NumberOfDirections;
+  double ConeAngle;
   char* DirectionArrayName = nullptr;
-  int IntegrationDirection = FORWARD;
+  int IntegrationDirection;
   bool UseDomainBounds = false;
   double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
-  bool ComputeTransverseJacobian = false;
-  int SeedsPerVoxel = 1;
-  int SeedDirection = E1;
-  unsigned int RandomSeed = 1;
+  bool ComputeTransverseJacobian;
+  int SeedsPerVoxel;
+  int SeedDirection;
+  unsigned int RandomSeed;
   vtkSmartPointer<vtkImageData> StopMask;
-  double StopFractionalAnisotropy = 0.0;
-  double MaximumAngle = 0.0;
+  double StopFractionalAnisotropy;
+  double MaximumAngle;
   vtkSmartPointer<vtkImageData> IncludeRegion;
   vtkSmartPointer<vtkImageData> ExcludeRegion;
-  double MinimumLength = 0.0;
+  double MinimumLength;
   /// Untraced seed-direction pairs by reason (index: the reason's code).
   std::vector<vtkIdType> UntracedSeeds;
   /// Dropped tracts by why (index: TractRejections).

@@ -1,6 +1,7 @@
 #include "vtkRiemannRayBundle.h"
 
 #include "ObserverCamera.h"
+#include "RiemannRayBundleDeclaration.h"
 #include "RiemannEmbreeMeshIntersector.h"
 #include "RiemannRay.h"
 #include "RiemannScene.h"
@@ -40,7 +41,18 @@ vtkStandardNewMacro(vtkRiemannRayBundle);
 vtkCxxSetObjectMacro(vtkRiemannRayBundle, Scene, vtkRiemannScene);
 vtkCxxSetObjectMacro(vtkRiemannRayBundle, Camera, vtkCamera);
 
+namespace
+{
+/// The declared settings (a name of its own: unity batches join this file with the others').
+namespace BundleDeclared = riemann::declared::vtkRiemannRayBundle;
+}
+
 vtkRiemannRayBundle::vtkRiemannRayBundle()
+  : Width(static_cast<int>(BundleDeclared::Default::Width))
+  , Height(static_cast<int>(BundleDeclared::Default::Height))
+  , Projection(BundleDeclared::Default::Projection)
+  , SubgridResolution(static_cast<int>(BundleDeclared::Default::SubgridResolution))
+  , UseSceneSettings(BundleDeclared::Default::UseSceneSettings)
 {
   this->SetNumberOfInputPorts(0);
   vtkRiemannSetRayDefaults(this->IntegrationSettings);
@@ -245,8 +257,11 @@ int vtkRiemannRayBundle::RequestData(
 bool vtkRiemannRayBundle::CheckSizes(const riemann::RaySettings& rays)
 {
   for (const auto& [name, value, most] :
-    { std::tuple<const char*, int, int>{ "Width", this->Width, 1 << 16 },
-      { "Height", this->Height, 1 << 16 }, { "SubgridResolution", this->SubgridResolution, 4096 },
+    { std::tuple<const char*, int, int>{ "Width", this->Width,
+        static_cast<int>(BundleDeclared::Maximum::Width) },
+      { "Height", this->Height, static_cast<int>(BundleDeclared::Maximum::Height) },
+      { "SubgridResolution", this->SubgridResolution,
+        static_cast<int>(BundleDeclared::Maximum::SubgridResolution) },
       { "PixelStride", this->PixelStride, 1 << 16 } })
   {
     if (value < 1 || value > most)

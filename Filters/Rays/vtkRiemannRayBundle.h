@@ -10,7 +10,9 @@
  *
  * Pixels: an N x N sub-grid of the Width x Height image (SubgridResolution,
  * the centres of N x N equal blocks), or every PixelStride-th pixel of a
- * region (SetPixelRegion, UsePixelRegion). Row 0 is the bottom row.
+ * region (SetPixelRegion, UsePixelRegion). Row 0 is the bottom row. The
+ * user-facing settings, their defaults and ranges are declared in
+ * vtkRiemannRayBundle.settings.json (Documentation/Settings.md).
  *
  * Output: one polyline per pixel, from the observer to the hit (or to the end
  * of the ray), with point data `ArcLength` and cell data `PixelIndex`
@@ -90,7 +92,7 @@ public:
 
   ///@{
   /// N for an N x N sub-grid of pixels (default 8; 1 to 4096, checked when
-  /// the filter runs, as the sides).
+  /// the filter runs, as the sides: 1 to 65536).
   vtkSetMacro(SubgridResolution, int);
   vtkGetMacro(SubgridResolution, int);
   ///@}
@@ -129,14 +131,15 @@ protected:
 
   vtkRiemannScene* Scene = nullptr;
   vtkCamera* Camera = nullptr;
-  int Width = 640;
-  int Height = 480;
-  int Projection = PERSPECTIVE;
-  int SubgridResolution = 8;
+  // The declared settings' defaults (vtkRiemannRayBundle.settings.json) are set by the constructor.
+  int Width;
+  int Height;
+  int Projection;
+  int SubgridResolution;
   int PixelRegion[4] = { 0, 0, 0, 0 };
   int PixelStride = 1;
   bool UsePixelRegion = false;
-  bool UseSceneSettings = true;
+  bool UseSceneSettings;
 
 private:
   /// The sides, sub-grid and stride in range, and the points the bundle

@@ -37,6 +37,11 @@ COMMANDS = {
     "vtkRiemannExponentialMap": ["expmap"],
     "vtkRiemannConjugateLocus": ["conjugate"],
     "vtkRiemannGeodesicConnector": ["connect"],
+    "vtkRiemannGeodesicTracer": ["trace", "connectivity"],
+    "vtkRiemannCurvatureField": ["fields"],
+    "vtkRiemannVolumeForm": ["fields"],
+    "vtkRiemannMetricTensorField": ["fields"],
+    "vtkRiemannDistanceField": ["distance"],
     "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
 }
 # The integration settings' defaults are those of the filter a command runs
@@ -56,9 +61,13 @@ LEFT_OUT = {
     ("render", "MinimumIntegrationStep"): "a ray's adaptive step is bounded relative to its step",
     ("render", "MaximumIntegrationStep"): "a ray's adaptive step is bounded relative to its step",
 }
+LEFT_OUT.update({("connectivity", name): "--tract-counts seeds every labelled voxel along e1, both ways"
+                 for name in ("StartPosition", "StartDirection", "NumberOfDirections", "ConeAngle",
+                              "IntegrationDirection", "SeedDirection", "ComputeTransverseJacobian")})
 # Declared classes that no command runs by themselves, and why.
 NO_COMMAND = {
     "vtkRiemannDirectionGrid": "built inside expmap and conjugate (their cone settings)",
+    "vtkRiemannRayBundle": "render --bundle N draws one with render's picture (its size, projection, scene)",
 }
 
 failures = []
@@ -96,7 +105,7 @@ def shortest(x):
 
 def default_text(setting):
     d, kind = setting["default"], setting["type"]
-    if kind in ("point", "direction"):
+    if kind in ("point", "direction", "bounds", "dimensions"):
         return ",".join(shortest(x) for x in d)
     if kind == "number_list":
         return ", ".join(shortest(x) for x in d) if d else "none"
@@ -121,7 +130,7 @@ def check_vtk_defaults(doc):
             continue
         got = getattr(obj, "Get" + name)()
         want = s["choices"].index(d) if kind == "choice" else d
-        if kind in ("point", "direction"):
+        if kind in ("point", "direction", "bounds", "dimensions"):
             got = list(got)
         check(got == want, "%s: the new object has %r, declared %r" % (where, got, want))
 
@@ -150,14 +159,18 @@ def check_paraview(doc):
             [float(x) for x in d] if isinstance(d, list) else [float(d)]
         check(values == want, "%s: default_values %s, declared %s" % (where, values, want))
         check(p.get("label") == s.get("label", p.get("label")), "%s: label %s" % (where, p.get("label")))
-        domain = p.find("IntRangeDomain") if kind == "integer" else p.find("DoubleRangeDomain")
+        domain = p.find("IntRangeDomain") if kind in ("integer", "dimensions") else p.find("DoubleRangeDomain")
         if "minimum" in s or "maximum" in s:
             check(domain is not None, "%s: no range domain" % where)
             if domain is not None:
+                # One bound per element (a grid's three counts: each has the range).
+                elements = 3 if kind == "dimensions" else 1
                 if "minimum" in s:
-                    check(float(domain.get("min")) == s["minimum"], "%s: min %s" % (where, domain.get("min")))
+                    check([float(x) for x in domain.get("min").split()] == [s["minimum"]] * elements,
+                          "%s: min %s" % (where, domain.get("min")))
                 if "maximum" in s:
-                    check(float(domain.get("max")) == s["maximum"], "%s: max %s" % (where, domain.get("max")))
+                    check([float(x) for x in domain.get("max").split()] == [s["maximum"]] * elements,
+                          "%s: max %s" % (where, domain.get("max")))
         if kind == "choice":
             entries = [e.get("text") for e in p.find("EnumerationDomain")]
             check(entries == s["choices"], "%s: entries %s" % (where, entries))
@@ -214,6 +227,10 @@ def past_range(s):
         return str(int(x)) if s["type"] == "integer" else cxx_g(x)
     if s["type"] == "direction":
         return "0,0,0"
+    if s["type"] == "dimensions":
+        return "%d,1,1" % (s["maximum"] * 2 + 1)
+    if s["type"] == "bounds":
+        return "1,0,-1,1,-1,1"
     if s["type"] == "choice":
         return "nothing-of-the-sort"
     return None
@@ -244,7 +261,7 @@ def check_commands(doc):
             want = command_default(cls, command, s)
             check(want in entry, "%s: --help does not say %s: %s" % (where, want, entry))
             for bound in ("minimum", "maximum"):
-                if bound in s and s["type"] in ("integer", "number", "number_list"):
+                if bound in s and s["type"] in ("integer", "number", "number_list", "dimensions"):
                     check(cxx_g(s[bound]) in entry, "%s: --help does not give the %s %s: %s"
                           % (where, bound, cxx_g(s[bound]), entry))
             bad = past_range(s)
@@ -305,10 +322,18 @@ def main():
     check(len(files) >= 4, "only %d declarations found under %s" % (len(files), SOURCE))
     count = 0
     for doc in docs:
+        count += len(doc["settings"])
+        if doc.get("abstract"):
+            # A base class: its settings are walked in the subclasses that take them ("like").
+            check(any(s.get("name") == t["name"] for other in docs if not other.get("abstract")
+                      for s in other["settings"] for t in doc["settings"]),
+                  "%s: abstract, and no class takes its settings" % doc["class"])
+            check(not os.path.exists(os.path.join(PARAVIEW, doc["class"] + ".xml")),
+                  "%s: abstract, but it has a ParaView proxy" % doc["class"])
+            continue
         check_vtk_defaults(doc)
         check_paraview(doc)
         check_commands(doc)
-        count += len(doc["settings"])
     check_generator_follows(generator, files)
     print("%d classes, %d declared settings walked" % (len(docs), count))
     for f in failures:

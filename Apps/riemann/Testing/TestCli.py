@@ -723,7 +723,7 @@ class DistanceTests(TempDirTest):
         twist = os.path.join(METRICS, "twist.json")
         for args, words in (([], "no seed"),
                             (["--seed", "3,0,0"], "outside --bounds"),
-                            (["--seed", "0,0,0", "--dims", "2,2,1"], "--dims 2,2,1: the distance needs at least 2 points"),
+                            (["--seed", "0,0,0", "--dims", "2,2,1"], "--dimensions: expected three whole numbers, each from 2 to 512"),
                             (["--seed", "0,0,0", "--seed-radius", "50"], "--seed-radius"),
                             (["--seed", "0,0,0", "--cut-locus", os.path.join(self.dir, "c.vti")], "must be a .vtp"),
                             (["--seed", "0,0,0", "--to", "1,1,1"], "--to and --geodesics go together")):
@@ -1167,14 +1167,15 @@ class FieldsTests(unittest.TestCase):
 
     def test_bad_bounds_and_dims(self):
         cases = [
-            (["--bounds", "-1,1,-1,1"], "--bounds: expected 6 comma-separated numbers"),
-            (["--bounds", "-1,1,-1,1,-1,inf"], "is not finite"),
-            (["--bounds", "-1,abc,-1,1,-1,1"], "is not a number"),
-            (["--bounds", "1,-1,-1,1,-1,1"], "the x range needs x0 < x1"),
+            # The grid's declared settings (--dims is Dimensions' old spelling).
+            (["--bounds", "-1,1,-1,1"], '--bounds: expected six finite comma-separated numbers X0,X1,Y0,Y1,Z0,Z1, got "-1,1,-1,1"'),
+            (["--bounds", "-1,1,-1,1,-1,inf"], "--bounds: expected six finite"),
+            (["--bounds", "-1,abc,-1,1,-1,1"], "--bounds: expected six finite"),
+            (["--bounds", "1,-1,-1,1,-1,1"], '--bounds: "1,-1,-1,1,-1,1": the x range needs x0 < x1, got 1 >= -1'),
             (["--bounds", "-1,1,-1,1,2,2"], "the z range needs z0 < z1"),
-            (["--dims", "3,3"], "--dims: expected 3 comma-separated numbers"),
-            (["--dims", "0,3,3"], "each must be between 1 and 512"),
-            (["--dims", "3,513,3"], "each must be between 1 and 512"),
+            (["--dims", "3,3"], "--dimensions: expected three comma-separated whole numbers NX,NY,NZ"),
+            (["--dims", "0,3,3"], "--dimensions: expected three whole numbers, each from 1 to 512 (points)"),
+            (["--dims", "3,513,3"], "each from 1 to 512"),
             (["--dims", "300,300,300"], "at most 20000000"),
             (["--dims", "3.5,3,3"], "whole numbers"),
         ]
@@ -1451,9 +1452,9 @@ BAD_INPUTS = [
     ("info where the metric degenerates", ["info", "-m", "METRIC", "-p", "2,0,0"],
      '{"type": "conformal", "n": "2/(1 - x^2 - y^2 - z^2)"}', "geodesics and rays stop here"),
     ("seed with two numbers", ["trace", "-m", "METRIC", "--seed", "1,2", "-o", "OUT.csv"], '{"type": "euclidean"}',
-     "--seed: expected three finite comma-separated numbers"),
+     "--start-position: expected three finite comma-separated numbers"),
     ("NaN in seed", ["trace", "-m", "METRIC", "--seed", "nan,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
-     "--seed: expected three finite"),
+     "--start-position: expected three finite"),
     ("zero direction", ["trace", "-m", "METRIC", "--direction", "0,0,0", "-o", "OUT.csv"], '{"type": "euclidean"}',
      "must not be zero"),
     ("unknown integrator", ["trace", "-m", "METRIC", "--integrator", "rk5", "-o", "OUT.csv"], '{"type": "euclidean"}',
@@ -1530,10 +1531,11 @@ NUMERIC_OPTIONS = [
     ("trace", ["--length", "1e999"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "1e999"'),
     ("trace", ["--max-steps", "nan"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
     ("trace", ["--max-steps", "2.5"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "2.5"'),
-    ("trace", ["--seed", "inf,0,0"], '--seed: expected three finite comma-separated numbers X,Y,Z, got "inf,0,0"'),
-    ("trace", ["--direction", "nan,1,0"], '--direction: expected three finite comma-separated numbers'),
-    ("trace", ["--direction", "0,0,0"], '--direction: "0,0,0" is the zero vector: a direction must not be zero'),
-    ("trace", ["--direction", "1e-200,0,0"], "--direction: \"1e-200,0,0\": the length of this direction is too small"),
+    # The seed and direction are the tracer's StartPosition and StartDirection (old spellings --seed, --direction).
+    ("trace", ["--seed", "inf,0,0"], '--start-position: expected three finite comma-separated numbers X,Y,Z, got "inf,0,0"'),
+    ("trace", ["--direction", "nan,1,0"], '--start-direction: expected three finite comma-separated numbers'),
+    ("trace", ["--direction", "0,0,0"], '--start-direction: "0,0,0" is the zero vector: a direction must not be zero'),
+    ("trace", ["--direction", "1e-200,0,0"], '--start-direction: "1e-200,0,0" is too short to normalise (scale it)'),
     ("info", ["--point", "nan,0,0"], '--point: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
     ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
     ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
@@ -1568,7 +1570,7 @@ NUMERIC_OPTIONS = [
     ("conjugate", ["--max-step", "nan"], '--maximum-integration-step: expected a number above 0 and at most 1e+06 (arc length), got "nan"'),
     ("conjugate", ["--tolerance", "nan"], '--tolerance: expected a number from 1e-15 to 1 (arc length), got "nan"'),
     ("conjugate", ["--cone-angle", "nan"], '--cone-angle: expected a number from 0 to 180 (degrees), got "nan"'),
-    ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: expected three numbers, not all zero, got "0,0,0"'),
+    ("conjugate", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector: a direction must not be zero'),
     ("conjugate", ["--directions", "nan"], '--number-of-directions: expected a whole number from 1 to 1e+06, got "nan"'),
     ("conjugate", ["--count", "inf"], '--maximum-number-of-conjugate-points: expected a whole number from 1 to 1e+06, got "inf"'),
     ("conjugate", ["--seed", "nan,0,0"], '--observer: expected three finite comma-separated numbers X,Y,Z, got "nan,0,0"'),
@@ -1577,14 +1579,14 @@ NUMERIC_OPTIONS = [
     ("expmap", ["--length", "nan"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
     ("expmap", ["--tolerance", "inf"], '--maximum-error: expected a number from 1e-15 to 1, got "inf"'),
     ("expmap", ["--cone-angle", "inf"], '--cone-angle: expected a number from 0 to 180 (degrees), got "inf"'),
-    ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: expected three numbers, not all zero, got "0,0,0"'),
+    ("expmap", ["--cone-axis", "0,0,0"], '--cone-axis: "0,0,0" is the zero vector: a direction must not be zero'),
     ("expmap", ["--directions", "1.5"], '--number-of-directions: expected a whole number from 1 to 1e+06, got "1.5"'),
     ("expmap", ["--radii", "nan"], '--radii: expected numbers, each above 0 and at most 1e+09 (arc length), got "nan"'),
     ("expmap", ["--radii", "1,inf"], '--radii: expected numbers, each above 0 and at most 1e+09 (arc length), got "1,inf"'),
     ("expmap", ["--seed", "0,nan,0"], '--observer: expected three finite comma-separated numbers X,Y,Z, got "0,nan,0"'),
-    ("fields", ["--bounds", "-1,1,-1,1,nan,1"], '--bounds: "nan" is not finite'),
-    ("fields", ["--dims", "nan,3,3"], '--dims: "nan" is not finite'),
-    ("fields", ["--dims", "3,inf,3"], '--dims: "inf" is not finite'),
+    ("fields", ["--bounds", "-1,1,-1,1,nan,1"], '--bounds: expected six finite comma-separated numbers X0,X1,Y0,Y1,Z0,Z1, got "-1,1,-1,1,nan,1"'),
+    ("fields", ["--dims", "nan,3,3"], '--dimensions: expected three comma-separated whole numbers NX,NY,NZ, got "nan,3,3"'),
+    ("fields", ["--dims", "3,inf,3"], '--dimensions: expected three comma-separated whole numbers'),
 ]
 
 OUTPUT_EXTENSION = {"trace": "csv", "render": "png", "conjugate": "csv", "expmap": "vtp", "fields": "csv"}

@@ -206,9 +206,10 @@ class TractStopTests(TempDirTest):
 
     def test_bad_stop_options_are_refused(self):
         out = os.path.join(self.dir, "t.vtp")
-        for args, words in ((["--stop-fa", "1.5"], "--stop-fa"),
+        # Refusals name the option by the property's name (--stop-fa is its old spelling).
+        for args, words in ((["--stop-fa", "1.5"], "--stop-fractional-anisotropy: expected a number from 0 to 1"),
                             (["--exclude", PHANTOM], "--exclude: "),
-                            (["--max-angle", "-1"], "--max-angle")):
+                            (["--max-angle", "-1"], "--maximum-angle: expected a number from 0 to 1e+06")):
             with self.subTest(args=args):
                 status, _, err = run("trace", "-m", PHANTOM, "--seed-mask", self.seeds, *args, "-o", out)
                 self.assertNotEqual(status, 0, err)

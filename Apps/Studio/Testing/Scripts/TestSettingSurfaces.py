@@ -40,8 +40,25 @@ def declarations():
     return {doc["class"]: doc for doc in docs}
 
 
+# Declared settings an item leaves out on purpose, and why: no field, not in its settings.
+LEFT_OUT = {
+    ("geodesics", "SeedsPerVoxel"): "a mask input's seeds: the studio's geodesics have none",
+    ("geodesics", "SeedDirection"): "a mask input's seeds: the studio's geodesics have none",
+    ("geodesics", "RandomSeed"): "a mask input's seeds: the studio's geodesics have none",
+}
+LEFT_OUT.update({("ray-bundle", name): "the inside view's (its size, projection, scene settings)"
+                 for name in ("Width", "Height", "Projection", "UseSceneSettings")})
+
+# Items without integration settings of their own, and why.
+NO_INTEGRATION = {
+    "ray-bundle": "its rays are the inside view's: the document's ray settings",
+    "field": "a field of the metric at grid points: nothing is integrated",
+    "distance-field": "the eikonal solver on a grid: nothing is integrated",
+}
+
 FIELD_TYPES = {"integer": "integer", "number": "number", "point": "vector3", "direction": "vector3",
-               "choice": "choice", "boolean": "boolean", "number_list": "number_list"}
+               "choice": "choice", "boolean": "boolean", "number_list": "number_list",
+               "bounds": "numbers6", "dimensions": "integers3"}
 
 
 def other_value(s):
@@ -61,6 +78,10 @@ def other_value(s):
         return [c for c in s["choices"] if c != d][0]
     if kind == "boolean":
         return not d
+    if kind == "bounds":
+        return [-1.0, 1.0, -1.5, 1.5, -0.5, 0.5]
+    if kind == "dimensions":
+        return [9, 8, 7]  # small: quick jobs
     return [0.5, 1.5]
 
 
@@ -78,7 +99,7 @@ def getter(s, obj):
     value = getattr(obj, "Get" + s["name"])()
     if s["type"] == "choice":
         return s["choices"][value]
-    return list(value) if s["type"] in ("point", "direction") else value
+    return list(value) if s["type"] in ("point", "direction", "bounds", "dimensions") else value
 
 
 def main():
@@ -95,17 +116,27 @@ def main():
             undeclared.append("%s (%s)" % (kind, item["class"]))
             studio.remove(name)
             continue
-        walked[name] = doc
         fields = {f["key"]: f for f in studio.properties(name)}
+        # A new item starts from the declared defaults, or from the declared
+        # preset it names (the tracer's Fan).
+        preset = doc.get("presets", {}).get(item.get("preset"), {}) if "preset" in item else {}
+        check("preset" not in item or item["preset"] in doc.get("presets", {}),
+              "%s: starts from preset %r, which %s does not declare" % (kind, item.get("preset"), doc["class"]))
+        shown = []
         for s in doc["settings"]:
             where = "%s %s" % (kind, s["name"])
+            if (kind, s["name"]) in LEFT_OUT:
+                check(s["name"] not in fields and s["name"] not in item,
+                      "%s: left out (%s) but in the form or the settings" % (where, LEFT_OUT[(kind, s["name"])]))
+                continue
+            shown.append(s)
             field = fields.get(s["name"])
             check(field is not None, "%s: no field in the properties panel" % where)
             if field is None:
                 continue
             check(field["label"] == s.get("label", field["label"]), "%s: label %r" % (where, field["label"]))
             check(field["type"] == FIELD_TYPES[s["type"]], "%s: field type %s" % (where, field["type"]))
-            if s["type"] in ("integer", "number", "number_list"):
+            if s["type"] in ("integer", "number", "number_list", "dimensions"):
                 check(field["minimum"] == s.get("minimum", -1e300), "%s: minimum %s" % (where, field["minimum"]))
                 check(field["maximum"] == s.get("maximum", 1e300), "%s: maximum %s" % (where, field["maximum"]))
                 check(field["minimum_exclusive"] == bool(s.get("minimum_exclusive")),
@@ -114,20 +145,38 @@ def main():
                 check(field["choices"] == s["choices"], "%s: choices %s" % (where, field["choices"]))
             check(field["non_zero"] == (s["type"] == "direction"), "%s: non_zero" % where)
             check(field["help"].startswith(s["help"]), "%s: help %r" % (where, field["help"]))
-            check(same(item[s["name"]], s["default"]),
-                  "%s: a new item has %r, declared %r" % (where, item[s["name"]], s["default"]))
+            want = preset.get(s["name"], s["default"])
+            check(same(item.get(s["name"]), want),
+                  "%s: a new item has %r, declared %r" % (where, item.get(s["name"]), want))
         # Every item that integrates shows the declared integration settings.
         for s in declared["vtkRiemannIntegrationSettings"]["settings"]:
             field = fields.get(s["name"])
+            if kind in NO_INTEGRATION:
+                check(field is None, "%s: integration field %s, but %s" % (kind, s["name"], NO_INTEGRATION[kind]))
+                continue
             check(field is not None and field["label"] == s.get("label") and
                   field["type"] == FIELD_TYPES[s["type"]],
                   "%s: integration field %s: %r" % (kind, s["name"], field))
             if field is not None and s["type"] in ("integer", "number"):
                 check(field["minimum"] == s.get("minimum", -1e300) and field["maximum"] == s.get("maximum", 1e300),
                       "%s: integration field %s range %s..%s" % (kind, s["name"], field["minimum"], field["maximum"]))
+        walked[name] = dict(doc, settings=shown)
         # Other values for every declared setting, and a short length (quick jobs).
-        values[name] = {s["name"]: other_value(s) for s in doc["settings"]}
-        studio.set(name, MaximumPropagation=1.0, **values[name])
+        values[name] = {s["name"]: other_value(s) for s in shown}
+        quick = {} if kind in NO_INTEGRATION else {"MaximumPropagation": 1.0}
+        studio.set(name, **quick, **values[name])
+
+    # An old key a project may still hold (a declared project alias) sets the setting.
+    aliased = 0
+    for name, doc in walked.items():
+        for s in doc["settings"]:
+            for old in s.get("aliases", {}).get("project", []):
+                studio.set(name, **{old: values[name][s["name"]]})
+                item = studio.get(name)
+                check(old not in item and same(item.get(s["name"]), values[name][s["name"]]),
+                      "%s: the old key %s did not set %s: %r" % (name, old, s["name"], item.get(s["name"])))
+                aliased += 1
+    check(aliased > 0, "no declared project alias was walked")
 
     # Project keys: saved and opened again.
     with tempfile.TemporaryDirectory() as folder:

@@ -8,6 +8,7 @@
 //   with arc length s(x) = int n dx (closed form with erf), and every ray keeps
 //   the angular momentum n^2 (x × v) (the rotations are Killing fields);
 // - the parallel filter against a serial loop over the core's TraceGeodesic.
+#include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannGeodesicTracer.h"
 #include "vtkRiemannMetric.h"
@@ -361,6 +362,67 @@ TEST(GeodesicTracer, StartPositionWithoutInput)
   EXPECT_EQ(lines[0].Points.front(), p);
   EXPECT_NEAR(lines[0].ArcLength.back(), 2.0, 1e-12);
   EXPECT_LT(Distance(lines[0].Points.back(), TwistExact(p, d, 2.0)), 1e-8);
+}
+
+// Without an input, NumberOfDirections > 1 fans the seed over the cone that
+// vtkRiemannDirectionGrid spreads around StartDirection: each geodesic is the
+// twist's exact one along its direction of the grid, in the grid's order.
+TEST(GeodesicTracer, FanOverTheConeWithoutInput)
+{
+  const V3 p{ 0.3, -0.2, 0.1 };
+  const V3 axis{ 0.3, 1.0, -0.2 };
+  constexpr int Count = 9;
+  constexpr double Angle = 30.0;
+  vtkNew<vtkRiemannGeodesicTracer> tracer;
+  tracer->SetMetric(MakeMetric(TwistJson));
+  tracer->SetStartPosition(p.data());
+  tracer->SetStartDirection(axis.data());
+  tracer->SetNumberOfDirections(Count);
+  tracer->SetConeAngle(Angle);
+  tracer->GetIntegrationSettings()->SetMaximumPropagation(1.5);
+  tracer->Update();
+  vtkNew<vtkRiemannDirectionGrid> grid;
+  grid->SetNumberOfDirections(Count);
+  grid->SetConeAxis(axis.data());
+  grid->SetConeAngle(Angle);
+  grid->Update();
+  ASSERT_EQ(grid->GetOutput()->GetNumberOfPoints(), Count);
+  const auto lines = Lines(tracer->GetOutput());
+  ASSERT_EQ(lines.size(), static_cast<std::size_t>(Count));
+  const V3 unitAxis = Scale(1.0 / Norm(axis), axis);
+  for (int i = 0; i < Count; ++i)
+  {
+    V3 d;
+    grid->GetOutput()->GetPoint(i, d.data());
+    // The grid's directions are in the cone, so the fan's are.
+    EXPECT_GE(Dot(d, unitAxis) / Norm(d), std::cos(Angle * M_PI / 180.0) - 1e-6);
+    EXPECT_EQ(lines[i].SeedId, i);
+    EXPECT_EQ(lines[i].Points.front(), p);
+    EXPECT_NEAR(lines[i].ArcLength.back(), 1.5, 1e-12);
+    // vtkPoints are float: the grid's directions to about 1e-7.
+    EXPECT_LT(Distance(lines[i].Points.back(), TwistExact(p, d, 1.5)), 1e-5) << "direction " << i;
+  }
+
+  // One direction is StartDirection itself; an input's seeds ignore the fan.
+  tracer->SetNumberOfDirections(1);
+  tracer->Update();
+  const auto one = Lines(tracer->GetOutput());
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_LT(Distance(one[0].Points.back(), TwistExact(p, axis, 1.5)), 1e-8);
+  tracer->SetNumberOfDirections(Count);
+  const auto seeds = MakeSeeds(TwistSeedPoints(), TwistSeedDirections());
+  tracer->SetInputData(seeds);
+  tracer->Update();
+  EXPECT_EQ(tracer->GetOutput()->GetNumberOfLines(), seeds->GetNumberOfPoints());
+
+  // A fan needs an axis: a zero StartDirection is an error and empty output.
+  tracer->SetInputData(nullptr);
+  tracer->SetStartDirection(0.0, 0.0, 0.0);
+  MessageLog log(tracer);
+  tracer->Update();
+  ASSERT_EQ(log.Errors.size(), 1u);
+  EXPECT_NE(log.Errors[0].find("no axis"), std::string::npos) << log.Errors[0];
+  EXPECT_EQ(tracer->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(GeodesicTracer, BothDirections)
