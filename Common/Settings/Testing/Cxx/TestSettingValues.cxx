@@ -166,3 +166,71 @@ TEST(SettingValues, TheGeneratedTableIsTheDeclaration)
   EXPECT_STREQ(directions->CommandLineAliases, "--directions,-n");
   EXPECT_STREQ(declared::Settings.ClassName, "vtkRiemannExponentialMap");
 }
+
+namespace
+{
+// A grid's box and points per axis, as vtkRiemannFieldAlgorithm declares them.
+constexpr SettingDeclaration GridExample[] = {
+  { "Bounds", SettingDeclaration::Bounds, "[-2, 2, -2, 2, -2, 2]", -1e300, false, 1e300, "", "",
+    "Bounds", "The box", "", "", "", "", "" },
+  { "Dimensions", SettingDeclaration::Dimensions, "[33, 33, 33]", 1.0, false, 512.0, "", "points",
+    "Samples", "Points per axis", "--dims", "", "", "", "" },
+  { "StartDirection", SettingDeclaration::Direction, "[1, 0, 0]", -1e300, false, 1e300, "", "",
+    "Direction", "The direction", "--direction", "", "", "", "", "", "", "ConeAxis" },
+};
+constexpr riemann::SettingTable Grid{ "vtkGridExample", "Grid", GridExample,
+  sizeof(GridExample) / sizeof(GridExample[0]) };
+}
+
+// A box must increase along every axis, and the refusal names the axis; a
+// grid's counts are whole and each in the range; a direction that cannot be
+// normalised is refused with why.
+TEST(SettingValues, BoxesGridsAndDirectionsAreCheckedWithTheirReasons)
+{
+  const SettingDeclaration& bounds = *Grid.Find("Bounds");
+  const SettingDeclaration& dims = *Grid.Find("Dimensions");
+  const SettingDeclaration& direction = *Grid.Find("StartDirection");
+  EXPECT_EQ(riemann::DescribeSettingRange(bounds),
+    "six numbers x0,x1,y0,y1,z0,z1 with x0 < x1, y0 < y1, z0 < z1");
+  EXPECT_EQ(riemann::DescribeSettingRange(dims), "three whole numbers, each from 1 to 512 (points)");
+
+  EXPECT_EQ(riemann::CheckSettingValue(bounds, { -1, 1, -2, 2, 0, 0.5 }, "Bounds"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(bounds, { -1, 1, 2, -2, 0, 0.5 }, "Bounds"),
+    "Bounds: the y range needs y0 < y1, got 2 >= -2");
+  EXPECT_NE(riemann::CheckSettingValue(bounds, { -1, 1, -2, 2, 0 }, "Bounds"), "");
+  EXPECT_NE(riemann::CheckSettingValue(bounds, { -1, 1, -2, 2, 0, "a" }, "Bounds"), "");
+
+  EXPECT_EQ(riemann::CheckSettingValue(dims, { 1, 512, 33 }, "Dimensions"), "");
+  EXPECT_NE(riemann::CheckSettingValue(dims, { 0, 3, 3 }, "Dimensions"), "");
+  EXPECT_NE(riemann::CheckSettingValue(dims, { 3, 513, 3 }, "Dimensions"), "");
+  EXPECT_NE(riemann::CheckSettingValue(dims, { 3, 3.5, 3 }, "Dimensions"), "");
+  EXPECT_NE(riemann::CheckSettingValue(dims, { 3, 3 }, "Dimensions"), "");
+
+  EXPECT_EQ(riemann::CheckSettingValue(direction, { 0, 0, 0 }, "StartDirection"),
+    "StartDirection is the zero vector: a direction must not be zero");
+  EXPECT_EQ(riemann::CheckSettingValue(direction, { 1e-200, 0, 0 }, "StartDirection"),
+    "StartDirection is too short to normalise (scale it)");
+  EXPECT_EQ(riemann::CheckSettingValue(direction, { 1e-100, 0, 0 }, "StartDirection"), "");
+
+  // Typed text: the box's six numbers, the counts as whole numbers.
+  std::string error;
+  EXPECT_EQ(riemann::ParseSettingText(bounds, "-1,1,-2,2,0,0.5", error),
+    nlohmann::json({ -1.0, 1.0, -2.0, 2.0, 0.0, 0.5 }));
+  EXPECT_EQ(error, "");
+  EXPECT_TRUE(riemann::ParseSettingText(bounds, "-1,1,-2,2", error).is_null());
+  EXPECT_EQ(error, "expected six finite comma-separated numbers X0,X1,Y0,Y1,Z0,Z1");
+  const nlohmann::json counts = riemann::ParseSettingText(dims, "9,8,7", error);
+  EXPECT_EQ(error, "");
+  ASSERT_TRUE(counts.is_array());
+  EXPECT_TRUE(counts[0].is_number_integer());
+  EXPECT_EQ(counts, nlohmann::json({ 9, 8, 7 }));
+  EXPECT_EQ(riemann::SettingText(dims, counts), "9,8,7");
+
+  // Python: one Set call with every number.
+  const std::vector<std::string> lines = riemann::SettingPythonLines(
+    Grid, "f", { { "Bounds", { -1, 1, -2, 2, 0, 0.5 } }, { "Dimensions", { 9, 8, 7 } } });
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "f.SetBounds(-1, 1, -2, 2, 0, 0.5)");
+  EXPECT_EQ(lines[1], "f.SetDimensions(9, 8, 7)");
+  EXPECT_STREQ(direction.ProjectAliases, "ConeAxis");
+}
