@@ -51,19 +51,10 @@ CLI::Validator DeclaredCheck(const SettingDeclaration& setting)
       {
         return std::string();
       }
-      if (setting.Type == SettingDeclaration::Direction)
+      // A direction or a box says why, naming the text: "\"0,0,0\" is the zero vector: ...".
+      if (setting.Type == SettingDeclaration::Direction || setting.Type == SettingDeclaration::Bounds)
       {
-        const double v[3] = { value[0].get<double>(), value[1].get<double>(), value[2].get<double>() };
-        return "\"" + text + "\" " + DirectionProblem(v);
-      }
-      if (setting.Type == SettingDeclaration::Bounds)
-      {
-        double b[6];
-        for (int i = 0; i < 6; ++i)
-        {
-          b[i] = value[i].get<double>();
-        }
-        return "\"" + text + "\": " + BoundsProblem(b);
+        return CheckSettingValue(setting, value, "\"" + text + "\"");
       }
       return "expected " + DescribeSettingRange(setting) + ", got \"" + text + "\"";
     },
