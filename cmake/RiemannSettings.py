@@ -36,7 +36,7 @@ KINDS = {
     "bounds": "Bounds",
     "dimensions": "Dimensions",
 }
-KEYS = {"like", "name", "type", "default", "minimum", "maximum", "minimum_exclusive",
+KEYS = {"like", "name", "type", "default", "minimum", "maximum", "minimum_exclusive", "maximum_exclusive",
         "choices", "unit", "label", "help", "aliases", "commands"}
 TOP_KEYS = {"class", "label", "help", "paraview_group", "settings", "presets", "abstract"}
 
@@ -93,12 +93,18 @@ def read_declaration(path):
     return doc
 
 
+def within(s, x):
+    """Whether the number x is in the declared range (either end may be exclusive)."""
+    lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
+    return (x > lo if s.get("minimum_exclusive") else x >= lo) and \
+        (x < hi if s.get("maximum_exclusive") else x <= hi)
+
+
 def valid_value(s, value):
     """Whether `value` is one setting `s` may hold (a preset's)."""
     kind = s["type"]
     number = lambda x: isinstance(x, (int, float)) and not isinstance(x, bool)
-    lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
-    in_range = lambda x: number(x) and (x > lo if s.get("minimum_exclusive") else x >= lo) and x <= hi
+    in_range = lambda x: number(x) and within(s, x)
     if kind == "choice":
         return value in s["choices"]
     if kind == "boolean":
@@ -163,10 +169,8 @@ def check_declaration(doc):
                 # The VTK property and ParaView's IntVectorProperty hold an int.
                 check(at, "minimum" in s and "maximum" in s and -2**31 <= s["minimum"] and s["maximum"] < 2**31,
                       "an integer needs a minimum and a maximum within an int's range")
-        lo, hi = s.get("minimum", -1e300), s.get("maximum", 1e300)
         if kind in ("integer", "number"):
-            ok = (d > lo if s.get("minimum_exclusive") else d >= lo) and d <= hi
-            check(at, ok, f"the default {d} is outside the declared range")
+            check(at, within(s, d), f"the default {d} is outside the declared range")
         aliases = s.get("aliases", {})
         for surface in aliases:
             check(at, surface in ("cli", "scene", "choices", "project"), f"\"aliases\": unknown surface \"{surface}\"")
@@ -227,6 +231,7 @@ def setting_row(s):
         cxx_string(s.get("aliases", {}).get("scene", "")),
         cxx_string(",".join(f"{old}={new}" for old, new in s.get("aliases", {}).get("choices", {}).items())),
         cxx_string(",".join(s.get("aliases", {}).get("project", []))),
+        "true" if s.get("maximum_exclusive") else "false",
     ]
     return "  { " + ", ".join(fields) + " },"
 

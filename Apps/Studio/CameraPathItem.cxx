@@ -4,8 +4,10 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredProperties.h"
+#include "SettingValues.h"
+#include "vtkRiemannCameraPathSettingAccess.h"
 
-#include "PictureSchema.h"
 #include "vtkRiemannCameraPath.h"
 #include "vtkRiemannMetric.h"
 
@@ -28,19 +30,21 @@ namespace studio
 {
 namespace
 {
-nlohmann::json SchemaVector(PictureSettingId id)
+namespace cameraPath = riemann::declared::vtkRiemannCameraPath;
+
+/// A new item: the declared flight (from the inside view's default camera)
+/// and no key positions yet.
+nlohmann::json CameraPathDefaults()
 {
-  const std::array<double, 3>& v = PictureSettingOf(id).Default;
-  return { v[0], v[1], v[2] };
+  vtkNew<vtkRiemannCameraPath> filter;
+  nlohmann::json values = DeclaredDefaults(riemann::settings::SettingValues(filter));
+  values["KeyPositions"] = nlohmann::json::array();
+  return values;
 }
 }
 
 CameraPathItem::CameraPathItem(const QString& name)
-  : PipelineItem(name,
-      { { "PathType", "geodesic" }, { "Position", SchemaVector(PictureSettingId::Position) },
-        { "LookAt", SchemaVector(PictureSettingId::LookAt) },
-        { "ViewUp", SchemaVector(PictureSettingId::ViewUp) }, { "Length", 3.0 },
-        { "KeyPositions", nlohmann::json::array() }, { "NumberOfFrames", 60 } })
+  : PipelineItem(name, CameraPathDefaults())
 {
   this->Tubes->SetNumberOfSides(8);
   vtkNew<vtkPolyDataMapper> mapper;
@@ -66,56 +70,18 @@ CameraPathItem::CameraPathItem(const QString& name)
 
 std::vector<PropertySpec> CameraPathItem::Properties() const
 {
-  PropertySpec type;
-  type.Key = "PathType";
-  type.Label = "Path";
-  type.Type = PropertySpec::Choice;
-  type.Choices = QStringList{ "geodesic", "spline" };
-  type.Help = "geodesic: fly straight ahead from Position towards Looks at; spline: through the "
-              "key positions (Ctrl+click in the outside view adds one)";
-
-  PropertySpec position;
-  position.Key = "Position";
-  position.Label = "Position";
-  position.Type = PropertySpec::Vector3;
-  position.Help = "Where a geodesic flight starts";
-
-  PropertySpec lookAt;
-  lookAt.Key = "LookAt";
-  lookAt.Label = "Looks at";
-  lookAt.Type = PropertySpec::Vector3;
-  lookAt.Help = "The direction a geodesic flight takes";
-
-  PropertySpec up;
-  up.Key = "ViewUp";
-  up.Label = "View up";
-  up.Type = PropertySpec::Vector3;
-  up.NonZero = true;
-  up.Help = "Up at the first frame; then carried along the path by the metric";
-
-  PropertySpec length;
-  length.Key = "Length";
-  length.Label = "Length";
-  length.Minimum = 0.0;
-  length.MinimumExclusive = true;
-  length.Maximum = 1e6;
-  length.Help = "The g-length a geodesic flight covers";
-
+  // The key positions are the spline's input points, not a property of the
+  // filter (SetKeyPositions takes vtkPoints): the item's own field.
   PropertySpec keys;
   keys.Key = "KeyPositions";
   keys.Label = "Keys";
   keys.Type = PropertySpec::PointList;
   keys.Help = "A spline flight's key positions, in order (Ctrl+click in the outside view adds one)";
 
-  PropertySpec frames;
-  frames.Key = "NumberOfFrames";
-  frames.Label = "Frames";
-  frames.Type = PropertySpec::Integer;
-  frames.Minimum = 2;
-  frames.Maximum = 100000;
-  frames.Help = "Frames of the film (Export Animation uses the count it is given)";
-
-  std::vector<PropertySpec> specs{ type, position, lookAt, up, length, keys, frames };
+  std::vector<PropertySpec> specs = DeclaredPropertySpecs(cameraPath::Settings);
+  const auto afterLength = std::find_if(specs.begin(), specs.end(),
+    [](const PropertySpec& spec) { return spec.Key == "Length"; });
+  specs.insert(afterLength == specs.end() ? specs.end() : afterLength + 1, keys);
   for (const PropertySpec& display : this->DisplayProperties())
   {
     specs.push_back(display);
@@ -135,23 +101,13 @@ vtkSmartPointer<vtkAlgorithm> CameraPathItem::MakeJob(const JobInputs& inputs) c
 
 void CameraPathItem::Configure(vtkRiemannCameraPath* path) const
 {
-  double v[3];
-  path->SetPathType(this->Text("PathType") == "spline" ? vtkRiemannCameraPath::SPLINE
-                                                       : vtkRiemannCameraPath::GEODESIC);
-  this->Vector("Position", v, 3);
-  path->SetPosition(v);
-  this->Vector("LookAt", v, 3);
-  path->SetLookAt(v);
-  this->Vector("ViewUp", v, 3);
-  path->SetViewUp(v);
-  path->SetLength(this->Number("Length"));
+  riemann::settings::ApplySettings(path, this->Settings());
   vtkNew<vtkPoints> keys;
   for (const nlohmann::json& key : this->Settings().at("KeyPositions"))
   {
     keys->InsertNextPoint(key[0].get<double>(), key[1].get<double>(), key[2].get<double>());
   }
   path->SetKeyPositions(keys);
-  path->SetNumberOfFrames(this->Integer("NumberOfFrames"));
 }
 
 void CameraPathItem::UpdateDisplay()
@@ -183,13 +139,11 @@ std::vector<std::string> CameraPathItem::PythonLines(const std::string& var) con
   std::vector<std::string> lines{
     var + " = riemann.vtkRiemannCameraPath()",
     var + ".SetMetric(metric)",
-    var + ".SetPathTypeTo" + (this->Text("PathType") == "spline" ? "Spline()" : "Geodesic()"),
-    var + ".SetPosition" + PythonTuple(settings.at("Position")),
-    var + ".SetLookAt" + PythonTuple(settings.at("LookAt")),
-    var + ".SetViewUp" + PythonTuple(settings.at("ViewUp")),
-    var + ".SetLength(" + PythonNumber(this->Number("Length")) + ")",
-    var + ".SetNumberOfFrames(" + std::to_string(this->Integer("NumberOfFrames")) + ")",
   };
+  for (const std::string& line : riemann::SettingPythonLines(cameraPath::Settings, var, settings))
+  {
+    lines.push_back(line);
+  }
   if (!settings.at("KeyPositions").empty())
   {
     lines.push_back(var + "_keys = vtkPoints()");

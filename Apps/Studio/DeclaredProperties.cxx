@@ -20,6 +20,7 @@ PropertySpec DeclaredPropertySpec(const riemann::SettingDeclaration& setting)
   spec.Minimum = setting.Minimum;
   spec.MinimumExclusive = setting.MinimumExclusive;
   spec.Maximum = setting.Maximum;
+  spec.MaximumExclusive = setting.MaximumExclusive;
   std::string help = setting.Help;
   if (setting.Type != riemann::SettingDeclaration::Boolean)
   {

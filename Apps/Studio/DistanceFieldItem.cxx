@@ -1,11 +1,13 @@
 // The distance from a seed (vtkRiemannDistanceField), shown as a slice
 // coloured by distance, its level sets (the wavefronts) and the cut locus
-// (vtkRiemannCutLocus, computed from the result for the display).
+// (vtkRiemannCutLocus, computed from the result for the display, with its
+// declared settings as the item's display settings).
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
+#include "vtkRiemannCutLocusSettingAccess.h"
 #include "vtkRiemannDistanceFieldSettingAccess.h"
 
 #include "vtkRiemannCutLocus.h"
@@ -31,12 +33,16 @@ namespace studio
 namespace
 {
 namespace distance = riemann::declared::vtkRiemannDistanceField;
+namespace cutlocus = riemann::declared::vtkRiemannCutLocus;
 
-/// A new item: the declared grid and seed radius, one seed left of the middle.
+/// A new item: the declared grid, seed radius and cut locus settings, one
+/// seed left of the middle.
 nlohmann::json DistanceFieldDefaults()
 {
   vtkNew<vtkRiemannDistanceField> filter;
+  vtkNew<vtkRiemannCutLocus> cut;
   nlohmann::json values = DeclaredDefaults(riemann::settings::SettingValues(filter));
+  values.update(DeclaredDefaults(riemann::settings::SettingValues(cut)));
   values.update({ { "Seed", { -1.5, 0.0, 0.0 } }, { "SliceNormal", "z" }, { "SliceOffset", 0.0 },
     { "NumberOfWavefronts", 20 }, { "ShowCutLocus", true }, { "ColorArray", "Distance" } });
   return values;
@@ -100,6 +106,12 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
   }
   specs.push_back(fronts);
   specs.push_back(cut);
+  // The cut locus is computed from the shown field: its settings only redraw.
+  for (PropertySpec spec : DeclaredPropertySpecs(cutlocus::Settings))
+  {
+    spec.Display = true;
+    specs.push_back(spec);
+  }
   for (const PropertySpec& spec : this->DisplayProperties())
   {
     specs.push_back(spec);
@@ -165,6 +177,7 @@ void DistanceFieldItem::UpdateDisplay()
 
   // The cut locus, in 3D.
   vtkNew<vtkRiemannCutLocus> cut;
+  riemann::settings::ApplySettings(cut, this->Settings());
   cut->SetInputData(image);
   cut->Update();
   vtkPolyDataMapper::SafeDownCast(this->CutLocus->GetMapper())->SetInputData(cut->GetOutput());
@@ -183,6 +196,20 @@ std::vector<std::string> DistanceFieldItem::PythonLines(const std::string& var) 
     lines.push_back(line);
   }
   lines.push_back(var + ".AddSeed" + PythonTuple(this->Settings().at("Seed")));
+  if (this->Settings().at("ShowCutLocus").get<bool>())
+  {
+    // The cut locus as the view draws it, kept as an item of its own.
+    const std::string cut = var + "_cut_locus";
+    lines.push_back(cut + " = riemann.vtkRiemannCutLocus()");
+    lines.push_back(cut + ".SetInputConnection(" + var + ".GetOutputPort())");
+    for (const std::string& line : riemann::SettingPythonLines(cutlocus::Settings, cut, this->Settings()))
+    {
+      lines.push_back(line);
+    }
+    lines.push_back(cut + ".Update()");
+    lines.push_back(
+      "items[" + nlohmann::json(this->Name().toStdString() + " cut locus").dump() + "] = " + cut);
+  }
   return lines;
 }
 

@@ -47,6 +47,7 @@ PropertySpec SpecOf(const PictureSetting& setting)
       spec.Minimum = setting.Range.Minimum;
       spec.MinimumExclusive = setting.Range.MinimumExclusive;
       spec.Maximum = setting.Range.Maximum;
+      spec.MaximumExclusive = setting.Range.MaximumExclusive;
       break;
   }
   return spec;

@@ -49,12 +49,13 @@ QString RangeText(const PropertySpec& spec)
   }
   if (spec.Minimum <= -1e299)
   {
-    return QStringLiteral("<= %1").arg(spec.Maximum);
+    return (spec.MaximumExclusive ? QStringLiteral("< %1") : QStringLiteral("<= %1")).arg(spec.Maximum);
   }
-  return QStringLiteral("in %1%2, %3]")
+  return QStringLiteral("in %1%2, %3%4")
     .arg(spec.MinimumExclusive ? "(" : "[")
     .arg(spec.Minimum)
-    .arg(spec.Maximum);
+    .arg(spec.Maximum)
+    .arg(spec.MaximumExclusive ? ")" : "]");
 }
 
 QString CheckNumber(const PropertySpec& spec, const nlohmann::json& value, bool whole)
@@ -69,7 +70,8 @@ QString CheckNumber(const PropertySpec& spec, const nlohmann::json& value, bool 
     return QStringLiteral("expected a whole number");
   }
   const bool low = spec.MinimumExclusive ? v <= spec.Minimum : v < spec.Minimum;
-  if (low || v > spec.Maximum)
+  const bool high = spec.MaximumExclusive ? v >= spec.Maximum : v > spec.Maximum;
+  if (low || high)
   {
     return QStringLiteral("must be %1").arg(RangeText(spec));
   }

@@ -70,6 +70,8 @@ struct PropertySpec
   double Maximum = 1e300;
   /// A Number must be strictly greater than Minimum (a step, a tolerance).
   bool MinimumExclusive = false;
+  /// A Number must be strictly less than Maximum (an angle below 180 degrees).
+  bool MaximumExclusive = false;
   /// A Vector3 may not be (0, 0, 0) (a direction).
   bool NonZero = false;
   QStringList Choices;

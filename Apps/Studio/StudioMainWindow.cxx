@@ -323,9 +323,19 @@ void StudioMainWindow::BuildStatusBar()
   });
 }
 
+// The menus and the pipeline toolbar, menu by menu (each a named step).
 void StudioMainWindow::BuildMenus()
 {
-  // File
+  this->BuildFileMenu();
+  this->BuildEditMenu();
+  QToolBar* tools = this->BuildPipelineMenu();
+  this->BuildViewMenu(tools);
+  AddHelpMenu(this, DataDirectory());
+}
+
+// File: open, recent files, save, examples, export, quit.
+void StudioMainWindow::BuildFileMenu()
+{
   QMenu* file = this->menuBar()->addMenu("&File");
   file->addAction(this->style()->standardIcon(QStyle::SP_DialogOpenButton), "&Open...", this,
     [this]() {
@@ -339,6 +349,7 @@ void StudioMainWindow::BuildMenus()
         this->OpenFile(path);
       }
     }, QKeySequence::Open);
+  this->BuildRecentFilesMenu(file);
   // Save and say so in the status bar (nothing when the dialog was cancelled).
   const auto saveProjectTo = [this](const QString& path) {
     if (!path.isEmpty())
@@ -347,28 +358,6 @@ void StudioMainWindow::BuildMenus()
       this->ShowMessage(error.isEmpty() ? "Project saved to " + path : error, !error.isEmpty());
     }
   };
-  QMenu* recent = file->addMenu("Open &Recent");
-  recent->setObjectName("RecentFilesMenu");
-  // Filled when it opens: the list lives in the settings, shared by windows.
-  QObject::connect(recent, &QMenu::aboutToShow, this, [this, recent]() {
-    recent->clear();
-    const QStringList paths = ProjectSession::RecentFiles();
-    for (int i = 0; i < paths.size(); ++i)
-    {
-      const QString path = paths[i];
-      recent->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this,
-        [this, path]() {
-          if (this->MaySetDocumentAside())
-          {
-            this->OpenFile(path);
-          }
-        })->setToolTip(path);
-    }
-    if (paths.isEmpty())
-    {
-      recent->addAction("(none)")->setEnabled(false);
-    }
-  });
   file->addAction("&Save Project", this, [this, saveProjectTo]() {
     saveProjectTo(this->Project.Path().isEmpty()
       ? this->AskSavePath("Save Project", "Riemann Studio project (*.json)", "json")
@@ -392,6 +381,41 @@ void StudioMainWindow::BuildMenus()
       this->ShowMessage(error.isEmpty() ? "Metric saved to " + path : error, !error.isEmpty());
     }
   });
+  this->BuildExamplesMenu(file);
+  this->BuildExportMenu(file);
+  file->addSeparator();
+  file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+}
+
+// Open Recent: filled when it opens (the list lives in the settings, shared by windows).
+void StudioMainWindow::BuildRecentFilesMenu(QMenu* file)
+{
+  QMenu* recent = file->addMenu("Open &Recent");
+  recent->setObjectName("RecentFilesMenu");
+  QObject::connect(recent, &QMenu::aboutToShow, this, [this, recent]() {
+    recent->clear();
+    const QStringList paths = ProjectSession::RecentFiles();
+    for (int i = 0; i < paths.size(); ++i)
+    {
+      const QString path = paths[i];
+      recent->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this,
+        [this, path]() {
+          if (this->MaySetDocumentAside())
+          {
+            this->OpenFile(path);
+          }
+        })->setToolTip(path);
+    }
+    if (paths.isEmpty())
+    {
+      recent->addAction("(none)")->setEnabled(false);
+    }
+  });
+}
+
+// Examples: the shipped projects, metrics and scenes.
+void StudioMainWindow::BuildExamplesMenu(QMenu* file)
+{
   QMenu* examples = file->addMenu("&Examples");
   examples->setObjectName("ExamplesMenu");
   for (const QString& folder : { QStringLiteral("studio"), QStringLiteral("metrics"), QStringLiteral("scenes") })
@@ -409,6 +433,11 @@ void StudioMainWindow::BuildMenus()
       });
     }
   }
+}
+
+// Export: the selected item's data, pictures and films, the Python script.
+void StudioMainWindow::BuildExportMenu(QMenu* file)
+{
   QMenu* exports = file->addMenu("E&xport");
   exports->addAction("Selected Item's &Data...", this, [this]() {
     PipelineItem* item = this->BrowserWidget->SelectedItem();
@@ -450,9 +479,10 @@ void StudioMainWindow::BuildMenus()
     }
   });
   exports->addAction(this->TimeWidget->ExportAction());
-  file->addSeparator();
-  file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+}
 
+void StudioMainWindow::BuildEditMenu()
+{
   // Edit: undo and redo, named by the change ("Undo Add Geodesics").
   QMenu* edit = this->menuBar()->addMenu("&Edit");
   edit->setObjectName("EditMenu");
@@ -470,7 +500,10 @@ void StudioMainWindow::BuildMenus()
   redo->setShortcuts(redoKeys);
   edit->addAction(undo);
   edit->addAction(redo);
+}
 
+QToolBar* StudioMainWindow::BuildPipelineMenu()
+{
   // Pipeline: add items (menu and toolbar), delete.
   QMenu* pipeline = this->menuBar()->addMenu("&Pipeline");
   QToolBar* tools = this->addToolBar("Pipeline");
@@ -490,7 +523,11 @@ void StudioMainWindow::BuildMenus()
     }
   });
   tools->addSeparator();
+  return tools;
+}
 
+void StudioMainWindow::BuildViewMenu(QToolBar* tools)
+{
   // View: layout, cameras, picking, backend.
   QMenu* view = this->menuBar()->addMenu("&View");
   QAction* sheet = this->SheetDock->toggleViewAction();
@@ -519,8 +556,6 @@ void StudioMainWindow::BuildMenus()
   tools->addAction(resetInside);
   tools->addAction(resetOutside);
   tools->addAction(this->PickAction);
-
-  AddHelpMenu(this, DataDirectory());
 }
 
 void StudioMainWindow::ShowSpreadsheet()

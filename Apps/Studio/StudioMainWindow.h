@@ -23,9 +23,11 @@
 class QAction;
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QProgressBar;
 class QPushButton;
 class QSplitter;
+class QToolBar;
 class vtkPolyData;
 
 namespace riemann
@@ -145,6 +147,13 @@ protected:
 private:
   void BuildDocks();
   void BuildMenus();
+  void BuildFileMenu();
+  void BuildRecentFilesMenu(QMenu* file);
+  void BuildExamplesMenu(QMenu* file);
+  void BuildExportMenu(QMenu* file);
+  void BuildEditMenu();
+  QToolBar* BuildPipelineMenu();
+  void BuildViewMenu(QToolBar* tools);
   void BuildStatusBar();
   void ShowSelection();
   /// The selected spline camera path's keys as handles in the outside view.

@@ -69,7 +69,7 @@ def get(item):
 
 def properties(item):
     """The fields of the item's properties panel, in order: key, label, type,
-    minimum, maximum, minimum_exclusive, non_zero, choices, help, display
+    minimum, maximum, minimum_exclusive, maximum_exclusive, non_zero, choices, help, display
     (as ParaView's ListProperties)."""
     return _call("properties", item)
 

@@ -207,7 +207,8 @@ Json StudioProperties(StudioMainWindow& window, const Json& args)
     }
     fields.push_back({ { "key", spec.Key }, { "label", spec.Label.toStdString() },
       { "type", types[spec.Type] }, { "minimum", spec.Minimum }, { "maximum", spec.Maximum },
-      { "minimum_exclusive", spec.MinimumExclusive }, { "non_zero", spec.NonZero },
+      { "minimum_exclusive", spec.MinimumExclusive },
+      { "maximum_exclusive", spec.MaximumExclusive }, { "non_zero", spec.NonZero },
       { "choices", choices }, { "help", spec.Help.toStdString() }, { "display", spec.Display } });
   }
   return fields;

@@ -20,6 +20,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRiemannCutLocus.h"
+#include "vtkRiemannCutLocusSettingAccess.h"
 #include "vtkRiemannDistanceField.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannMinimalGeodesics.h"
@@ -48,7 +49,8 @@ struct DistanceArguments
   /// The field's grid and seed radius (vtkRiemannDistanceField.settings.json).
   std::unique_ptr<DeclaredOptions> Field;
   std::string CutLocus;
-  double MinimumAngle = 20.0; // vtkRiemannCutLocus's default
+  /// The cut locus's settings (vtkRiemannCutLocus.settings.json).
+  std::unique_ptr<DeclaredOptions> Cut;
   std::vector<std::string> Targets;
   std::string Geodesics;
   std::string Compress = "lz4";
@@ -190,7 +192,7 @@ void RunDistance(const DistanceArguments& args)
   {
     errors->Observe(cut);
     cut->SetMetric(metric);
-    cut->SetMinimumAngle(args.MinimumAngle);
+    riemann::settings::ApplySettings(cut, args.Cut->Given());
     cut->SetInputData(image);
     cut->Update();
     errors->ThrowIfAny("the cut locus failed:");
@@ -280,11 +282,8 @@ void RegisterDistanceCommand(CLI::App& app)
   command->add_option("--cut-locus", args->CutLocus,
     "Also write the cut locus (.vtp squares; cell data Angle, Kind: 1 two minimal geodesics "
     "from one seed meet, 2 the closest seed changes; Distance)");
-  command
-    ->add_option("--min-angle", args->MinimumAngle,
-      "Smallest turn of the arrival direction, in degrees, that the cut locus counts as a jump "
-      "(default 20)")
-    ->check(FiniteNumber(0.0, 180.0, true, true));
+  args->Cut = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannCutLocus::Settings);
   command
     ->add_option("--to", args->Targets,
       "A point X,Y,Z whose minimal geodesic back to its closest seed is wanted (with "

@@ -52,7 +52,7 @@ std::string DescribeSettingRange(const SettingDeclaration& setting)
 {
   const SettingRange range{ setting.Minimum, setting.MinimumExclusive, setting.Maximum,
     setting.Type == SettingDeclaration::Integer || setting.Type == SettingDeclaration::Dimensions,
-    setting.Unit };
+    setting.Unit, setting.MaximumExclusive };
   switch (setting.Type)
   {
     case SettingDeclaration::Boolean:

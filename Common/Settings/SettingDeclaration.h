@@ -42,7 +42,8 @@ struct SettingDeclaration
   /// The default as JSON text ("400", "[0, 0, 1]", "\"rk4\"", "[]").
   const char* Default;
   /// The valid range of a number (each number of a Point, NumberList or Dimensions):
-  /// Minimum < value (MinimumExclusive) or Minimum <= value, value <= Maximum.
+  /// Minimum < value (MinimumExclusive) or Minimum <= value, and value <= Maximum
+  /// (or value < Maximum: MaximumExclusive, the last field).
   double Minimum;
   bool MinimumExclusive;
   double Maximum;
@@ -69,6 +70,8 @@ struct SettingDeclaration
   /// Old property names a project or script may still use for it, comma-separated
   /// ("ConeAxis" for the tracer's StartDirection); "" when there are none.
   const char* ProjectAliases = "";
+  /// value < Maximum rather than value <= Maximum (an angle below 180 degrees).
+  bool MaximumExclusive = false;
 };
 
 /// The declared settings of one VTK class, in the order forms list them.

@@ -16,7 +16,7 @@ SettingRange RangeOf(const SettingDeclaration& setting)
 {
   return { setting.Minimum, setting.MinimumExclusive, setting.Maximum,
     setting.Type == SettingDeclaration::Integer || setting.Type == SettingDeclaration::Dimensions,
-    setting.Unit };
+    setting.Unit, setting.MaximumExclusive };
 }
 
 bool IsFiniteNumbers(const nlohmann::json& value, std::size_t count)

@@ -1,6 +1,7 @@
 #include "vtkRiemannCutLocus.h"
 
 #include "CutLocus.h"
+#include "RiemannCutLocusDeclaration.h"
 #include "EuclideanMetric.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -26,7 +27,11 @@
 vtkStandardNewMacro(vtkRiemannCutLocus);
 vtkCxxSetObjectMacro(vtkRiemannCutLocus, Metric, vtkRiemannMetric);
 
-vtkRiemannCutLocus::vtkRiemannCutLocus() = default;
+vtkRiemannCutLocus::vtkRiemannCutLocus()
+  : MinimumAngle(riemann::declared::vtkRiemannCutLocus::Default::MinimumAngle)
+  , SmoothFactor(riemann::declared::vtkRiemannCutLocus::Default::SmoothFactor)
+{
+}
 
 vtkRiemannCutLocus::~vtkRiemannCutLocus()
 {

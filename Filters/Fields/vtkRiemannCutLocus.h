@@ -46,7 +46,8 @@ public:
 
   ///@{
   /// Turns of the arrival direction below this many degrees are never
-  /// jumps, in (0, 180). Default 20.
+  /// jumps, in (0, 180). Default 20. Range, default and help of both
+  /// settings: vtkRiemannCutLocus.settings.json.
   vtkSetMacro(MinimumAngle, double);
   vtkGetMacro(MinimumAngle, double);
   ///@}
@@ -72,8 +73,8 @@ protected:
     vtkInformationVector* outputVector) override;
 
   vtkRiemannMetric* Metric = nullptr;
-  double MinimumAngle = 20.0;
-  double SmoothFactor = 3.0;
+  double MinimumAngle; // declared (vtkRiemannCutLocus.settings.json)
+  double SmoothFactor;
   std::string LastError;
 
 private:

@@ -1,7 +1,7 @@
 #include "vtkRiemannCameraPath.h"
 
 #include "CameraPath.h"
-#include "PictureSchema.h"
+#include "RiemannCameraPathDeclaration.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -22,11 +22,7 @@ vtkCxxSetObjectMacro(vtkRiemannCameraPath, KeyPositions, vtkPoints);
 
 namespace
 {
-void SchemaDefault(riemann::PictureSettingId id, double value[3])
-{
-  const std::array<double, 3>& v = riemann::PictureSettingOf(id).Default;
-  std::copy(v.begin(), v.end(), value);
-}
+namespace CameraPathDefault = riemann::declared::vtkRiemannCameraPath::Default;
 
 riemann::Vec3 ToVec3(const double v[3])
 {
@@ -44,11 +40,15 @@ vtkNew<vtkDoubleArray> VectorArray(const char* name, vtkIdType frames)
 } // namespace
 
 vtkRiemannCameraPath::vtkRiemannCameraPath()
+  : PathType(CameraPathDefault::PathType)
+  , Length(CameraPathDefault::Length)
+  , NumberOfFrames(static_cast<int>(CameraPathDefault::NumberOfFrames))
+  , Step(CameraPathDefault::Step)
 {
   this->SetNumberOfInputPorts(0);
-  SchemaDefault(riemann::PictureSettingId::Position, this->Position);
-  SchemaDefault(riemann::PictureSettingId::LookAt, this->LookAt);
-  SchemaDefault(riemann::PictureSettingId::ViewUp, this->ViewUp);
+  std::copy(CameraPathDefault::Position, CameraPathDefault::Position + 3, this->Position);
+  std::copy(CameraPathDefault::LookAt, CameraPathDefault::LookAt + 3, this->LookAt);
+  std::copy(CameraPathDefault::ViewUp, CameraPathDefault::ViewUp + 3, this->ViewUp);
 }
 
 vtkRiemannCameraPath::~vtkRiemannCameraPath()

@@ -57,7 +57,8 @@ public:
 
   ///@{
   /// The first frame (GEODESIC): where the observer starts and what it looks
-  /// at; the picture schema's defaults. ViewUp also serves SPLINE.
+  /// at (by default the inside view's own camera: the picture schema's
+  /// defaults, checked equal by TestCameraPath). ViewUp also serves SPLINE.
   vtkSetVector3Macro(Position, double);
   vtkGetVector3Macro(Position, double);
   vtkSetVector3Macro(LookAt, double);
@@ -109,14 +110,16 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  int PathType = GEODESIC;
+  // The declared settings (vtkRiemannCameraPath.settings.json): defaults,
+  // ranges and help are there.
+  int PathType;
   double Position[3];
   double LookAt[3];
   double ViewUp[3];
-  double Length = 5.0;
+  double Length;
   vtkPoints* KeyPositions = nullptr;
-  int NumberOfFrames = 60;
-  double Step = 0.002;
+  int NumberOfFrames;
+  double Step;
 
 private:
   vtkRiemannCameraPath(const vtkRiemannCameraPath&) = delete;

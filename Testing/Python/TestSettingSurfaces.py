@@ -42,6 +42,7 @@ COMMANDS = {
     "vtkRiemannVolumeForm": ["fields"],
     "vtkRiemannMetricTensorField": ["fields"],
     "vtkRiemannDistanceField": ["distance"],
+    "vtkRiemannCutLocus": ["distance"],
     "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
 }
 # The integration settings' defaults are those of the filter a command runs
@@ -68,6 +69,8 @@ LEFT_OUT.update({("connectivity", name): "--tract-counts seeds every labelled vo
 NO_COMMAND = {
     "vtkRiemannDirectionGrid": "built inside expmap and conjugate (their cone settings)",
     "vtkRiemannRayBundle": "render --bundle N draws one with render's picture (its size, projection, scene)",
+    "vtkRiemannCameraPath": "render --camera-path reads a camera path file (CameraPathFile.h, CameraPaths.md) "
+                            "and --frames counts its frames",
 }
 
 failures = []
@@ -94,8 +97,8 @@ def cxx_g(x):
 def shortest(x):
     """A JSON number as SettingText writes it: whole ones as they are, others in the
     shortest text that reads back the same (ShortestNumberText)."""
-    if isinstance(x, int):
-        return str(x)
+    if isinstance(x, int) or (x == int(x) and abs(x) < 1e6):
+        return str(int(x))
     for digits in range(1, 18):
         text = "%.*g" % (digits, x)
         if float(text) == x:
@@ -264,13 +267,17 @@ def check_commands(doc):
                 if bound in s and s["type"] in ("integer", "number", "number_list", "dimensions"):
                     check(cxx_g(s[bound]) in entry, "%s: --help does not give the %s %s: %s"
                           % (where, bound, cxx_g(s[bound]), entry))
-            bad = past_range(s)
-            if bad is not None:
+            # Past the range, and on an end the declaration excludes.
+            bad = [past_range(s)]
+            for bound in ("minimum", "maximum"):
+                if s.get(bound + "_exclusive") and s["type"] == "number":
+                    bad.append(cxx_g(s[bound]))
+            for value in (b for b in bad if b is not None):
                 metric = os.path.join(SOURCE, "Data", "metrics", "euclidean.json")
                 run = subprocess.run([os.path.join(BIN, "riemann"), command, "-m", metric,
-                                      option, bad, "-o", "never.vtp"], capture_output=True, text=True)
+                                      option, value, "-o", "never.vtp"], capture_output=True, text=True)
                 check(run.returncode == 2 and option in run.stderr,
-                      "%s: %s %s: status %d, %s" % (where, option, bad, run.returncode, run.stderr.strip()))
+                      "%s: %s %s: status %d, %s" % (where, option, value, run.returncode, run.stderr.strip()))
 
 
 # --- 4. The generator -----------------------------------------------------------

@@ -3,6 +3,7 @@
 // written here (the generated ones are walked by Python.TestSettingSurfaces).
 #include "SettingDeclaration.h"
 #include "SettingValues.h"
+#include "RiemannCutLocusDeclaration.h"
 #include "RiemannExponentialMapDeclaration.h"
 
 #include <gtest/gtest.h>
@@ -101,6 +102,28 @@ TEST(SettingValues, ChecksFollowTheDeclaredTypeAndRange)
   EXPECT_EQ(riemann::CheckSettingValue(Setting("Radii"), json({ 1, -2 }), "r"),
     "r is -2: expected a number above 0 and at most 1e+09 (arc length)");
   EXPECT_NE(riemann::CheckSettingValue(Setting("ScalarBar"), 1, "b"), "");
+}
+
+TEST(SettingValues, AnEndTheDeclarationExcludesIsRefused)
+{
+  // vtkRiemannCutLocus.settings.json: a turn in (0, 180) degrees.
+  const SettingDeclaration* angle =
+    riemann::declared::vtkRiemannCutLocus::Settings.Find("MinimumAngle");
+  ASSERT_NE(angle, nullptr);
+  EXPECT_TRUE(angle->MinimumExclusive);
+  EXPECT_TRUE(angle->MaximumExclusive);
+  EXPECT_EQ(riemann::DescribeSettingRange(*angle), "a number above 0 and below 180 (degrees)");
+  EXPECT_EQ(riemann::CheckSettingValue(*angle, 179.5, "a"), "");
+  EXPECT_EQ(riemann::CheckSettingValue(*angle, 180, "a"),
+    "a is 180: expected a number above 0 and below 180 (degrees)");
+  EXPECT_NE(riemann::CheckSettingValue(*angle, 0, "a"), "");
+  // The smooth factor's maximum is included.
+  const SettingDeclaration* factor =
+    riemann::declared::vtkRiemannCutLocus::Settings.Find("SmoothFactor");
+  ASSERT_NE(factor, nullptr);
+  EXPECT_FALSE(factor->MaximumExclusive);
+  EXPECT_EQ(riemann::CheckSettingValue(*factor, factor->Maximum, "f"), "");
+  EXPECT_EQ(riemann::declared::vtkRiemannCutLocus::Default::MinimumAngle, 20.0);
 }
 
 TEST(SettingValues, TypedTextReadsBackAsTheValue)
