@@ -207,8 +207,7 @@ std::vector<std::string> DistanceFieldItem::PythonLines(const std::string& var) 
       lines.push_back(line);
     }
     lines.push_back(cut + ".Update()");
-    lines.push_back(
-      "items[" + nlohmann::json(this->Name().toStdString() + " cut locus").dump() + "] = " + cut);
+    lines.push_back("items[" + PythonString(this->Name().toStdString() + " cut locus") + "] = " + cut);
   }
   return lines;
 }

@@ -550,6 +550,11 @@ std::string PythonNumber(double value)
   return riemann::ShortestNumberText(value);
 }
 
+std::string PythonString(const std::string& text)
+{
+  return nlohmann::json(text).dump();
+}
+
 std::string PythonTuple(const nlohmann::json& values)
 {
   std::string text = "(";

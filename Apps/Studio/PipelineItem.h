@@ -266,6 +266,8 @@ private:
 std::string PythonTuple(const nlohmann::json& values);
 /// Round-trip text of a double.
 std::string PythonNumber(double value);
+/// A Python string literal for any text (JSON included): json.dumps-style.
+std::string PythonString(const std::string& text);
 }
 }
 

@@ -22,12 +22,6 @@ namespace studio
 {
 namespace
 {
-/// A Python string literal for any text (JSON included): json.dumps-style.
-std::string PythonString(const std::string& text)
-{
-  return nlohmann::json(text).dump();
-}
-
 /// A Python identifier from an item's name ("Geodesics 1" -> "geodesics_1").
 std::string Identifier(const std::string& name, std::set<std::string>& used)
 {
