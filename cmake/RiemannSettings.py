@@ -178,9 +178,10 @@ def check_declaration(doc):
             check(at, kind == "choice" and new in s.get("choices", []), f"\"aliases\": {old} names no choice")
         check(at, isinstance(aliases.get("cli", []), list), "\"aliases\": \"cli\" must be a list of option names")
         check(at, isinstance(aliases.get("scene", ""), str), "\"aliases\": \"scene\" must be a key")
+        # Old property names ("ConeAxis") or a project format's old keys ("focal-point").
         check(at, isinstance(aliases.get("project", []), list) and
-              all(isinstance(k, str) and k[:1].isupper() for k in aliases.get("project", [])),
-              "\"aliases\": \"project\" must be a list of old property names")
+              all(isinstance(k, str) and k[:1].isalpha() for k in aliases.get("project", [])),
+              "\"aliases\": \"project\" must be a list of old property names or project keys")
     by_name = {s["name"]: s for s in settings}
     for preset, values in doc.get("presets", {}).items():
         at = f"{where}: presets.{preset}"

@@ -1,12 +1,16 @@
 #include "PictureValues.h"
 
-#include "PictureSchema.h"
+#include "DeclaredProperties.h"
+#include "RiemannPictureSettingsDeclaration.h"
+#include "SettingValues.h"
+
+#include "vtkRiemannPictureSettings.h"
+#include "vtkRiemannPictureSettingsSettingAccess.h"
 
 #include "vtkCamera.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 
-#include <cmath>
+#include <sstream>
 
 namespace riemann
 {
@@ -14,149 +18,108 @@ namespace studio
 {
 namespace
 {
-bool IsCameraSetting(const PictureSetting& setting)
+const riemann::SettingTable& PictureTable()
 {
-  return *setting.Core && setting.Type != PictureSetting::Choice;
+  return riemann::declared::vtkRiemannPictureSettings::Settings;
 }
 
-PropertySpec SpecOf(const PictureSetting& setting)
+/// The camera settings of `values` (the others dropped).
+nlohmann::json CameraPart(const nlohmann::json& values)
 {
-  PropertySpec spec;
-  spec.Key = setting.Property;
-  spec.Label = setting.Label;
-  spec.Help =
-    QString::fromStdString(std::string(setting.Help) + ": " + DescribePictureValues(setting));
-  switch (setting.Type)
+  nlohmann::json camera = nlohmann::json::object();
+  for (const auto& entry : values.items())
   {
-    case PictureSetting::Point:
-      spec.Type = PropertySpec::Vector3;
-      break;
-    case PictureSetting::Direction:
-      spec.Type = PropertySpec::Vector3;
-      spec.NonZero = true;
-      break;
-    case PictureSetting::Choice:
-      spec.Type = PropertySpec::Choice;
-      for (const std::string& name : PictureChoices(setting))
-      {
-        spec.Choices << QString::fromStdString(name);
-      }
-      break;
-    default:
-      spec.Type = setting.Type == PictureSetting::Count ? PropertySpec::Integer : PropertySpec::Number;
-      spec.Minimum = setting.Range.Minimum;
-      spec.MinimumExclusive = setting.Range.MinimumExclusive;
-      spec.Maximum = setting.Range.Maximum;
-      spec.MaximumExclusive = setting.Range.MaximumExclusive;
-      break;
+    if (vtkRiemannPictureSettings::IsCameraSetting(entry.key()))
+    {
+      camera[entry.key()] = entry.value();
+    }
   }
-  return spec;
+  return camera;
+}
+
+/// The key `object` gives `setting` under: its name, else a project alias ("" when none).
+std::string KeyOf(const nlohmann::json& object, const riemann::SettingDeclaration& setting)
+{
+  if (object.contains(setting.Name))
+  {
+    return setting.Name;
+  }
+  std::stringstream aliases(setting.ProjectAliases);
+  for (std::string alias; std::getline(aliases, alias, ',');)
+  {
+    if (object.contains(alias))
+    {
+      return alias;
+    }
+  }
+  return std::string();
 }
 } // namespace
 
 std::vector<PropertySpec> PicturePropertySpecs()
 {
-  std::vector<PropertySpec> specs;
-  for (const PictureSetting& setting : PictureSchema)
-  {
-    if (*setting.Label)
-    {
-      specs.push_back(SpecOf(setting));
-    }
-  }
-  return specs;
+  // The projection, size and shader path are the window's, not the form's.
+  return DeclaredPropertySpecs(PictureTable(), { "Projection", "Width", "Height", "GPUPath" });
 }
 
 nlohmann::json CameraValues(vtkCamera* camera)
 {
-  const auto vector = [](const double* v) { return std::vector<double>{ v[0], v[1], v[2] }; };
-  using Id = PictureSettingId;
-  return { { PictureSettingOf(Id::Position).Property, vector(camera->GetPosition()) },
-    { PictureSettingOf(Id::LookAt).Property, vector(camera->GetFocalPoint()) },
-    { PictureSettingOf(Id::ViewUp).Property, vector(camera->GetViewUp()) },
-    { PictureSettingOf(Id::ViewAngle).Property, camera->GetViewAngle() } };
+  vtkNew<vtkRiemannPictureSettings> picture;
+  picture->SetFromCamera(camera);
+  return CameraPart(riemann::settings::SettingValues(picture));
 }
 
 bool IsCameraValue(const std::string& key)
 {
-  for (const PictureSetting& setting : PictureSchema)
-  {
-    if (IsCameraSetting(setting) && key == setting.Property)
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkRiemannPictureSettings::IsCameraSetting(key);
 }
 
-std::string CheckCameraView(
-  const double position[3], const double focalPoint[3], const double viewUp[3])
+std::string CheckCameraValues(const nlohmann::json& values)
 {
-  double forward[3];
-  vtkMath::Subtract(focalPoint, position, forward);
-  const double length = vtkMath::Norm(forward);
-  if (!(length > 0) || !std::isfinite(length))
-  {
-    return "the camera is at the point it looks at";
-  }
-  double cross[3];
-  vtkMath::Cross(forward, viewUp, cross);
-  if (!(vtkMath::Norm(cross) > 1e-9 * length * vtkMath::Norm(viewUp)))
-  {
-    return "the view up is along the view direction";
-  }
-  return std::string();
+  vtkNew<vtkRiemannPictureSettings> picture;
+  riemann::settings::ApplySettings(picture, CameraPart(values));
+  return picture->CheckSettings();
 }
 
 std::string ApplyCameraValues(const nlohmann::json& values, vtkCamera* camera)
 {
-  // Tried on a copy first: a camera that defines no view is never applied.
-  using Id = PictureSettingId;
-  vtkNew<vtkCamera> trial;
-  trial->DeepCopy(camera);
-  const auto vector = [&values](Id id, double out[3])
-  {
-    const char* key = PictureSettingOf(id).Property;
-    if (!values.contains(key))
-    {
-      return false;
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      out[i] = values.at(key).at(i).get<double>();
-    }
-    return true;
-  };
-  double v[3];
-  if (vector(Id::Position, v))
-  {
-    trial->SetPosition(v);
-  }
-  if (vector(Id::LookAt, v))
-  {
-    trial->SetFocalPoint(v);
-  }
-  if (vector(Id::ViewUp, v))
-  {
-    trial->SetViewUp(v);
-  }
-  const char* angle = PictureSettingOf(Id::ViewAngle).Property;
-  if (values.contains(angle))
-  {
-    trial->SetViewAngle(values.at(angle).get<double>());
-  }
-  // The view up as given (vtkCamera orthogonalises the one it keeps).
-  double up[3];
-  if (!vector(Id::ViewUp, up))
-  {
-    camera->GetViewUp(up);
-  }
-  const std::string why = CheckCameraView(trial->GetPosition(), trial->GetFocalPoint(), up);
+  // Tried on the settings first: a camera that defines no view is never
+  // applied. The view up is checked as given (vtkCamera orthogonalises the
+  // one it keeps).
+  vtkNew<vtkRiemannPictureSettings> picture;
+  picture->SetFromCamera(camera);
+  riemann::settings::ApplySettings(picture, CameraPart(values));
+  const std::string why = picture->CheckSettings();
   if (why.empty())
   {
-    camera->DeepCopy(trial);
+    picture->ApplyTo(camera);
   }
   return why;
+}
+
+nlohmann::json ReadPictureValues(const nlohmann::json& object,
+  const std::vector<std::string>& names, const std::string& where, std::string& error)
+{
+  error.clear();
+  if (!object.is_object())
+  {
+    error = where + ": expected an object";
+    return nullptr;
+  }
+  nlohmann::json values = nlohmann::json::object();
+  for (const std::string& name : names)
+  {
+    const riemann::SettingDeclaration& setting = *PictureTable().Find(name);
+    const std::string key = KeyOf(object, setting);
+    const nlohmann::json value = key.empty() ? riemann::DefaultValue(setting) : object.at(key);
+    error = riemann::CheckSettingValue(setting, value, where + "." + (key.empty() ? name : key));
+    if (!error.empty())
+    {
+      return nullptr;
+    }
+    values[name] = value;
+  }
+  return values;
 }
 } // namespace studio
 } // namespace riemann

@@ -1,10 +1,13 @@
 /**
  * @file PictureValues.h
  * @brief The inside view's camera and picture settings as the app shows and
- * stores them, made from the picture schema (PictureSchema.h) as
- * IntegrationValues.h makes the integration's: the form's fields (label,
- * help, range), the observer camera's values keyed by vtkCamera's property
- * names, and a project's camera object keyed by the schema's project keys.
+ * stores them, made from their declaration
+ * (vtkRiemannPictureSettings.settings.json) as IntegrationValues.h makes the
+ * integration's: the form's fields (label, help, range), the observer
+ * camera's values and a project's "observer" and "inside" objects, all keyed
+ * by vtkRiemannPictureSettings's property names (a project of an older
+ * version keyed them "focal-point", "view-angle", "samples": those are the
+ * declared project aliases, still read).
  */
 #ifndef RiemannStudioPictureValues_h
 #define RiemannStudioPictureValues_h
@@ -22,15 +25,15 @@ namespace riemann
 {
 namespace studio
 {
-/// The fields of the inside view's form (the settings the schema gives a
-/// label), keyed by their VTK property, in the schema's order.
+/// The fields of the inside view's form: the observer's camera, the
+/// samples and the renderer (the declared settings the app lets one set
+/// there), in the declaration's order.
 std::vector<PropertySpec> PicturePropertySpecs();
 
-/// The camera's settings keyed by vtkCamera's property (Position,
-/// FocalPoint, ViewUp, ViewAngle).
+/// The camera's settings (Position, LookAt, ViewUp, ViewAngle).
 nlohmann::json CameraValues(vtkCamera* camera);
 
-/// True when `key` is one of the camera's properties.
+/// True when `key` is one of the camera's settings.
 bool IsCameraValue(const std::string& key);
 
 /**
@@ -41,9 +44,18 @@ bool IsCameraValue(const std::string& key);
  */
 std::string ApplyCameraValues(const nlohmann::json& values, vtkCamera* camera);
 
-/// Why a camera of these settings defines no view ("" when it does).
-std::string CheckCameraView(
-  const double position[3], const double focalPoint[3], const double viewUp[3]);
+/**
+ * The picture settings `names` of a project's object (`where`: "observer",
+ * "inside"), each under its name or a declared project alias, those it does
+ * not give at their defaults. Sets `error` to the first bad value
+ * ("observer.view-angle is 180: expected a number above 0 and at most 179
+ * (degrees)") and returns null then.
+ */
+nlohmann::json ReadPictureValues(const nlohmann::json& object,
+  const std::vector<std::string>& names, const std::string& where, std::string& error);
+
+/// Why a camera of these settings (CameraValues' keys) defines no view ("" when it does).
+std::string CheckCameraValues(const nlohmann::json& values);
 } // namespace studio
 } // namespace riemann
 

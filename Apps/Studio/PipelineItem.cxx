@@ -470,7 +470,7 @@ void PipelineItem::ApplyIntegration(vtkRiemannIntegrationSettings* settings) con
 
 nlohmann::json WithIntegrationDefaults(nlohmann::json own, const char* integrator, double length)
 {
-  // The schema's defaults for curves (vtkRiemannIntegrationSettings's), but
+  // The declared defaults for curves (vtkRiemannIntegrationSettings's), but
   // the item's integrator and length.
   vtkNew<vtkRiemannIntegrationSettings> defaults;
   defaults->SetIntegratorTypeFromName(integrator);

@@ -3,7 +3,7 @@
 #include "IntegrationValues.h"
 #include "PictureValues.h"
 
-#include "PictureSchema.h"
+#include "RiemannPictureSettingsDeclaration.h"
 #include "RungeKutta.h"
 
 #include "PipelineItems.h"
@@ -62,60 +62,33 @@ double Number(const Json& value, const std::string& where)
   return value.get<double>();
 }
 
-void Vector3(const Json& value, double out[3], const std::string& where)
+/// The camera settings' names, in the declaration's order.
+std::vector<std::string> CameraSettingNames()
 {
-  if (!value.is_array() || value.size() != 3)
+  std::vector<std::string> names;
+  for (const riemann::SettingDeclaration& setting :
+    riemann::declared::vtkRiemannPictureSettings::Settings)
   {
-    Fail(where, "expected an array of 3 numbers");
+    if (IsCameraValue(setting.Name))
+    {
+      names.push_back(setting.Name);
+    }
   }
-  for (int i = 0; i < 3; ++i)
-  {
-    out[i] = Number(value[i], where + "[" + std::to_string(i) + "]");
-  }
+  return names;
 }
 
-/// A project's camera object: the picture schema's project keys
-/// (PictureSchema.h), the values vtkCamera's.
-const char* CameraKey(riemann::PictureSettingId id)
-{
-  return riemann::PictureSettingOf(id).ProjectKey;
-}
-
-Json CameraToJson(const CameraState& camera)
-{
-  using Id = riemann::PictureSettingId;
-  return { { CameraKey(Id::Position), camera.Position },
-    { CameraKey(Id::LookAt), camera.FocalPoint }, { CameraKey(Id::ViewUp), camera.ViewUp },
-    { CameraKey(Id::ViewAngle), camera.ViewAngle } };
-}
-
-/// A point or direction of a camera object, valid for its setting.
-void CameraVector(const Json& object, riemann::PictureSettingId id, double out[3], const std::string& where)
-{
-  const std::string path = where + "." + CameraKey(id);
-  Vector3(Member(object, CameraKey(id), where), out, path);
-  const riemann::PictureSetting& setting = riemann::PictureSettingOf(id);
-  if (!riemann::CheckPictureVector(setting, out, path).empty())
-  {
-    Fail(path, "expected " + riemann::DescribePictureValues(setting));
-  }
-}
-
+/// A project's camera object ("observer", "layout.outside-camera"): the
+/// picture settings' camera values (PictureValues.h), a view checked whole.
 CameraState ParseCamera(const Json& value, const std::string& where)
 {
-  using Id = riemann::PictureSettingId;
+  std::string error;
   CameraState camera;
-  CameraVector(value, Id::Position, camera.Position, where);
-  CameraVector(value, Id::LookAt, camera.FocalPoint, where);
-  CameraVector(value, Id::ViewUp, camera.ViewUp, where);
-  const riemann::PictureSetting& angle = riemann::PictureSettingOf(Id::ViewAngle);
-  const std::string anglePath = where + "." + angle.ProjectKey;
-  camera.ViewAngle = Number(Member(value, angle.ProjectKey, where), anglePath);
-  if (!riemann::CheckPictureValue(angle, camera.ViewAngle, anglePath).empty())
+  camera.Values = ReadPictureValues(value, CameraSettingNames(), where, error);
+  if (!error.empty())
   {
-    Fail(anglePath, "expected " + riemann::DescribePictureValues(angle));
+    throw ProjectError(error);
   }
-  const std::string why = CheckCameraView(camera.Position, camera.FocalPoint, camera.ViewUp);
+  const std::string why = CheckCameraValues(camera.Values);
   if (!why.empty())
   {
     Fail(where, why);
@@ -208,28 +181,15 @@ void ParseScene(const Json& scene, const std::string& folder, ProjectData& proje
 
 void ParseInside(const Json& inside, ProjectData& project)
 {
-  // The renderer and its samples: the picture schema's keys, defaults and values.
-  const riemann::PictureSetting& backend =
-    riemann::PictureSettingOf(riemann::PictureSettingId::Backend);
-  const std::string backendPath = std::string("inside.") + backend.ProjectKey;
-  project.Backend = inside.contains(backend.ProjectKey)
-    ? String(inside.at(backend.ProjectKey), backendPath)
-    : riemann::PictureDefaultChoice(backend);
-  if (riemann::PictureChoiceIndex(backend, project.Backend) < 0)
+  // The renderer and its samples: declared picture settings (PictureValues.h).
+  std::string error;
+  const Json picture = ReadPictureValues(inside, { "Backend", "SamplesPerPixel" }, "inside", error);
+  if (!error.empty())
   {
-    Fail(backendPath, "expected " + riemann::DescribePictureValues(backend));
+    throw ProjectError(error);
   }
-  const riemann::PictureSetting& samples =
-    riemann::PictureSettingOf(riemann::PictureSettingId::Samples);
-  const std::string samplesPath = std::string("inside.") + samples.ProjectKey;
-  const double count = inside.contains(samples.ProjectKey)
-    ? Number(inside.at(samples.ProjectKey), samplesPath)
-    : samples.Default[0];
-  if (!riemann::CheckPictureValue(samples, count, samplesPath).empty())
-  {
-    Fail(samplesPath, "expected " + riemann::DescribePictureValues(samples));
-  }
-  project.Samples = static_cast<int>(count);
+  project.Backend = picture.at("Backend").get<std::string>();
+  project.Samples = picture.at("SamplesPerPixel").get<int>();
   if (inside.contains("use-scene-settings"))
   {
     if (!inside.at("use-scene-settings").is_boolean())
@@ -240,8 +200,8 @@ void ParseInside(const Json& inside, ProjectData& project)
   }
   if (inside.contains("integration"))
   {
-    // vtkRiemannIntegrationSettings's properties, each in the integration
-    // schema's range (IntegrationValues.h).
+    // vtkRiemannIntegrationSettings's properties, each in its declared
+    // range (IntegrationValues.h).
     const Json& integration = inside.at("integration");
     if (!integration.is_object())
     {
@@ -297,31 +257,18 @@ void ParseItems(const Json& items, ProjectData& project)
 }
 
 CameraState::CameraState()
+  : Values(CameraValues(nullptr))
 {
-  using Id = riemann::PictureSettingId;
-  for (int i = 0; i < 3; ++i)
-  {
-    this->Position[i] = riemann::PictureSettingOf(Id::Position).Default[i];
-    this->FocalPoint[i] = riemann::PictureSettingOf(Id::LookAt).Default[i];
-    this->ViewUp[i] = riemann::PictureSettingOf(Id::ViewUp).Default[i];
-  }
-  this->ViewAngle = riemann::PictureSettingOf(Id::ViewAngle).Default[0];
 }
 
 void CameraState::From(vtkCamera* camera)
 {
-  camera->GetPosition(this->Position);
-  camera->GetFocalPoint(this->FocalPoint);
-  camera->GetViewUp(this->ViewUp);
-  this->ViewAngle = camera->GetViewAngle();
+  this->Values = CameraValues(camera);
 }
 
 void CameraState::To(vtkCamera* camera) const
 {
-  camera->SetPosition(this->Position);
-  camera->SetFocalPoint(this->FocalPoint);
-  camera->SetViewUp(this->ViewUp);
-  camera->SetViewAngle(this->ViewAngle);
+  ApplyCameraValues(this->Values, camera);
 }
 
 ProjectData CaptureProject(const StudioDocument& document)
@@ -381,7 +328,7 @@ nlohmann::json ProjectToJson(const ProjectData& project, const std::string& fold
   Json layout = { { "views", project.Views } };
   if (project.HasOutsideCamera)
   {
-    layout["outside-camera"] = CameraToJson(project.OutsideCamera);
+    layout["outside-camera"] = project.OutsideCamera.Values;
   }
   Json metric = { { "text", project.MetricText }, { "parameter-values", project.ParameterValues },
     { "time", project.Time } };
@@ -392,11 +339,8 @@ nlohmann::json ProjectToJson(const ProjectData& project, const std::string& fold
   }
   return { { "riemann-studio", 1 }, { "metric", metric },
     { "scene", { { "file", relative(project.SceneFile) }, { "text", project.SceneText } } },
-    { "observer", CameraToJson(project.Observer) },
-    { "inside", { { riemann::PictureSettingOf(riemann::PictureSettingId::Backend).ProjectKey,
-                    project.Backend },
-                  { riemann::PictureSettingOf(riemann::PictureSettingId::Samples).ProjectKey,
-                    project.Samples },
+    { "observer", project.Observer.Values },
+    { "inside", { { "Backend", project.Backend }, { "SamplesPerPixel", project.Samples },
                   { "use-scene-settings", project.UseSceneSettings },
                   { "integration", project.Integration } } },
     { "items", items }, { "layout", layout } };

@@ -44,13 +44,12 @@ class StudioDocument;
 
 struct CameraState
 {
-  /// The picture schema's defaults (PictureSchema.h), as a scene's camera.
+  /// The declared defaults (vtkRiemannPictureSettings), as a scene's camera.
   CameraState();
-  double Position[3];
-  double FocalPoint[3];
-  double ViewUp[3];
-  double ViewAngle;
+  /// Position, LookAt, ViewUp, ViewAngle (PictureValues.h: CameraValues).
+  nlohmann::json Values;
   void From(vtkCamera* camera);
+  /// Give `camera` these values (a view checked when they were read).
   void To(vtkCamera* camera) const;
 };
 

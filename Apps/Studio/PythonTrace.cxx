@@ -1,6 +1,10 @@
 #include "PythonTrace.h"
 
 #include "IntegrationValues.h"
+#include "PictureValues.h"
+
+#include "RiemannPictureSettingsDeclaration.h"
+#include "SettingValues.h"
 
 #include "RungeKutta.h"
 
@@ -36,7 +40,7 @@ std::string Identifier(const std::string& name, std::set<std::string>& used)
   }
   std::string unique = id;
   for (int n = 2; used.count(unique) || unique == "metric" || unique == "scene" ||
-       unique == "camera" || unique == "riemann"; ++n)
+       unique == "camera" || unique == "picture" || unique == "riemann"; ++n)
   {
     unique = id + "_" + std::to_string(n);
   }
@@ -115,15 +119,18 @@ void WriteObserver(std::ostream& out, const StudioDocument& document)
 {
   vtkCamera* camera = document.Observer();
   vtkRiemannIntegrationSettings* rays = document.RaySettings();
+  // The observer as its declared settings (vtkRiemannPictureSettings), as
+  // `riemann render` and a scene's camera block name them.
   out << "# The observer (the inside view's camera) and its rays.\n"
-      << "camera = vtkCamera()\n"
-      << "camera.SetPosition" << PythonTuple(nlohmann::json(std::vector<double>(
-           camera->GetPosition(), camera->GetPosition() + 3))) << "\n"
-      << "camera.SetFocalPoint" << PythonTuple(nlohmann::json(std::vector<double>(
-           camera->GetFocalPoint(), camera->GetFocalPoint() + 3))) << "\n"
-      << "camera.SetViewUp" << PythonTuple(nlohmann::json(std::vector<double>(
-           camera->GetViewUp(), camera->GetViewUp() + 3))) << "\n"
-      << "camera.SetViewAngle(" << PythonNumber(camera->GetViewAngle()) << ")\n"
+      << "picture = riemann.vtkRiemannPictureSettings()\n";
+  for (const std::string& line :
+    riemann::SettingPythonLines(riemann::declared::vtkRiemannPictureSettings::Settings, "picture",
+      CameraValues(camera)))
+  {
+    out << line << "\n";
+  }
+  out << "camera = vtkCamera()\n"
+      << "picture.ApplyTo(camera)\n"
       << "width, height = " << document.ViewWidth() << ", " << document.ViewHeight() << "\n"
       << "use_scene_settings = " << (document.UseSceneSettings() ? "True" : "False") << "\n"
       << "ray_settings = riemann.vtkRiemannIntegrationSettings()\n";

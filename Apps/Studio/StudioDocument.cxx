@@ -231,8 +231,8 @@ void StudioDocument::ResetScene()
 
 void StudioDocument::ResetObserver()
 {
-  // Without a camera of its own, the observer's defaults (the picture
-  // schema's, as `riemann render` and a scene's camera block take them).
+  // Without a camera of its own, the observer's defaults (the declared
+  // picture settings', as `riemann render` and a scene's camera block take them).
   if (!this->CurrentScene->ApplyCamera(this->ObserverCamera))
   {
     vtkRiemannScene::ApplyDefaultCamera(this->ObserverCamera);

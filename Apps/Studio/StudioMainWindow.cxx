@@ -12,7 +12,6 @@
 #include "PictureValues.h"
 
 #include "GeodesicTrace.h"
-#include "PictureSchema.h"
 #include "RungeKutta.h"
 
 #include "InsideView.h"
@@ -637,9 +636,9 @@ void StudioMainWindow::ShowSelection()
 
 void StudioMainWindow::ShowInsideViewSettings()
 {
-  // The observer's camera, the samples and the renderer (the picture
-  // schema's fields: PictureValues.h), the choice of the scene's integrator,
-  // then the integration settings of the rays (the integration schema's).
+  // The observer's camera, the samples and the renderer (the declared
+  // picture settings' fields: PictureValues.h), the choice of the scene's integrator,
+  // then the integration settings of the rays (declared, IntegrationValues.h).
   std::vector<PropertySpec> specs = PicturePropertySpecs();
   PropertySpec sceneSettings;
   sceneSettings.Key = "UseSceneSettings";
@@ -651,8 +650,8 @@ void StudioMainWindow::ShowInsideViewSettings()
   {
     specs.push_back(spec);
   }
-  const char* samplesKey = riemann::PictureSettingOf(riemann::PictureSettingId::Samples).Property;
-  const char* backendKey = riemann::PictureSettingOf(riemann::PictureSettingId::Backend).Property;
+  const std::string samplesKey = "SamplesPerPixel";
+  const std::string backendKey = "Backend";
   nlohmann::json values = CameraValues(this->Doc->Observer());
   values[backendKey] = this->InsideWidget->GetBackend() == InsideView::GPU ? "gpu" : "cpu";
   values[samplesKey] = this->InsideWidget->GetSamplesPerPixel();

@@ -5,11 +5,15 @@
 #include "JobRunner.h"
 #include "MetricEditor.h"
 #include "PipelineBrowser.h"
+#include "PictureValues.h"
 #include "PipelineItem.h"
 #include "ProjectFile.h"
 #include "PythonTrace.h"
 #include "StudioDocument.h"
 #include "StudioMainWindow.h"
+
+#include "RiemannPictureSettingsDeclaration.h"
+#include "SettingValues.h"
 
 #include "vtkCamera.h"
 
@@ -312,37 +316,56 @@ Json StudioParameter(StudioMainWindow& window, const Json& args)
   return document->ParameterValue(pointer);
 }
 
+/// observer(position, look_at, view_up): the camera's points and direction,
+/// named as a scene's camera block names them (the declared scene keys).
 Json StudioObserver(StudioMainWindow& window, const Json& args)
 {
   StudioDocument* document = window.Document();
   vtkCamera* observer = document->Observer();
-  const char* keys[3] = { "position", "look_at", "view_up" };
   const Json& given = Argument(args, 0);
-  bool moved = false;
-  for (const char* key : keys)
+  const Json current = CameraValues(observer);
+  Json changes = Json::object();
+  Json result = Json::object();
+  for (const riemann::SettingDeclaration& setting :
+    riemann::declared::vtkRiemannPictureSettings::Settings)
   {
+    if (!IsCameraValue(setting.Name) || !current.at(setting.Name).is_array())
+    {
+      continue; // the view angle is the form's
+    }
+    const char* key = setting.SceneKey;
+    result[key] = current.at(setting.Name);
     if (given.is_object() && given.contains(key) && !given.at(key).is_null())
     {
-      const Json& v = given.at(key);
-      if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      const std::string why = riemann::CheckSettingValue(setting, given.at(key), key);
+      if (!why.empty())
       {
-        Fail(QStringLiteral("observer: %1: expected (x, y, z)").arg(key));
+        Fail(QStringLiteral("observer: %1").arg(QString::fromStdString(why)));
       }
-      const double xyz[3] = { v[0].get<double>(), v[1].get<double>(), v[2].get<double>() };
-      key == keys[0] ? observer->SetPosition(xyz)
-        : key == keys[1] ? observer->SetFocalPoint(xyz)
-                         : observer->SetViewUp(xyz);
-      moved = true;
+      changes[setting.Name] = given.at(key);
     }
   }
-  if (moved)
+  if (changes.empty())
   {
-    document->ObserverChanged();
-    Settled(window);
+    return result;
   }
-  const auto vector = [](const double* v) { return Json::array({ v[0], v[1], v[2] }); };
-  return { { "position", vector(observer->GetPosition()) },
-    { "look_at", vector(observer->GetFocalPoint()) }, { "view_up", vector(observer->GetViewUp()) } };
+  const std::string refused = ApplyCameraValues(changes, observer);
+  if (!refused.empty())
+  {
+    Fail(QStringLiteral("observer: %1").arg(QString::fromStdString(refused)));
+  }
+  document->ObserverChanged();
+  Settled(window);
+  const Json moved = CameraValues(observer);
+  for (const riemann::SettingDeclaration& setting :
+    riemann::declared::vtkRiemannPictureSettings::Settings)
+  {
+    if (result.contains(setting.SceneKey))
+    {
+      result[setting.SceneKey] = moved.at(setting.Name);
+    }
+  }
+  return result;
 }
 
 /// undo() and redo(): the step's name, or null when there is none.

@@ -11,13 +11,14 @@
 #include "Commands.h"
 #include "Distributed.h"
 #include "FilmFrames.h"
-#include "PictureOptions.h"
 #include "ProgressBar.h"
 
 #include "RiemannCPUImage.h"
 #include "RiemannFilmWriter.h"
 #include "RiemannImageIO.h"
+#include "RiemannPictureSettingsDeclaration.h"
 #include "RiemannScene.h"
+#include "SettingValues.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -56,24 +57,23 @@ namespace
 constexpr const char* DefaultMetric =
   R"({"type": "graph", "gaussians": [{"amplitude": 1.0, "center": [0, 0, 0], "sigma": [0.5, 0.5, 0.5]}]})";
 
-int PictureDefaultCount(riemann::PictureSettingId id)
-{
-  return static_cast<int>(riemann::PictureSettingOf(id).Default[0]);
-}
-
 struct RenderArguments
 {
   std::string Metric;
   std::string Scene;
-  // The picture's settings start at the picture schema's defaults; the
-  // camera's are empty (not given: the scene's camera, else the schema's).
-  int Width = PictureDefaultCount(riemann::PictureSettingId::Width);
-  int Height = PictureDefaultCount(riemann::PictureSettingId::Height);
-  std::string Backend =
-    riemann::PictureDefaultChoice(riemann::PictureSettingOf(riemann::PictureSettingId::Backend));
+  /// The picture's options (size, samples, renderer) and the camera's, made
+  /// from vtkRiemannPictureSettings's declaration; TakePictureOptions reads
+  /// them into the fields below once the command line is parsed.
+  std::unique_ptr<DeclaredOptions> Picture;
+  std::unique_ptr<DeclaredOptions> Camera;
+  int Width = 0;
+  int Height = 0;
+  int Samples = 0;
+  std::string Backend;
   /// vtkRiemannRayTracePass::GPUPath by name: auto, fragment or compute.
-  std::string GpuPath =
-    riemann::PictureDefaultChoice(riemann::PictureSettingOf(riemann::PictureSettingId::GPUPath));
+  std::string GpuPath;
+  // The camera's options as typed ("" when not given: the scene's camera,
+  // else the declared defaults).
   std::string CameraPosition;
   std::string LookAt;
   std::string ViewUp;
@@ -86,7 +86,6 @@ struct RenderArguments
   int Frames = 1;
   /// A camera path file (CameraPathFile.h): the observer's flight over the frames.
   std::string CameraPath;
-  int Samples = PictureDefaultCount(riemann::PictureSettingId::Samples);
   bool HitError = false;
   std::string HitErrorImage;
   bool Progress = false;
@@ -96,6 +95,40 @@ struct RenderArguments
   double Threshold = 1.0;
   std::string Output;
 };
+
+/// The declared picture settings of the camera; the others are the picture's own.
+constexpr const char* CameraSettingNames = "Position,LookAt,ViewUp,ViewAngle,Projection";
+constexpr const char* PictureOutputSettingNames = "Width,Height,SamplesPerPixel,Backend,GPUPath";
+
+/// The option of picture setting `name` ("--position"), for messages.
+std::string PictureOption(const char* name)
+{
+  return DeclaredOptions::OptionOf(riemann::declared::vtkRiemannPictureSettings::Settings, name);
+}
+
+/// The parsed picture and camera options into the fields RunRender reads.
+void TakePictureOptions(RenderArguments& args)
+{
+  const DeclaredOptions& picture = *args.Picture;
+  args.Width = static_cast<int>(picture.Integer("Width"));
+  args.Height = static_cast<int>(picture.Integer("Height"));
+  args.Samples = static_cast<int>(picture.Integer("SamplesPerPixel"));
+  args.Backend = picture.Text("Backend");
+  args.GpuPath = picture.Text("GPUPath");
+  // The camera's: only what was given (the scene's camera fills the rest).
+  const nlohmann::json given = args.Camera->Given();
+  const auto text = [&given](const char* name)
+  {
+    const riemann::SettingDeclaration& setting =
+      *riemann::declared::vtkRiemannPictureSettings::Settings.Find(name);
+    return given.contains(name) ? riemann::SettingText(setting, given.at(name)) : std::string();
+  };
+  args.CameraPosition = text("Position");
+  args.LookAt = text("LookAt");
+  args.ViewUp = text("ViewUp");
+  args.Fov = given.contains("ViewAngle") ? given.at("ViewAngle").get<double>() : 0.0;
+  args.Projection = text("Projection");
+}
 
 /// The window's colour buffer as an image (row 0 at the top).
 Image Grab(vtkRenderWindow* window)
@@ -220,9 +253,9 @@ void CheckCamera(vtkCamera* camera, const RenderArguments& args)
   // The options as typed; the scene's values as the camera holds them.
   const std::string from = args.CameraPosition.empty()
     ? "the scene's camera position " + text(position)
-    : "--camera-position " + args.CameraPosition;
+    : PictureOption("Position") + " " + args.CameraPosition;
   const std::string to =
-    args.LookAt.empty() ? "the scene's look-at point " + text(focal) : "--look-at " + args.LookAt;
+    args.LookAt.empty() ? "the scene's look-at point " + text(focal) : PictureOption("LookAt") + " " + args.LookAt;
   const double view[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
   const double length = std::sqrt(view[0] * view[0] + view[1] * view[1] + view[2] * view[2]);
   if (!(length > 0))
@@ -243,9 +276,9 @@ void CheckCamera(vtkCamera* camera, const RenderArguments& args)
   if (!(sine > 1e-9))
   {
     throw Failure(
-      (args.ViewUp.empty() ? "the scene's view-up " + text(up) : "--view-up " + args.ViewUp) +
+      (args.ViewUp.empty() ? "the scene's view-up " + text(up) : PictureOption("ViewUp") + " " + args.ViewUp) +
         " is parallel to the view direction (from " + from + " to " + to +
-        "), so the picture has no up: give a --view-up across the view",
+        "), so the picture has no up: give a " + PictureOption("ViewUp") + " across the view",
       2);
   }
 }
@@ -255,17 +288,17 @@ void ApplyCameraOptions(vtkCamera* camera, const RenderArguments& args)
   double v[3];
   if (!args.CameraPosition.empty())
   {
-    ParseVector3(args.CameraPosition, "--camera-position", v);
+    ParseVector3(args.CameraPosition, PictureOption("Position"), v);
     camera->SetPosition(v);
   }
   if (!args.LookAt.empty())
   {
-    ParseVector3(args.LookAt, "--look-at", v);
+    ParseVector3(args.LookAt, PictureOption("LookAt"), v);
     camera->SetFocalPoint(v);
   }
   if (!args.ViewUp.empty())
   {
-    ParseVector3(args.ViewUp, "--view-up", v);
+    ParseVector3(args.ViewUp, PictureOption("ViewUp"), v);
     camera->SetViewUp(v);
   }
   if (args.Fov > 0)
@@ -297,11 +330,11 @@ void CheckRenderOptions(const RenderArguments& args)
   }
   if (args.Backend != "cpu" && (args.Samples > 1 || args.HitError || !args.HitErrorImage.empty()))
   {
-    throw Failure("--samples, --hit-error and --hit-error-image need --backend cpu", 2);
+    throw Failure(PictureOption("SamplesPerPixel") + ", --hit-error and --hit-error-image need --backend cpu", 2);
   }
   if (args.Backend == "cpu" && args.GpuPath != "auto")
   {
-    throw Failure("--gpu-path " + args.GpuPath + " chooses the GPU pass's shader path: it needs "
+    throw Failure(PictureOption("GPUPath") + " " + args.GpuPath + " chooses the GPU pass's shader path: it needs "
                   "--backend gpu",
       2);
   }
@@ -358,18 +391,17 @@ vtkSmartPointer<vtkRiemannMetric> LoadSceneAndMetric(
 }
 
 /// The projection: --projection (or --equirectangular), else the scene's
-/// camera's, else the picture schema's.
+/// camera's, else the declared default.
 riemann::Projection ChosenProjection(const RenderArguments& args, const riemann::Scene& scene)
 {
-  using riemann::PictureSettingId;
-  const riemann::PictureSetting& setting = riemann::PictureSettingOf(PictureSettingId::Projection);
   if (args.Equirectangular)
   {
     return riemann::Projection::Equirectangular;
   }
   if (!args.Projection.empty())
   {
-    return static_cast<riemann::Projection>(riemann::PictureChoiceIndex(setting, args.Projection));
+    return static_cast<riemann::Projection>(riemann::ChoiceIndex(
+      *riemann::declared::vtkRiemannPictureSettings::Settings.Find("Projection"), args.Projection));
   }
   return scene.HasCamera ? scene.Camera.Mode : riemann::CameraSettings().Mode;
 }
@@ -643,7 +675,7 @@ void RunRender(const RenderArguments& args)
   const vtkSmartPointer<vtkRiemannMetric> metric = LoadSceneAndMetric(args, scene);
   RaySetup rays;
   SetUpRays(args, scene->GetScene(), rays);
-  // The scene's camera, else the picture schema's (not vtkCamera's own
+  // The scene's camera, else the declared picture settings' (not vtkCamera's own
   // defaults), then what the options change.
   vtkNew<vtkCamera> camera;
   if (!scene->ApplyCamera(camera))
@@ -713,21 +745,10 @@ void RegisterRenderCommand(CLI::App& app)
     ->add_option(
       "--scene,-s", args->Scene, "Scene (JSON file, see Data/scenes); default: the paper's grid")
     ->check(CLI::ExistingFile);
-  // The picture's and the camera's options are the picture schema's
-  // (PictureSchema.h), the integration's the integration schema's.
-  PictureOptions picture;
-  picture.Position = &args->CameraPosition;
-  picture.LookAt = &args->LookAt;
-  picture.ViewUp = &args->ViewUp;
-  picture.ViewAngle = &args->Fov;
-  picture.Projection = &args->Projection;
-  picture.Equirectangular = &args->Equirectangular;
-  picture.Width = &args->Width;
-  picture.Height = &args->Height;
-  picture.Samples = &args->Samples;
-  picture.Backend = &args->Backend;
-  picture.GPUPath = &args->GpuPath;
-  AddPictureOutputOptions(command, picture);
+  // The picture's and the camera's options are vtkRiemannPictureSettings's
+  // declared settings, the integration's vtkRiemannIntegrationSettings's.
+  const riemann::SettingTable& picture = riemann::declared::vtkRiemannPictureSettings::Settings;
+  args->Picture = std::make_unique<DeclaredOptions>(command, picture, CameraSettingNames);
   command->add_flag("--hit-error", args->HitError,
     "Diffeomorphism metrics, --backend cpu: compare each pixel's hit with the exact geodesic "
     "(a HitError EXR channel, max and median on stderr)");
@@ -735,7 +756,10 @@ void RegisterRenderCommand(CLI::App& app)
     "Also write a picture of the hit error (log scale; red: only one of the rays hits)");
   command->add_flag("--progress", args->Progress, "Show a progress bar on stderr (--backend cpu)");
   command->add_flag("--quiet", args->Quiet, "Never show a progress bar");
-  AddCameraOptions(command, picture);
+  args->Camera = std::make_unique<DeclaredOptions>(command, picture, PictureOutputSettingNames,
+    nlohmann::json::object(), "the scene's camera, else {}");
+  command->add_flag("--equirectangular", args->Equirectangular,
+    "The short form of --projection equirectangular");
   // The rays' adaptive steps are bounded relative to the step (RiemannScene.h):
   // no options of their own.
   args->Integration = AddIntegrationOptions(command, vtkNew<vtkRiemannIntegrationSettings>(),
@@ -765,7 +789,12 @@ void RegisterRenderCommand(CLI::App& app)
     ->add_option("--output,-o", args->Output,
       "Output picture: .png or .exr; or a film, .ogv (Ogg Theora, 24 frames per second)")
     ->required();
-  command->callback([args]() { RunRender(*args); });
+  command->callback(
+    [args]()
+    {
+      TakePictureOptions(*args);
+      RunRender(*args);
+    });
 }
 } // namespace cli
 } // namespace riemann

@@ -96,9 +96,14 @@ DeclaredOptions::DeclaredOptions(CLI::App* command, const SettingTable& table,
       continue;
     }
     std::string& text = this->Texts[setting.Name];
-    const std::string byDefault = defaultWords.empty()
-      ? SettingText(setting, this->Defaults.at(setting.Name))
-      : defaultWords;
+    // Words in place of the value, where "{}" stands for it ("the scene's camera, else {}").
+    const std::string value = SettingText(setting, this->Defaults.at(setting.Name));
+    std::string byDefault = defaultWords.empty() ? value : defaultWords;
+    const std::size_t slot = byDefault.find("{}");
+    if (!defaultWords.empty() && slot != std::string::npos)
+    {
+      byDefault.replace(slot, 2, value);
+    }
     CLI::Option* option =
       command->add_option(CommandLineNames(setting), text, DeclaredHelp(setting, byDefault));
     option->check(DeclaredCheck(setting));

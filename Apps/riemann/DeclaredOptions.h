@@ -32,7 +32,8 @@ public:
    * `defaults` (keyed by property) replaces declared defaults where the
    * command's object has its own (a filter's integration settings: a new
    * filter's SettingValues); `defaultWords`, when given, is what the help
-   * says instead of a value ("the scene's").
+   * says instead of a value ("the scene's"), "{}" in it standing for the
+   * value ("the scene's camera, else {}").
    */
   DeclaredOptions(CLI::App* command, const SettingTable& table, const std::string& leftOut = "",
     const nlohmann::json& defaults = nlohmann::json::object(), const std::string& defaultWords = "");

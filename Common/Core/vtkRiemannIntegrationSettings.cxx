@@ -42,16 +42,11 @@ const char* vtkRiemannIntegrationSettings::GetIntegratorTypeAsString() const
 std::string vtkRiemannIntegrationSettings::CheckSettings() const
 {
   // Each property in its declared range, in the declaration's order, named as the property.
-  const nlohmann::json values =
-    riemann::settings::SettingValues(const_cast<vtkRiemannIntegrationSettings*>(this));
-  for (const riemann::SettingDeclaration& setting :
-    riemann::declared::vtkRiemannIntegrationSettings::Settings)
+  std::string error = riemann::CheckSettingValues(riemann::declared::vtkRiemannIntegrationSettings::Settings,
+    riemann::settings::SettingValues(const_cast<vtkRiemannIntegrationSettings*>(this)));
+  if (!error.empty())
   {
-    std::string error = riemann::CheckSettingValue(setting, values.at(setting.Name), setting.Name);
-    if (!error.empty())
-    {
-      return error;
-    }
+    return error;
   }
   if (this->MinimumIntegrationStep > this->MaximumIntegrationStep)
   {

@@ -1,7 +1,7 @@
 #include "CameraPathFile.h"
 
 #include "JsonValidation.h"
-#include "PictureSchema.h"
+#include "RiemannPictureSettingsDeclaration.h"
 
 #include <cmath>
 #include <fstream>
@@ -47,9 +47,11 @@ Vec3 Vector(const Json& value, const std::string& path)
     Number(value[0], path + "[0]"), Number(value[1], path + "[1]"), Number(value[2], path + "[2]"));
 }
 
-const char* SceneKey(PictureSettingId id)
+/// A camera key of the file: the declared scene key of the picture setting
+/// `name` (vtkRiemannPictureSettings.settings.json), as a scene's camera block has it.
+const char* SceneKey(const char* name)
 {
-  return PictureSettingOf(id).SceneKey;
+  return riemann::declared::vtkRiemannPictureSettings::Settings.Find(name)->SceneKey;
 }
 
 void ReadTime(const Json& value, const std::string& path, CameraPathFile& file)
@@ -75,10 +77,10 @@ Json ToJson(const Vec3& v)
 CameraPathFile ParseCameraPathText(const std::string& text, const std::string& where)
 {
   const Json root = json::Parse<CameraPathFileError>(text, where, "");
-  const char* position = SceneKey(PictureSettingId::Position);
-  const char* lookAt = SceneKey(PictureSettingId::LookAt);
-  const char* viewUp = SceneKey(PictureSettingId::ViewUp);
-  const char* fov = SceneKey(PictureSettingId::ViewAngle);
+  const char* position = SceneKey("Position");
+  const char* lookAt = SceneKey("LookAt");
+  const char* viewUp = SceneKey("ViewUp");
+  const char* fov = SceneKey("ViewAngle");
   json::CheckKeys<CameraPathFileError>(
     root, where, { "path", position, lookAt, viewUp, fov, "length", "keys", "step", "time" });
   CameraPathFile file;
@@ -176,8 +178,8 @@ std::string CameraPathFileText(const CameraPathFile& file)
   root["path"] = CameraPathKindName(settings.Kind);
   if (settings.Kind == CameraPathKind::Geodesic)
   {
-    root[SceneKey(PictureSettingId::Position)] = ToJson(settings.Start.Position);
-    root[SceneKey(PictureSettingId::LookAt)] = ToJson(settings.Start.LookAt);
+    root[SceneKey("Position")] = ToJson(settings.Start.Position);
+    root[SceneKey("LookAt")] = ToJson(settings.Start.LookAt);
     root["length"] = settings.Length;
   }
   else
@@ -188,8 +190,8 @@ std::string CameraPathFileText(const CameraPathFile& file)
       root["keys"].push_back(ToJson(key));
     }
   }
-  root[SceneKey(PictureSettingId::ViewUp)] = ToJson(settings.Start.ViewUp);
-  root[SceneKey(PictureSettingId::ViewAngle)] = settings.Start.ViewAngle;
+  root[SceneKey("ViewUp")] = ToJson(settings.Start.ViewUp);
+  root[SceneKey("ViewAngle")] = settings.Start.ViewAngle;
   root["step"] = settings.Step;
   root["time"] = Json::array({ file.TimeFrom, file.TimeTo });
   return root.dump(2) + "\n";

@@ -7,6 +7,23 @@
 
 namespace riemann
 {
+std::string CheckCameraView(const Vec3& position, const Vec3& lookAt, const Vec3& viewUp)
+{
+  // In coordinates: the same test as the g-frame's below, up to the metric
+  // (a camera the app or a project accepts is one every metric frames).
+  const Vec3 forward = lookAt - position;
+  const double length = forward.norm();
+  if (!(length > 0) || !std::isfinite(length))
+  {
+    return "the camera is at the point it looks at";
+  }
+  if (!(forward.cross(viewUp).norm() > 1e-9 * length * viewUp.norm()))
+  {
+    return "the view up is along the view direction";
+  }
+  return std::string();
+}
+
 ObserverCamera::ObserverCamera(const Metric& metric, const CameraSettings& settings)
   : Settings(settings)
 {

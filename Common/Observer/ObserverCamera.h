@@ -15,8 +15,9 @@
 #define RiemannObserverCamera_h
 
 #include "Metric.h"
-#include "PictureSchema.h"
 #include "RiemannCommonObserverExport.h"
+
+#include <string>
 
 namespace riemann
 {
@@ -27,24 +28,29 @@ enum class Projection : int
   Equirectangular = 1
 };
 
-/// The default of a Point or Direction setting of the picture schema.
-inline Vec3 PictureDefaultVector(PictureSettingId id)
-{
-  const std::array<double, 3>& v = PictureSettingOf(id).Default;
-  return Vec3(v[0], v[1], v[2]);
-}
-
-/// The observer's camera; the defaults and valid values are PictureSchema.h's.
+/**
+ * The observer's camera. Plain defaults: the declared ones, with the valid
+ * values, units and help, are vtkRiemannPictureSettings's
+ * (Rendering/Scene/vtkRiemannPictureSettings.settings.json; a test keeps
+ * them equal).
+ */
 struct CameraSettings
 {
-  Vec3 Position = PictureDefaultVector(PictureSettingId::Position);
-  Vec3 LookAt = PictureDefaultVector(PictureSettingId::LookAt);
-  Vec3 ViewUp = PictureDefaultVector(PictureSettingId::ViewUp);
+  Vec3 Position = Vec3(0, 0, 5);
+  Vec3 LookAt = Vec3(0, 0, 0);
+  Vec3 ViewUp = Vec3(0, 1, 0);
   /// Vertical field of view in degrees (perspective only).
-  double ViewAngle = PictureSettingOf(PictureSettingId::ViewAngle).Default[0];
-  Projection Mode =
-    static_cast<Projection>(static_cast<int>(PictureSettingOf(PictureSettingId::Projection).Default[0]));
+  double ViewAngle = 60.0;
+  Projection Mode = Projection::Perspective;
 };
+
+/**
+ * Why a camera at `position` looking at `lookAt` with up `viewUp` defines no
+ * view ("the camera is at the point it looks at", "the view up is along the
+ * view direction"); "" when it does.
+ */
+RIEMANNCOMMONOBSERVER_EXPORT std::string CheckCameraView(
+  const Vec3& position, const Vec3& lookAt, const Vec3& viewUp);
 
 class RIEMANNCOMMONOBSERVER_EXPORT ObserverCamera
 {

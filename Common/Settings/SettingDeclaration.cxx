@@ -22,14 +22,16 @@ const SettingDeclaration* SettingTable::Find(const std::string& name) const
 std::string CommandLineName(const SettingDeclaration& setting)
 {
   // A capital starts a word, except inside a run of capitals ("FA" in
-  // "MinimumFA" is one word: --minimum-fa).
+  // "MinimumFA" is one word: --minimum-fa), whose last capital starts the
+  // next word when a small letter follows ("GPUPath": --gpu-path).
   std::string name = "--";
   const char* text = setting.Name;
+  const auto upper = [text](std::size_t i) { return std::isupper(static_cast<unsigned char>(text[i])) != 0; };
+  const auto lower = [text](std::size_t i) { return std::islower(static_cast<unsigned char>(text[i])) != 0; };
   for (std::size_t i = 0; text[i]; ++i)
   {
-    const bool upper = std::isupper(static_cast<unsigned char>(text[i])) != 0;
-    const bool previousUpper = i > 0 && std::isupper(static_cast<unsigned char>(text[i - 1]));
-    if (upper && i > 0 && !previousUpper)
+    const bool startsWord = upper(i) && i > 0 && (!upper(i - 1) || (text[i + 1] && lower(i + 1)));
+    if (startsWord)
     {
       name += '-';
     }

@@ -4,9 +4,8 @@
  * uses for it (the CLI's help and errors, the scene and project parsers,
  * the app's fields, the VTK objects' checks).
  *
- * Shared by the declared settings (SettingValues.h) and the picture schema
- * (PictureSchema.h: the camera and the picture), so that a range is written
- * the same way wherever a user meets it.
+ * Used by every declared setting (SettingValues.h), so that a range is
+ * written the same way wherever a user meets it.
  */
 #ifndef RiemannSettingRange_h
 #define RiemannSettingRange_h

@@ -231,6 +231,21 @@ std::string CheckSettingValue(
   return riemann::CheckSettingValue(RangeOf(setting), value.get<double>(), name);
 }
 
+std::string CheckSettingValues(const SettingTable& table, const nlohmann::json& values)
+{
+  for (const SettingDeclaration& setting : table)
+  {
+    const nlohmann::json missing;
+    const nlohmann::json& value = values.contains(setting.Name) ? values.at(setting.Name) : missing;
+    std::string error = CheckSettingValue(setting, value, setting.Name);
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  return std::string();
+}
+
 nlohmann::json ParseSettingText(
   const SettingDeclaration& setting, const std::string& text, std::string& error)
 {

@@ -49,6 +49,14 @@ RIEMANNCOMMONSETTINGS_EXPORT std::string CheckSettingValue(
   const SettingDeclaration& setting, const nlohmann::json& value, const std::string& name);
 
 /**
+ * "" when every setting of `table` has a valid value in `values` (keyed by
+ * name, as SettingValues(object) gives them); else CheckSettingValue's
+ * sentence for the first that has not, in the table's order.
+ */
+RIEMANNCOMMONSETTINGS_EXPORT std::string CheckSettingValues(
+  const SettingTable& table, const nlohmann::json& values);
+
+/**
  * The value typed as text ("400", "0,0,1", "rk4", "1, 2.5", "true"), as a
  * command's option or a form's field gives it. On bad text returns null and
  * sets `error` ("expected three finite numbers X,Y,Z", without the name or

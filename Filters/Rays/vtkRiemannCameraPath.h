@@ -57,8 +57,9 @@ public:
 
   ///@{
   /// The first frame (GEODESIC): where the observer starts and what it looks
-  /// at (by default the inside view's own camera: the picture schema's
-  /// defaults, checked equal by TestCameraPath). ViewUp also serves SPLINE.
+  /// at (by default the inside view's own camera: declared `like`
+  /// vtkRiemannPictureSettings's, checked equal by TestCameraPathDefaults).
+  /// ViewUp also serves SPLINE.
   vtkSetVector3Macro(Position, double);
   vtkGetVector3Macro(Position, double);
   vtkSetVector3Macro(LookAt, double);

@@ -3,8 +3,8 @@
 #include "JsonValidation.h"
 #include "InputFiles.h"
 #include "MetricDefinition.h"
-#include "PictureSchema.h"
 #include "RiemannIntegrationSettingsDeclaration.h"
+#include "RiemannPictureSettingsDeclaration.h"
 #include "SettingValues.h"
 
 #include <Eigen/Geometry> // cross
@@ -200,26 +200,35 @@ std::string MetricText(const Json& value, const std::string& path, const std::st
   return text;
 }
 
-/// A point or direction of the camera block, valid for its setting of the
-/// picture schema (PictureSchema.h).
-Vec3 CameraVector(const Json& object, PictureSettingId id, const std::string& path)
+/// The declared picture setting (vtkRiemannPictureSettings.settings.json) named `name`.
+const SettingDeclaration& PictureSettingNamed(const char* name)
 {
-  const PictureSetting& setting = PictureSettingOf(id);
+  return *riemann::declared::vtkRiemannPictureSettings::Settings.Find(name);
+}
+
+/// The camera block's value of `setting` (under its scene key), in its declared range.
+Json CameraValue(const Json& object, const SettingDeclaration& setting, const std::string& path)
+{
   const std::string where = path + "." + setting.SceneKey;
-  const Vec3 v = Vector(object.at(setting.SceneKey), where);
-  const double xyz[3] = { v[0], v[1], v[2] };
-  if (!CheckPictureVector(setting, xyz, where).empty())
+  const Json& value = object.at(setting.SceneKey);
+  if (setting.Type == SettingDeclaration::Point || setting.Type == SettingDeclaration::Direction)
   {
-    Fail(where, "expected " + DescribePictureValues(setting));
+    Vector(value, where); // says which number is not one
   }
-  return v;
+  if (!CheckSettingValue(setting, value, where).empty())
+  {
+    // Three numbers that are not valid are shown as they are ([0,0,0]).
+    const std::string got = value.is_array() ? value.dump() : Describe(value);
+    Fail(where, "expected " + DescribeSettingRange(setting) + ", got " + got);
+  }
+  return value;
 }
 
 CameraSettings Camera(const Json& object, const std::string& path)
 {
-  // The block's keys are the picture schema's scene keys, in its order.
+  // The block's keys are the declared scene keys of the picture settings, in their order.
   std::vector<const char*> keys;
-  for (const PictureSetting& setting : PictureSchema)
+  for (const SettingDeclaration& setting : riemann::declared::vtkRiemannPictureSettings::Settings)
   {
     if (*setting.SceneKey)
     {
@@ -227,43 +236,29 @@ CameraSettings Camera(const Json& object, const std::string& path)
     }
   }
   json::CheckKeys<SceneDefinitionError>(object, path, keys);
-  const auto key = [](PictureSettingId id) { return PictureSettingOf(id).SceneKey; };
   CameraSettings camera;
-  if (object.contains(key(PictureSettingId::Position)))
+  const auto vector = [&](const char* name, Vec3& out)
   {
-    camera.Position = CameraVector(object, PictureSettingId::Position, path);
-  }
-  if (object.contains(key(PictureSettingId::LookAt)))
-  {
-    camera.LookAt = CameraVector(object, PictureSettingId::LookAt, path);
-  }
-  if (object.contains(key(PictureSettingId::ViewUp)))
-  {
-    camera.ViewUp = CameraVector(object, PictureSettingId::ViewUp, path);
-  }
-  const PictureSetting& angle = PictureSettingOf(PictureSettingId::ViewAngle);
+    const SettingDeclaration& setting = PictureSettingNamed(name);
+    if (object.contains(setting.SceneKey))
+    {
+      const Json v = CameraValue(object, setting, path);
+      out = Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+    }
+  };
+  vector("Position", camera.Position);
+  vector("LookAt", camera.LookAt);
+  vector("ViewUp", camera.ViewUp);
+  const SettingDeclaration& angle = PictureSettingNamed("ViewAngle");
   if (object.contains(angle.SceneKey))
   {
-    const std::string where = path + "." + angle.SceneKey;
-    const Json& value = object.at(angle.SceneKey);
-    if (!value.is_number() || !CheckPictureValue(angle, value.get<double>(), where).empty())
-    {
-      Fail(where, "expected " + DescribePictureValues(angle) + ", got " + Describe(value));
-    }
-    camera.ViewAngle = value.get<double>();
+    camera.ViewAngle = CameraValue(object, angle, path).get<double>();
   }
-  const PictureSetting& projection = PictureSettingOf(PictureSettingId::Projection);
+  const SettingDeclaration& projection = PictureSettingNamed("Projection");
   if (object.contains(projection.SceneKey))
   {
-    const std::string where = path + "." + projection.SceneKey;
-    const std::string mode = String(object.at(projection.SceneKey), where);
-    const int index = PictureChoiceIndex(projection, mode);
-    if (index < 0)
-    {
-      Fail(where,
-        "unknown projection \"" + mode + "\"; expected " + DescribePictureValues(projection));
-    }
-    camera.Mode = static_cast<Projection>(index);
+    camera.Mode = static_cast<Projection>(
+      ChoiceIndex(projection, CameraValue(object, projection, path).get<std::string>()));
   }
   const Vec3 forward = camera.LookAt - camera.Position;
   if (forward.squaredNorm() == 0)

@@ -1,10 +1,13 @@
 #include "vtkRiemannScene.h"
 
+#include "vtkRiemannPictureSettings.h"
+
 #include "RiemannPolyDataMesh.h"
 #include "RiemannSceneParser.h"
 #include "RiemannScene.h"
 
 #include "vtkCamera.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 #include <fstream>
@@ -183,7 +186,7 @@ void vtkRiemannScene::ApplyDefaultCamera(vtkCamera* camera)
 {
   if (camera)
   {
-    CopyCamera(riemann::CameraSettings(), camera);
+    vtkNew<vtkRiemannPictureSettings>()->ApplyTo(camera);
   }
 }
 

@@ -125,8 +125,9 @@ public:
 
   /**
    * Give `camera` the observer's defaults (those of a scene camera block
-   * that sets nothing: the picture schema's, Common/Metric/PictureSchema.h),
-   * in place of vtkCamera's own (which look from (0, 0, 1) with 30 degrees).
+   * that sets nothing: a new vtkRiemannPictureSettings's, declared in
+   * vtkRiemannPictureSettings.settings.json), in place of vtkCamera's own
+   * (which look from (0, 0, 1) with 30 degrees).
    */
   static void ApplyDefaultCamera(vtkCamera* camera);
 

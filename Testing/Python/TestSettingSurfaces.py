@@ -44,7 +44,10 @@ COMMANDS = {
     "vtkRiemannDistanceField": ["distance"],
     "vtkRiemannCutLocus": ["distance"],
     "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
+    "vtkRiemannPictureSettings": ["render"],
 }
+# render's camera options default to the scene's camera (render --help says so).
+SCENE_CAMERA = ("Position", "LookAt", "ViewUp", "ViewAngle", "Projection")
 # The integration settings' defaults are those of the filter a command runs
 # (render: the scene's); the classes below give them.
 INTEGRATION_DEFAULTS = {
@@ -181,9 +184,12 @@ def check_paraview(doc):
 
 # --- 3. The commands ------------------------------------------------------------
 def command_line_name(name):
+    """CommandLineName: NumberOfDirections -> --number-of-directions, MinimumFA ->
+    --minimum-fa, GPUPath -> --gpu-path."""
     out = "--"
     for i, c in enumerate(name):
-        if c.isupper() and i > 0 and not name[i - 1].isupper():
+        follows_small = i + 1 < len(name) and name[i + 1].islower()
+        if c.isupper() and i > 0 and (not name[i - 1].isupper() or follows_small):
             out += "-"
         out += c.lower()
     return out
@@ -191,8 +197,9 @@ def command_line_name(name):
 
 def help_entry(help_text, option):
     """What --help says of `option`: its names (with the old spellings) and its help,
-    which CLI11 writes on the names' line or the next one."""
-    lines = help_text.splitlines()
+    which CLI11 writes on the names' line or the next one (the command's
+    description above "Options:" may start a line with an option too)."""
+    lines = help_text.split("\nOptions:", 1)[-1].splitlines()
     for i, line in enumerate(lines):
         words = line.split()
         if not words or option not in words[0].split(","):
@@ -210,6 +217,8 @@ def help_entry(help_text, option):
 def command_default(cls, command, s):
     """What a command's --help says the default is: the declared one, or for the
     integration settings the command's filter's own (render: the scene's)."""
+    if cls == "vtkRiemannPictureSettings" and s["name"] in SCENE_CAMERA:
+        return "(default: the scene's camera, else %s)" % default_text(s)
     if cls != "vtkRiemannIntegrationSettings":
         return "(default %s)" % default_text(s)
     filter_class = INTEGRATION_DEFAULTS[command]

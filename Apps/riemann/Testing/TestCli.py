@@ -898,21 +898,23 @@ class TractographyTests(TempDirTest):
 
 
 class PictureOptionTests(TempDirTest):
-    """The camera and picture options of render are the picture schema's
-    (Common/Metric/PictureSchema.h): the same keys, defaults, ranges and words
-    as a scene's "camera" block."""
+    """The camera and picture options of render are vtkRiemannPictureSettings's
+    declared settings: the same names, defaults, ranges and words as a
+    scene's "camera" block (Python.TestSettingSurfaces checks the defaults
+    and ranges of every one against the declaration)."""
 
+    # option: (old spellings that still work, what --help says to type)
     OPTIONS = {
-        "--width": "INT:in [1, 16384]",
-        "--height": "INT:in [1, 16384]",
-        "--samples": "INT:in [1, 4096]",
-        "--backend": "TEXT:gpu|cpu",
-        "--gpu-path": "TEXT:auto|fragment|compute",
-        "--camera-position": "TEXT:X,Y,Z",
-        "--look-at": "TEXT:X,Y,Z",
-        "--view-up": "TEXT:X,Y,Z",
-        "--fov": "FLOAT:in (0, 179]",
-        "--projection": "TEXT:perspective|equirectangular",
+        "--width": ((), "INT"),
+        "--height": ((), "INT"),
+        "--samples-per-pixel": (("--samples",), "INT"),
+        "--backend": ((), "gpu|cpu"),
+        "--gpu-path": ((), "auto|fragment|compute"),
+        "--position": (("--camera-position",), "X,Y,Z"),
+        "--look-at": ((), "X,Y,Z"),
+        "--view-up": ((), "X,Y,Z"),
+        "--view-angle": (("--fov",), "FLOAT"),
+        "--projection": ((), "perspective|equirectangular"),
     }
 
     def scene(self, camera):
@@ -926,21 +928,22 @@ class PictureOptionTests(TempDirTest):
             json.dump(scene, f)
         return path
 
-    def test_help_lists_them_with_the_schemas_values(self):
+    def test_help_lists_them_with_their_old_spellings(self):
         import re
         status, out, err = run("render", "--help")
         self.assertEqual(status, 0, err)
-        for option, kind in self.OPTIONS.items():
-            line = re.search(r"^\s+%s (.*)$" % re.escape(option), out, re.MULTILINE)
+        for option, (old, kind) in self.OPTIONS.items():
+            line = re.search(r"^\s+%s((?:,[-\w]+)*) (\S+)" % re.escape(option), out, re.MULTILINE)
             self.assertIsNotNone(line, "render --help lacks %s:\n%s" % (option, out))
-            self.assertTrue(line.group(1).startswith(kind), (option, line.group(0)))
+            self.assertEqual(tuple(a for a in line.group(1).split(",") if a), old, line.group(0))
+            self.assertEqual(line.group(2), kind, (option, line.group(0)))
 
     def test_the_option_and_the_scene_refuse_alike(self):
-        # One range, one sentence: 179.5 degrees is refused by --fov (exit 2,
-        # before any work) and by a scene's camera.fov (exit 1, bad scene).
+        # One range, one sentence: 179.5 degrees is refused by --view-angle
+        # (exit 2, before any work) and by a scene's camera.fov (exit 1, bad scene).
         words = "expected a number above 0 and at most 179 (degrees)"
         out = os.path.join(self.dir, "o.png")
-        status, _, err = run("render", "--fov", "179.5", "-o", out)
+        status, _, err = run("render", "--view-angle", "179.5", "-o", out)
         self.assertEqual(status, 2, err)
         self.assertIn(words, err)
         status, _, err = run("render", "-s", self.scene({"fov": 179.5}), "-o", out)
@@ -948,26 +951,26 @@ class PictureOptionTests(TempDirTest):
         self.assertIn("scene.camera.fov: " + words, err)
         status, _, err = run("render", "--projection", "fisheye", "-o", out)
         self.assertEqual(status, 2, err)
-        self.assertIn("expected perspective or equirectangular", err)
+        self.assertIn("expected one of perspective, equirectangular", err)
         status, _, err = run("render", "-s", self.scene({"projection": "fisheye"}), "-o", out)
         self.assertEqual(status, 1, err)
-        self.assertIn("expected perspective or equirectangular", err)
+        self.assertIn("expected one of perspective, equirectangular", err)
         status, _, err = run("render", "--projection", "perspective", "--equirectangular", "-o", out)
         self.assertEqual(status, 2, err)
         self.assertIn("two projections", err)
         self.assertFalse(os.path.exists(out))
 
-    def test_a_scene_without_camera_takes_the_schemas(self):
+    def test_a_scene_without_camera_takes_the_declared_one(self):
         # Not vtkCamera's own defaults (from 0,0,1 with 30 degrees): the
-        # picture of the schema's camera given as options, pixel for pixel.
+        # picture of the declared camera given as options, pixel for pixel.
         bare = self.scene(None)
         common = ["--backend", "cpu", "--width", "48", "--height", "36", "-s", bare]
         implicit = os.path.join(self.dir, "implicit.png")
         explicit = os.path.join(self.dir, "explicit.png")
         vtk_default = os.path.join(self.dir, "vtk.png")
         self.assertEqual(run("render", *common, "-o", implicit)[0], 0)
-        self.assertEqual(run("render", *common, "--camera-position", "0,0,5", "--look-at", "0,0,0",
-                             "--view-up", "0,1,0", "--fov", "60", "-o", explicit)[0], 0)
+        self.assertEqual(run("render", *common, "--position", "0,0,5", "--look-at", "0,0,0",
+                             "--view-up", "0,1,0", "--view-angle", "60", "-o", explicit)[0], 0)
         self.assertEqual(run("render", *common, "--camera-position", "0,0,1", "--fov", "30",
                              "-o", vtk_default)[0], 0)
         a, b, c = (png_size_and_pixels(p)[2] for p in (implicit, explicit, vtk_default))
@@ -1540,9 +1543,9 @@ NUMERIC_OPTIONS = [
     ("info", ["--precision", "nan"], '--precision: expected a whole number from 1 to 17, got "nan"'),
     ("info", ["--precision", "0"], '--precision: expected a whole number from 1 to 17, got "0"'),
     ("render", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),
-    ("render", ["--fov", "nan"], '--fov: expected a number above 0 and at most 179 (degrees), got "nan"'),
-    ("render", ["--fov", "180"], '--fov: expected a number above 0 and at most 179 (degrees), got "180"'),
-    ("render", ["--fov", "0"], '--fov: expected a number above 0 and at most 179 (degrees), got "0"'),
+    ("render", ["--fov", "nan"], '--view-angle: expected a number above 0 and at most 179 (degrees), got "nan"'),
+    ("render", ["--view-angle", "180"], '--view-angle: expected a number above 0 and at most 179 (degrees), got "180"'),
+    ("render", ["--fov", "0"], '--view-angle: expected a number above 0 and at most 179 (degrees), got "0"'),
     ("render", ["--max-length", "nan"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "nan"'),
     ("render", ["--length", "inf"], '--maximum-propagation: expected a number above 0 and at most 1e+09 (arc length), got "inf"'),
     ("render", ["--tolerance", "0"], '--maximum-error: expected a number from 1e-15 to 1, got "0"'),
@@ -1551,18 +1554,18 @@ NUMERIC_OPTIONS = [
     ("render", ["--max-steps", "nan"], '--maximum-number-of-steps: expected a whole number from 1 to 1e+09 (steps), got "nan"'),
     ("render", ["--width", "nan"], '--width: expected a whole number from 1 to 16384 (pixels), got "nan"'),
     ("render", ["--height", "0"], '--height: expected a whole number from 1 to 16384 (pixels), got "0"'),
-    ("render", ["--samples", "inf"], '--samples: expected a whole number from 1 to 4096, got "inf"'),
+    ("render", ["--samples", "inf"], '--samples-per-pixel: expected a whole number from 1 to 4096, got "inf"'),
     ("render", ["--frames", "nan"], '--frames: expected a whole number from 1 to 100000, got "nan"'),
     ("render", ["--bundle", "0"], '--bundle: expected a whole number from 1 to 256, got "0"'),
     ("render", ["--threshold", "nan"], '--threshold: expected a finite non-negative number at most 255, got "nan"'),
     ("render", ["--view-up", "0,0,0"], '--view-up: "0,0,0" is the zero vector: a direction must not be zero'),
     ("render", ["--view-up", "nan,1,0"], '--view-up: expected three finite comma-separated numbers'),
-    ("render", ["--camera-position", "0,0,nan"], '--camera-position: expected three finite comma-separated numbers'),
+    ("render", ["--camera-position", "0,0,nan"], '--position: expected three finite comma-separated numbers'),
     ("render", ["--look-at", "inf,0,0"], '--look-at: expected three finite comma-separated numbers'),
-    ("render", ["--camera-position", "0,0,5", "--look-at", "0,0,0", "--view-up", "0,0,-2"],
-     "--view-up 0,0,-2 is parallel to the view direction (from --camera-position 0,0,5 to --look-at 0,0,0)"),
+    ("render", ["--position", "0,0,5", "--look-at", "0,0,0", "--view-up", "0,0,-2"],
+     "--view-up 0,0,-2 is parallel to the view direction (from --position 0,0,5 to --look-at 0,0,0)"),
     ("render", ["--camera-position", "1,2,3", "--look-at", "1,2,3"],
-     "--camera-position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
+     "--position 1,2,3 and --look-at 1,2,3: the camera is at the point it looks at"),
     # Declared settings (Documentation/Settings.md): the message names the
     # property's option, whichever old spelling was typed.
     ("conjugate", ["--step", "nan"], '--initial-integration-step: expected a number from 1e-09 to 1e+06 (arc length), got "nan"'),

@@ -268,7 +268,7 @@ private Q_SLOTS:
   void JobsOwnTheirAlgorithmsAloneAndFreeThem();
   void BadProjectIsRefusedWithDialog();
   void ProjectIntegrationFollowsTheSchema();
-  void InsideViewFormFollowsThePictureSchema();
+  void InsideViewFormFollowsThePictureSettings();
   void DistanceFieldAndConnectionFromPickedPoints();
   void PropertiesRefuseBadValues();
   void PythonTraceRebuildsPipeline();
@@ -692,17 +692,17 @@ void TestStudio::ProjectIntegrationFollowsTheSchema()
   QCOMPARE(values.size(), riemann::declared::vtkRiemannIntegrationSettings::Settings.Count);
 }
 
-void TestStudio::InsideViewFormFollowsThePictureSchema()
+void TestStudio::InsideViewFormFollowsThePictureSettings()
 {
   // The inside view's form: the observer's camera, samples and renderer as
-  // the picture schema (PictureSchema.h) describes them, its ranges and the
-  // refusal of a camera that defines no view; a project's observer and
-  // inside objects in the schema's keys and words.
+  // vtkRiemannPictureSettings declares them, its ranges and the refusal of
+  // a camera that defines no view; a project's observer and inside objects
+  // in the declared names (an older project's keys still read) and words.
   auto window = OpenWindow();
   QVERIFY(window);
   window->Browser()->SelectScene();
   PropertiesPanel* panel = window->Properties();
-  for (const char* key : { "Position", "FocalPoint", "ViewUp", "ViewAngle", "SamplesPerPixel", "Backend" })
+  for (const char* key : { "Position", "LookAt", "ViewUp", "ViewAngle", "SamplesPerPixel", "Backend" })
   {
     QVERIFY2(panel->Field(key), key);
   }
@@ -724,11 +724,11 @@ void TestStudio::InsideViewFormFollowsThePictureSchema()
     observer->GetFocalPoint()[2] };
   for (int i = 0; i < 3; ++i)
   {
-    auto* lookAt = qobject_cast<QLineEdit*>(panel->Field("FocalPoint", i));
+    auto* lookAt = qobject_cast<QLineEdit*>(panel->Field("LookAt", i));
     QVERIFY(lookAt);
     lookAt->selectAll();
     QTest::keyClicks(lookAt, QString::number(position[i]));
-    QVERIFY2(panel->FieldError("FocalPoint").isEmpty(), qPrintable(panel->FieldError("FocalPoint")));
+    QVERIFY2(panel->FieldError("LookAt").isEmpty(), qPrintable(panel->FieldError("LookAt")));
   }
   angle->selectAll();
   QTest::keyClicks(angle, "30");
@@ -764,14 +764,27 @@ void TestStudio::InsideViewFormFollowsThePictureSchema()
     R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 30})";
   QCOMPARE(error(fine, "{}"), std::string("(accepted)"));
   QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 1, 0], "view-angle": 180})", "{}"),
-    std::string("observer.view-angle: expected a number above 0 and at most 179 (degrees)"));
-  QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 0], "view-angle": 30})", "{}"),
-    std::string("observer.view-up: expected three finite comma-separated numbers X,Y,Z, not all 0"));
+    std::string("observer.view-angle is 180: expected a number above 0 and at most 179 (degrees)"));
+  QCOMPARE(error(R"({"Position": [0, 0, 5], "LookAt": [0, 0, 0], "ViewUp": [0, 0, 0], "ViewAngle": 30})", "{}"),
+    std::string("observer.ViewUp is the zero vector: a direction must not be zero"));
   QCOMPARE(error(R"({"position": [0, 0, 5], "focal-point": [0, 0, 0], "view-up": [0, 0, 3], "view-angle": 30})", "{}"),
     std::string("observer: the view up is along the view direction"));
+  QCOMPARE(error(R"({"Position": [0, 0, 5], "LookAt": [0, 0, 5]})", "{}"),
+    std::string("observer: the camera is at the point it looks at"));
   QCOMPARE(error(fine, R"({"samples": 5000})"),
-    std::string("inside.samples: expected a whole number from 1 to 4096"));
-  QCOMPARE(error(fine, R"({"backend": "vulkan"})"), std::string("inside.backend: expected gpu or cpu"));
+    std::string("inside.samples is 5000: expected a whole number from 1 to 4096"));
+  QCOMPARE(error(fine, R"({"Backend": "vulkan"})"),
+    std::string("inside.Backend: expected one of gpu, cpu"));
+  // A project keeps the declared names; an old one's keys read the same.
+  riemann::studio::ProjectData project = riemann::studio::ParseProject(R"({"riemann-studio": 1,
+ "metric": {"text": "{\"type\": \"euclidean\"}"}, "observer": )" + fine + R"(, "inside": {"samples": 4}})");
+  QCOMPARE(project.Observer.Values.at("LookAt"), nlohmann::json({ 0.0, 0.0, 0.0 }));
+  QCOMPARE(project.Observer.Values.at("ViewAngle").get<double>(), 30.0);
+  QCOMPARE(project.Samples, 4);
+  const nlohmann::json written = riemann::studio::ProjectToJson(project);
+  QCOMPARE(written.at("observer").at("ViewAngle").get<double>(), 30.0);
+  QVERIFY(!written.at("observer").contains("view-angle"));
+  QCOMPARE(written.at("inside").at("SamplesPerPixel").get<int>(), 4);
 }
 
 void TestStudio::BadProjectIsRefusedWithDialog()

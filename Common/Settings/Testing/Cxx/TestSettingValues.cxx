@@ -52,6 +52,9 @@ TEST(SettingDeclaration, CommandLineNamesAreThePropertysWordsAndTheOldSpellings)
   EXPECT_EQ(riemann::CommandLineNames(Setting("NumberOfDirections")),
     "--number-of-directions,--directions,-n");
   EXPECT_EQ(riemann::CommandLineName(Setting("MinimumFA")), "--minimum-fa");
+  SettingDeclaration acronym = Setting("MinimumFA");
+  acronym.Name = "GPUPath";
+  EXPECT_EQ(riemann::CommandLineName(acronym), "--gpu-path");
   EXPECT_EQ(riemann::CommandLineNames(Setting("ConeAngle")), "--cone-angle");
   EXPECT_EQ(Table.Find("Nothing"), nullptr);
 }
@@ -102,6 +105,21 @@ TEST(SettingValues, ChecksFollowTheDeclaredTypeAndRange)
   EXPECT_EQ(riemann::CheckSettingValue(Setting("Radii"), json({ 1, -2 }), "r"),
     "r is -2: expected a number above 0 and at most 1e+09 (arc length)");
   EXPECT_NE(riemann::CheckSettingValue(Setting("ScalarBar"), 1, "b"), "");
+}
+
+TEST(SettingValues, AWholeObjectIsCheckedInTheTablesOrder)
+{
+  nlohmann::json values = riemann::DefaultValues(Table);
+  EXPECT_EQ(riemann::CheckSettingValues(Table, values), "");
+  values["MinimumFA"] = 2.0;
+  values["NumberOfDirections"] = 0;
+  // NumberOfDirections comes first in the table: its sentence, named as the setting.
+  EXPECT_EQ(riemann::CheckSettingValues(Table, values),
+    "NumberOfDirections is 0: expected a whole number from 1 to 1e+06");
+  values["NumberOfDirections"] = 10;
+  EXPECT_EQ(riemann::CheckSettingValues(Table, values), "MinimumFA is 2: expected a number from 0 to 1");
+  values.erase("ConeAngle");
+  EXPECT_NE(riemann::CheckSettingValues(Table, values), ""); // a missing value is not valid
 }
 
 TEST(SettingValues, AnEndTheDeclarationExcludesIsRefused)

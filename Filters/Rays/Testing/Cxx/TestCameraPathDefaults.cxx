@@ -1,11 +1,12 @@
 // vtkRiemannCameraPath's declared settings (vtkRiemannCameraPath.settings.json):
 // a new filter holds the declared defaults, and its first frame is the
-// inside view's own default camera (the picture schema's), so a flight that
-// nobody placed starts where the inside view looks from.
-#include "PictureSchema.h"
+// inside view's own default camera (vtkRiemannPictureSettings's, whose
+// settings the camera path's declaration takes with "like"), so a flight
+// that nobody placed starts where the inside view looks from.
 #include "RiemannCameraPathDeclaration.h"
 #include "vtkRiemannCameraPath.h"
 #include "vtkRiemannCameraPathSettingAccess.h"
+#include "vtkRiemannPictureSettings.h"
 
 #include "vtkNew.h"
 
@@ -15,12 +16,11 @@ namespace
 {
 namespace declared = riemann::declared::vtkRiemannCameraPath;
 
-void ExpectSchemaDefault(riemann::PictureSettingId id, const double* value, const char* name)
+void ExpectSameVector(const double* value, const double* expected, const char* name)
 {
-  const std::array<double, 3>& schema = riemann::PictureSettingOf(id).Default;
   for (int i = 0; i < 3; ++i)
   {
-    EXPECT_EQ(value[i], schema[static_cast<std::size_t>(i)]) << name << "[" << i << "]";
+    EXPECT_EQ(value[i], expected[i]) << name << "[" << i << "]";
   }
 }
 } // namespace
@@ -38,9 +38,11 @@ TEST(CameraPath, ANewFilterHoldsTheDeclaredDefaults)
 
 TEST(CameraPath, TheFirstFrameIsTheInsideViewsDefaultCamera)
 {
-  ExpectSchemaDefault(riemann::PictureSettingId::Position, declared::Default::Position, "Position");
-  ExpectSchemaDefault(riemann::PictureSettingId::LookAt, declared::Default::LookAt, "LookAt");
-  ExpectSchemaDefault(riemann::PictureSettingId::ViewUp, declared::Default::ViewUp, "ViewUp");
+  vtkNew<vtkRiemannCameraPath> path;
+  vtkNew<vtkRiemannPictureSettings> picture;
+  ExpectSameVector(path->GetPosition(), picture->GetPosition(), "Position");
+  ExpectSameVector(path->GetLookAt(), picture->GetLookAt(), "LookAt");
+  ExpectSameVector(path->GetViewUp(), picture->GetViewUp(), "ViewUp");
 }
 
 TEST(CameraPath, DeclaredValuesSetTheFilterAndReadBack)

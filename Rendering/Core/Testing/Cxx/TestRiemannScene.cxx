@@ -474,7 +474,7 @@ TEST(Scene, RefusesBadInput)
     // Camera.
     { R"({"camera": {"position": [0,0,1], "look_at": [0,0,1]}})",
       "scene.camera: position and look_at are the same point" },
-    // The picture schema's range and words (PictureSchema.h), as `riemann render --fov` says them.
+    // The declared range and words (vtkRiemannPictureSettings.settings.json), as `riemann render --fov` says them.
     { R"({"camera": {"fov": 0}})",
       "scene.camera.fov: expected a number above 0 and at most 179 (degrees), got 0" },
     { R"({"camera": {"fov": 179.5}})", "scene.camera.fov: expected a number above 0 and at most 179" },
@@ -484,8 +484,8 @@ TEST(Scene, RefusesBadInput)
       "scene.camera.position: expected an array of 3 numbers, got an array of 2" },
     { R"({"camera": {"position": [0,0,"z"]}})", "scene.camera.position[2]: expected a number" },
     { R"({"camera": {"projection": "fisheye"}})",
-      "scene.camera.projection: unknown projection \"fisheye\"" },
-    { R"({"camera": {"view_up": [0,0,0]}})", "scene.camera.view_up: expected three finite comma-separated numbers X,Y,Z, not all 0" },
+      "scene.camera.projection: expected one of perspective, equirectangular, got the string \"fisheye\"" },
+    { R"({"camera": {"view_up": [0,0,0]}})", "scene.camera.view_up: expected three numbers, not all zero, got [0,0,0]" },
     { R"({"camera": {"view_up": [0,0,-2]}})",
       "scene.camera.view_up: parallel to the view direction" },
     { R"({"camera": {"lookat": [0,0,0]}})", "scene.camera: unknown key \"lookat\"" },
