@@ -412,6 +412,14 @@ inline nlohmann::json SettingValues({cls}* object)
 {reads_text}
   return values;
 }}
+
+template <>
+struct DeclaredAccess<{cls}>
+{{
+  static const riemann::SettingTable& Settings() {{ return riemann::declared::{cls}::Settings; }}
+  static void Apply({cls}* object, const nlohmann::json& values) {{ ApplySettings(object, values); }}
+  static nlohmann::json Values({cls}* object) {{ return SettingValues(object); }}
+}};
 }} // namespace settings
 }} // namespace riemann
 

@@ -4,6 +4,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
 #include "vtkRiemannCameraPathSettingAccess.h"
@@ -91,17 +92,20 @@ std::vector<PropertySpec> CameraPathItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> CameraPathItem::MakeJob(const JobInputs& inputs) const
 {
-  auto path = vtkSmartPointer<vtkRiemannCameraPath>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  path->SetMetric(metric);
-  this->Configure(path);
+  auto path = DeclaredJob<vtkRiemannCameraPath>(this->Settings(), inputs);
+  this->SetKeyPositions(path);
   return path;
 }
 
 void CameraPathItem::Configure(vtkRiemannCameraPath* path) const
 {
   riemann::settings::ApplySettings(path, this->Settings());
+  this->SetKeyPositions(path);
+}
+
+void CameraPathItem::SetKeyPositions(vtkRiemannCameraPath* path) const
+{
+  // Input points, not a declared setting (Settings.md).
   vtkNew<vtkPoints> keys;
   for (const nlohmann::json& key : this->Settings().at("KeyPositions"))
   {
@@ -136,14 +140,8 @@ void CameraPathItem::UpdateDisplay()
 std::vector<std::string> CameraPathItem::PythonLines(const std::string& var) const
 {
   const nlohmann::json& settings = this->Settings();
-  std::vector<std::string> lines{
-    var + " = riemann.vtkRiemannCameraPath()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : riemann::SettingPythonLines(cameraPath::Settings, var, settings))
-  {
-    lines.push_back(line);
-  }
+  std::vector<std::string> lines =
+    DeclaredPythonLines<vtkRiemannCameraPath>(this->FilterClass(), var, settings);
   if (!settings.at("KeyPositions").empty())
   {
     lines.push_back(var + "_keys = vtkPoints()");

@@ -2,6 +2,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannConjugateLocusSettingAccess.h"
 
@@ -54,13 +55,7 @@ std::vector<PropertySpec> ConjugateLocusItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> ConjugateLocusItem::MakeJob(const JobInputs& inputs) const
 {
-  auto locus = vtkSmartPointer<vtkRiemannConjugateLocus>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  locus->SetMetric(metric);
-  this->ApplyIntegration(locus->GetIntegrationSettings());
-  riemann::settings::ApplySettings(locus, this->Settings());
-  return locus;
+  return DeclaredJob<vtkRiemannConjugateLocus>(this->Settings(), inputs);
 }
 
 void ConjugateLocusItem::UpdateDisplay()
@@ -87,7 +82,7 @@ void ConjugateLocusItem::UpdateDisplay()
 
 std::vector<std::string> ConjugateLocusItem::PythonLines(const std::string& var) const
 {
-  return FilterPythonLines(riemann::declared::vtkRiemannConjugateLocus::Settings, var, this->Settings());
+  return DeclaredPythonLines<vtkRiemannConjugateLocus>(this->FilterClass(), var, this->Settings());
 }
 }
 }

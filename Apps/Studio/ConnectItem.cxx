@@ -2,6 +2,7 @@
 // the picked ray is: tubes, and a ball where they end.
 #include "PipelineItems.h"
 
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannGeodesicConnectorSettingAccess.h"
 
@@ -64,13 +65,7 @@ std::vector<PropertySpec> ConnectItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> ConnectItem::MakeJob(const JobInputs& inputs) const
 {
-  auto connector = vtkSmartPointer<vtkRiemannGeodesicConnector>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  connector->SetMetric(metric);
-  this->ApplyIntegration(connector->GetIntegrationSettings());
-  riemann::settings::ApplySettings(connector, this->Settings());
-  return connector;
+  return DeclaredJob<vtkRiemannGeodesicConnector>(this->Settings(), inputs);
 }
 
 void ConnectItem::UpdateDisplay()
@@ -99,8 +94,7 @@ void ConnectItem::UpdateDisplay()
 
 std::vector<std::string> ConnectItem::PythonLines(const std::string& var) const
 {
-  return FilterPythonLines(
-    riemann::declared::vtkRiemannGeodesicConnector::Settings, var, this->Settings());
+  return DeclaredPythonLines<vtkRiemannGeodesicConnector>(this->FilterClass(), var, this->Settings());
 }
 
 bool ConnectItem::TakePickedPoint(const double point[3])

@@ -117,24 +117,5 @@ nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSett
   return declared;
 }
 
-std::vector<std::string> FilterPythonLines(
-  const riemann::SettingTable& table, const std::string& var, const nlohmann::json& values)
-{
-  std::vector<std::string> lines{
-    var + " = riemann." + table.ClassName + "()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : riemann::SettingPythonLines(table, var, values))
-  {
-    lines.push_back(line);
-  }
-  vtkNew<vtkRiemannIntegrationSettings> integration;
-  ApplyIntegrationValues(values, integration);
-  for (const std::string& line : IntegrationPython(var + ".GetIntegrationSettings()", integration))
-  {
-    lines.push_back(line);
-  }
-  return lines;
-}
 } // namespace studio
 } // namespace riemann

@@ -53,13 +53,6 @@ nlohmann::json FilterDefaults(nlohmann::json declared, vtkRiemannIntegrationSett
   const nlohmann::json& own, const std::vector<std::string>& leftOut = {},
   const char* preset = nullptr);
 
-/**
- * The Python lines of an item that runs `Filter` as variable `var`: the
- * filter made, the metric set, the declared settings of `values`
- * (SettingPythonLines) and the integration settings.
- */
-std::vector<std::string> FilterPythonLines(const riemann::SettingTable& table,
-  const std::string& var, const nlohmann::json& values);
 } // namespace studio
 } // namespace riemann
 

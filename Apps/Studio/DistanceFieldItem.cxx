@@ -5,6 +5,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
 #include "vtkRiemannCutLocusSettingAccess.h"
@@ -121,11 +122,8 @@ std::vector<PropertySpec> DistanceFieldItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> DistanceFieldItem::MakeJob(const JobInputs& inputs) const
 {
-  auto field = vtkSmartPointer<vtkRiemannDistanceField>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  field->SetMetric(metric);
-  riemann::settings::ApplySettings(field, this->Settings());
+  // The seed is an input point, not a declared setting (Settings.md).
+  auto field = DeclaredJob<vtkRiemannDistanceField>(this->Settings(), inputs);
   double seed[3];
   this->Vector("Seed", seed, 3);
   field->AddSeed(seed);
@@ -187,14 +185,8 @@ void DistanceFieldItem::UpdateDisplay()
 
 std::vector<std::string> DistanceFieldItem::PythonLines(const std::string& var) const
 {
-  std::vector<std::string> lines{
-    var + " = riemann.vtkRiemannDistanceField()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : riemann::SettingPythonLines(distance::Settings, var, this->Settings()))
-  {
-    lines.push_back(line);
-  }
+  std::vector<std::string> lines =
+    DeclaredPythonLines<vtkRiemannDistanceField>(this->FilterClass(), var, this->Settings());
   lines.push_back(var + ".AddSeed" + PythonTuple(this->Settings().at("Seed")));
   if (this->Settings().at("ShowCutLocus").get<bool>())
   {

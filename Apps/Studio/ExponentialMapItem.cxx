@@ -2,6 +2,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannExponentialMapSettingAccess.h"
 
@@ -51,13 +52,7 @@ std::vector<PropertySpec> ExponentialMapItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& inputs) const
 {
-  auto expmap = vtkSmartPointer<vtkRiemannExponentialMap>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  expmap->SetMetric(metric);
-  this->ApplyIntegration(expmap->GetIntegrationSettings());
-  riemann::settings::ApplySettings(expmap, this->Settings());
-  return expmap;
+  return DeclaredJob<vtkRiemannExponentialMap>(this->Settings(), inputs);
 }
 
 void ExponentialMapItem::UpdateDisplay()
@@ -85,7 +80,7 @@ void ExponentialMapItem::UpdateDisplay()
 
 std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var) const
 {
-  return FilterPythonLines(riemann::declared::vtkRiemannExponentialMap::Settings, var, this->Settings());
+  return DeclaredPythonLines<vtkRiemannExponentialMap>(this->FilterClass(), var, this->Settings());
 }
 }
 }

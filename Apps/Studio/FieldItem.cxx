@@ -3,6 +3,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
 #include "vtkRiemannFieldAlgorithmSettingAccess.h"
@@ -122,25 +123,17 @@ std::vector<PropertySpec> FieldItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> FieldItem::MakeJob(const JobInputs& inputs) const
 {
+  // Three filters, one declaration: their base class's (the grid).
   const std::string field = this->Text("Field");
-  vtkSmartPointer<vtkRiemannFieldAlgorithm> filter;
   if (field == "volume-form")
   {
-    filter = vtkSmartPointer<vtkRiemannVolumeForm>::New();
+    return DeclaredJob<vtkRiemannVolumeForm, vtkRiemannFieldAlgorithm>(this->Settings(), inputs);
   }
-  else if (field == "metric-tensor")
+  if (field == "metric-tensor")
   {
-    filter = vtkSmartPointer<vtkRiemannMetricTensorField>::New();
+    return DeclaredJob<vtkRiemannMetricTensorField, vtkRiemannFieldAlgorithm>(this->Settings(), inputs);
   }
-  else
-  {
-    filter = vtkSmartPointer<vtkRiemannCurvatureField>::New();
-  }
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  filter->SetMetric(metric);
-  riemann::settings::ApplySettings(filter.Get(), this->Settings());
-  return filter;
+  return DeclaredJob<vtkRiemannCurvatureField, vtkRiemannFieldAlgorithm>(this->Settings(), inputs);
 }
 
 void FieldItem::UpdateDisplay()
@@ -212,15 +205,7 @@ void FieldItem::UpdateDisplay()
 
 std::vector<std::string> FieldItem::PythonLines(const std::string& var) const
 {
-  std::vector<std::string> lines{
-    var + " = riemann." + this->FilterClass() + "()",
-    var + ".SetMetric(metric)",
-  };
-  for (const std::string& line : riemann::SettingPythonLines(grid::Settings, var, this->Settings()))
-  {
-    lines.push_back(line);
-  }
-  return lines;
+  return DeclaredPythonLines<vtkRiemannFieldAlgorithm>(this->FilterClass(), var, this->Settings());
 }
 }
 }

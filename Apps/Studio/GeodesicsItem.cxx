@@ -3,6 +3,7 @@
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
+#include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannGeodesicTracerSettingAccess.h"
 
@@ -59,13 +60,7 @@ std::vector<PropertySpec> GeodesicsItem::Properties() const
 
 vtkSmartPointer<vtkAlgorithm> GeodesicsItem::MakeJob(const JobInputs& inputs) const
 {
-  auto job = vtkSmartPointer<vtkRiemannGeodesicTracer>::New();
-  vtkNew<vtkRiemannMetric> metric;
-  metric->ShallowCopy(inputs.Metric);
-  job->SetMetric(metric);
-  this->ApplyIntegration(job->GetIntegrationSettings());
-  riemann::settings::ApplySettings(job, this->Settings());
-  return job;
+  return DeclaredJob<vtkRiemannGeodesicTracer>(this->Settings(), inputs);
 }
 
 void GeodesicsItem::UpdateDisplay()
@@ -84,7 +79,7 @@ void GeodesicsItem::UpdateDisplay()
 
 std::vector<std::string> GeodesicsItem::PythonLines(const std::string& var) const
 {
-  return FilterPythonLines(tracer::Settings, var, this->Settings());
+  return DeclaredPythonLines<vtkRiemannGeodesicTracer>(this->FilterClass(), var, this->Settings());
 }
 }
 }

@@ -202,6 +202,8 @@ public:
   /// Sets a vtkRiemannCameraPath's path settings from this item's (all
   /// but the metric): what Export Animation flies along.
   void Configure(vtkRiemannCameraPath* path) const;
+  /// The path's key positions (a spline's), from the item's KeyPositions.
+  void SetKeyPositions(vtkRiemannCameraPath* path) const;
 
 protected:
   void UpdateDisplay() override;

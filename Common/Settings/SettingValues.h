@@ -77,6 +77,21 @@ RIEMANNCOMMONSETTINGS_EXPORT std::string SettingText(
  */
 RIEMANNCOMMONSETTINGS_EXPORT std::vector<std::string> SettingPythonLines(
   const SettingTable& table, const std::string& variable, const nlohmann::json& values);
+
+namespace settings
+{
+/**
+ * The declared settings of VTK class `Object` for code that takes the class
+ * as a template parameter: specialised in each `<Object>SettingAccess.h`
+ * (Settings(), Apply(object, values), Values(object): the header's
+ * DeclaredSettings, ApplySettings and SettingValues). A class template,
+ * not overloads, because a template's qualified call binds only the
+ * overloads declared before it, while a specialisation is found wherever
+ * it was declared before the use.
+ */
+template <class Object>
+struct DeclaredAccess;
+} // namespace settings
 } // namespace riemann
 
 #endif
