@@ -14,7 +14,7 @@
 #ifndef RiemannTractFiles_h
 #define RiemannTractFiles_h
 
-#include "RiemannCommonCoreModule.h" // For export macro
+#include "RiemannIOMedicalModule.h" // For export macro
 #include "TractStops.h"              // For Vec3, Mat3
 
 #include <array>
@@ -29,7 +29,7 @@ namespace riemann
 using Tract = std::vector<Vec3>;
 
 /// Where a tract comes from and why its ends stopped (ReasonForTermination codes).
-struct RIEMANNCOMMONCORE_EXPORT TractRecord
+struct RIEMANNIOMEDICAL_EXPORT TractRecord
 {
   long long SeedId = -1;
   /// The backward line's reason (the tract's first point), 0 without one.
@@ -39,7 +39,7 @@ struct RIEMANNCOMMONCORE_EXPORT TractRecord
 };
 
 /// The image a .trk file is written against (its voxel grid and placement).
-struct RIEMANNCOMMONCORE_EXPORT TractReference
+struct RIEMANNIOMEDICAL_EXPORT TractReference
 {
   std::array<int, 3> Dimensions = { 1, 1, 1 };
   Vec3 Spacing = Vec3::Ones();
@@ -55,11 +55,11 @@ struct RIEMANNCOMMONCORE_EXPORT TractReference
  * other, as the tracer writes them. `records` (optional) gets each tract's
  * seed and why its ends stopped.
  */
-RIEMANNCOMMONCORE_EXPORT std::vector<Tract> JoinTracesIntoTracts(
+RIEMANNIOMEDICAL_EXPORT std::vector<Tract> JoinTracesIntoTracts(
   vtkPolyData* lines, std::vector<TractRecord>* records = nullptr);
 
 /// Write .tck (MRtrix). Throws std::runtime_error naming the file.
-RIEMANNCOMMONCORE_EXPORT void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts);
+RIEMANNIOMEDICAL_EXPORT void WriteTckFile(const std::string& path, const std::vector<Tract>& tracts);
 
 /**
  * Write .trk (TrackVis v2) against `reference`. With `records` (one a
@@ -67,7 +67,7 @@ RIEMANNCOMMONCORE_EXPORT void WriteTckFile(const std::string& path, const std::v
  * "stop_at_start" and "stop_at_end" (nibabel's data_per_streamline).
  * Throws std::runtime_error naming the file.
  */
-RIEMANNCOMMONCORE_EXPORT void WriteTrkFile(const std::string& path,
+RIEMANNIOMEDICAL_EXPORT void WriteTrkFile(const std::string& path,
   const std::vector<Tract>& tracts, const TractReference& reference,
   const std::vector<TractRecord>* records = nullptr);
 
@@ -77,7 +77,7 @@ RIEMANNCOMMONCORE_EXPORT void WriteTrkFile(const std::string& path,
  * Throws std::runtime_error naming the file and what is wrong (not a
  * streamline file, truncated, counts that disagree, absurd sizes).
  */
-RIEMANNCOMMONCORE_EXPORT std::vector<Tract> ReadTractFile(const std::string& path);
+RIEMANNIOMEDICAL_EXPORT std::vector<Tract> ReadTractFile(const std::string& path);
 } // namespace riemann
 
 #endif

@@ -8,7 +8,7 @@
 #ifndef RiemannScalarImages_h
 #define RiemannScalarImages_h
 
-#include "RiemannCommonCoreModule.h" // For export macro
+#include "RiemannIOMedicalModule.h" // For export macro
 
 #include "TractStops.h"      // For VoxelMask
 #include "vtkSmartPointer.h" // For the returned images
@@ -27,7 +27,7 @@ namespace riemann
  * mask"). Throws std::runtime_error naming the file and the problem (not a
  * regular file, unknown format, several values per voxel, ...).
  */
-RIEMANNCOMMONCORE_EXPORT vtkSmartPointer<vtkImageData> ReadScalarImageFile(
+RIEMANNIOMEDICAL_EXPORT vtkSmartPointer<vtkImageData> ReadScalarImageFile(
   const std::string& path, const std::string& what);
 
 /**
@@ -37,14 +37,14 @@ RIEMANNCOMMONCORE_EXPORT vtkSmartPointer<vtkImageData> ReadScalarImageFile(
  * generator seeded by `randomSeed`, so the same arguments give the same
  * points. Three coordinates per point.
  */
-RIEMANNCOMMONCORE_EXPORT std::vector<double> MaskSeedPoints(
+RIEMANNIOMEDICAL_EXPORT std::vector<double> MaskSeedPoints(
   vtkImageData* mask, int perVoxel, unsigned randomSeed);
 /**
  * The image's active scalars as a VoxelMask (set where not 0), with the
  * image's origin, spacing and direction. An image without scalars gives an
  * empty mask.
  */
-RIEMANNCOMMONCORE_EXPORT VoxelMask VoxelMaskFromImage(vtkImageData* image);
+RIEMANNIOMEDICAL_EXPORT VoxelMask VoxelMaskFromImage(vtkImageData* image);
 } // namespace riemann
 
 #endif

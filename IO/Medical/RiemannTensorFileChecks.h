@@ -13,7 +13,7 @@
 #ifndef RiemannTensorFileChecks_h
 #define RiemannTensorFileChecks_h
 
-#include "RiemannCommonCoreModule.h" // For export macro (tested on their own)
+#include "RiemannIOMedicalModule.h" // For export macro (tested on their own)
 
 #include <array>
 #include <cstdint>
@@ -23,7 +23,7 @@
 namespace riemann
 {
 /// Whether `path` ends with `ending` (lower case, ".nii.gz"), whatever its case.
-RIEMANNCOMMONCORE_EXPORT bool HasFileEnding(const std::string& path, const std::string& ending);
+RIEMANNIOMEDICAL_EXPORT bool HasFileEnding(const std::string& path, const std::string& ending);
 
 /// The most voxel data a tensor file may declare: 2 GiB (a 256^3 tensor
 /// volume of floats is 0.4 GiB).
@@ -31,7 +31,7 @@ constexpr std::uint64_t MaximumTensorFileBytes = std::uint64_t(2) << 30;
 
 /// "" when the NIfTI-1 file (.nii, .nii.gz, .hdr with its .img) at `path` can be given to
 /// vtkNIFTIImageReader, else why not. NIfTI-2 headers pass to VTK's own checks.
-RIEMANNCOMMONCORE_EXPORT std::string CheckNiftiFile(const std::string& path);
+RIEMANNIOMEDICAL_EXPORT std::string CheckNiftiFile(const std::string& path);
 
 /// A NRRD header: its "field: value" lines (comments and "key:=value" pairs
 /// left out) and its length in bytes, up to and including the blank line
@@ -51,11 +51,11 @@ struct NrrdHeader
 int NrrdVtkType(const std::string& type);
 
 /// Read the header of the NRRD file at `path`.
-RIEMANNCOMMONCORE_EXPORT NrrdHeader ReadNrrdHeader(const std::string& path);
+RIEMANNIOMEDICAL_EXPORT NrrdHeader ReadNrrdHeader(const std::string& path);
 
 /// "" when the NRRD file (.nrrd, or a detached .nhdr) at `path` can be given to vtkNrrdReader,
 /// else why not.
-RIEMANNCOMMONCORE_EXPORT std::string CheckNrrdFile(const std::string& path);
+RIEMANNIOMEDICAL_EXPORT std::string CheckNrrdFile(const std::string& path);
 
 /**
  * "" when the VTK XML image file (.vti) at `path` may be read whole, else
@@ -65,7 +65,7 @@ RIEMANNCOMMONCORE_EXPORT std::string CheckNrrdFile(const std::string& path);
  * raw, no larger than the file. VTK 9.1's reader trusts the extent: a
  * WholeExtent of 2^31 points an axis made it write past its arrays.
  */
-RIEMANNCOMMONCORE_EXPORT std::string CheckVtiFile(const std::string& path);
+RIEMANNIOMEDICAL_EXPORT std::string CheckVtiFile(const std::string& path);
 } // namespace riemann
 
 #endif

@@ -9,6 +9,7 @@
 #define RiemannTensorImage_h
 
 #include "MetricDefinition.h" // For SampledTensorFrame
+#include "RiemannIOMedicalModule.h" // For export macro
 #include "SampledTensorField.h"
 
 #include <string>
@@ -24,7 +25,7 @@ namespace riemann
  * YY, ZZ, XY, YZ, XZ) or 9 (row-major, which must be symmetric). Throws
  * std::runtime_error saying what is missing or wrong.
  */
-SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& arrayName);
+RIEMANNIOMEDICAL_EXPORT SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& arrayName);
 
 /**
  * Read `path` (VTK XML image data .vti, legacy .vtk structured points,
@@ -32,7 +33,7 @@ SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& ar
  * and return TensorGridFromImage of it; errors name the file. The tensors
  * are in `frame` (SampledTensorFrame::Fsl: NIfTI files only).
  */
-SampledTensorGrid ReadTensorGridFile(
+RIEMANNIOMEDICAL_EXPORT SampledTensorGrid ReadTensorGridFile(
   const std::string& path, const std::string& arrayName, SampledTensorFrame frame);
 }
 
