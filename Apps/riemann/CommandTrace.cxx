@@ -173,7 +173,9 @@ void CheckOutputSize(const TraceArguments& args, vtkIdType numberOfSeeds, const 
   }
 }
 
-void RunTrace(const TraceArguments& args)
+/// Refuse missing inputs and an output of no known kind before any work;
+/// the output's extension.
+std::string CheckTracePaths(const TraceArguments& args)
 {
   std::vector<NamedPath> inputs = { { "-m", args.Metric },
     { "--seeds", args.SeedsFile }, { "--seed-mask", args.SeedMask } };
@@ -188,13 +190,13 @@ void RunTrace(const TraceArguments& args)
     throw Failure(
       "-o " + args.Output + ": the output must end in .vtp, .pvtp, .csv, .tck or .trk", 2);
   }
-  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
+  return extension;
+}
 
-  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
-  vtkNew<vtkRiemannGeodesicTracer> tracer;
-  vtkNew<ErrorCollector> errors;
-  errors->Observe(tracer);
-  tracer->SetMetric(metric);
+/// Give the tracer the declared, integration and tract options; returns the
+/// propagation ("forward", "backward" or "both").
+std::string ConfigureTracer(const TraceArguments& args, vtkRiemannGeodesicTracer* tracer)
+{
   // Seeds from a mask go both ways along e1 unless --propagation says otherwise.
   nlohmann::json settings = args.Settings->Given();
   if (!args.SeedMask.empty() && args.Settings->Text("SeedDirection") == "e1" &&
@@ -202,41 +204,51 @@ void RunTrace(const TraceArguments& args)
   {
     settings["IntegrationDirection"] = "both";
   }
-  const std::string propagation =
-    settings.value("IntegrationDirection", args.Settings->Text("IntegrationDirection"));
   riemann::settings::ApplySettings(tracer, settings);
   ApplyIntegrationOptions(*args.Integration, tracer->GetIntegrationSettings());
   ApplyTractOptions(args.Tracts, tracer);
-  // Without seeds from a file: one seed, fanned over NumberOfDirections.
-  vtkIdType numberOfSeeds = args.Settings->Integer("NumberOfDirections");
+  return settings.value("IntegrationDirection", args.Settings->Text("IntegrationDirection"));
+}
+
+/// The tracer's input: the seeds file, else the seed mask, else none (one
+/// seed fanned over NumberOfDirections). Sets how many seeds that is; returns
+/// the mask (null without one).
+vtkSmartPointer<vtkImageData> SetTracerSeeds(
+  const TraceArguments& args, vtkRiemannGeodesicTracer* tracer, vtkIdType& numberOfSeeds)
+{
+  numberOfSeeds = args.Settings->Integer("NumberOfDirections");
   if (!args.SeedsFile.empty())
   {
     vtkSmartPointer<vtkPolyData> seeds = ReadSeeds(args.SeedsFile);
     numberOfSeeds = seeds->GetNumberOfPoints();
     tracer->SetInputData(seeds);
+    return nullptr;
   }
-  vtkSmartPointer<vtkImageData> seedMask;
-  if (args.SeedsFile.empty() && !args.SeedMask.empty())
+  if (args.SeedMask.empty())
   {
-    seedMask = ReadSeedMask(args, numberOfSeeds);
-    tracer->SetInputData(seedMask);
+    return nullptr;
   }
-  CheckOutputSize(args, numberOfSeeds, propagation);
-  // A .trk's reference, before the work: a run without one is refused at once.
-  TractReference reference;
-  if (extension == "trk")
-  {
-    TractArguments tracts = args.Tracts;
-    tracts.SeedMask = args.SeedMask;
-    reference = ChooseTrkReference(tracts, metric, seedMask);
-  }
-  // This rank's share of the seeds (all of them in a single process).
-  UpdateThisRanksPiece(tracer);
-  errors->ThrowIfAny("tracing failed:");
-  vtkPolyData* lines = tracer->GetOutput();
-  AgreeToGoOn();
+  vtkSmartPointer<vtkImageData> seedMask = ReadSeedMask(args, numberOfSeeds);
+  tracer->SetInputData(seedMask);
+  return seedMask;
+}
 
-  // The job's figures: geodesics, points, and why they stopped.
+/// The job's figures over every rank: geodesics, points, the lines by why
+/// they stopped, the seeds that made no geodesic by why, and the tracts the
+/// selection dropped by why (TraceFigures' layout).
+struct TraceFigures
+{
+  std::vector<long long> Counts;
+  long long Lines() const { return this->Counts[0]; }
+  long long Points() const { return this->Counts[1]; }
+  long long LinesStoppedBy(int reason) const { return this->Counts[2 + reason]; }
+  const long long* Untraced() const { return this->Counts.data() + 2 + MaximumReason + 1; }
+  const long long* Rejected() const { return this->Counts.data() + 2 + 2 * (MaximumReason + 1); }
+};
+
+TraceFigures CountTraceFigures(vtkRiemannGeodesicTracer* tracer)
+{
+  vtkPolyData* lines = tracer->GetOutput();
   std::vector<long long> counts(2 + MaximumReason + 1, 0);
   counts[0] = lines->GetNumberOfLines();
   counts[1] = lines->GetNumberOfPoints();
@@ -248,8 +260,6 @@ void RunTrace(const TraceArguments& args)
       counts[2 + std::min(std::max(reason, 0), MaximumReason)]++;
     }
   }
-  // The seeds that made no geodesic, by why (after the lines' reasons), then
-  // the tracts the selection dropped, by why.
   for (int reason = 0; reason <= MaximumReason; ++reason)
   {
     counts.push_back(static_cast<long long>(tracer->GetNumberOfUntracedSeeds(reason)));
@@ -258,41 +268,21 @@ void RunTrace(const TraceArguments& args)
   {
     counts.push_back(static_cast<long long>(tracer->GetNumberOfRejectedTracts(why)));
   }
-  counts = SumOverRanks(counts);
-  const std::string untraced =
-    DescribeUntraced(counts.data() + 2 + MaximumReason + 1, propagation == "both" ? 2 : 1);
-  const std::string rejected = DescribeRejectedTracts(counts.data() + 2 + 2 * (MaximumReason + 1));
-  if (counts[0] == 0)
-  {
-    std::string why = untraced;
-    why += (why.empty() || rejected.empty() ? "" : "; ") + rejected;
-    throw Failure("no geodesic could be traced from the given seeds" +
-      (why.empty() ? std::string() : ": " + why));
-  }
+  return TraceFigures{ SumOverRanks(counts) };
+}
 
-  WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
-    [&](vtkPolyData* all, const std::string& temporary)
-    {
-      if (IsTractFile(args.Output))
-      {
-        return WriteTractFile(all, temporary, args.Output, reference);
-      }
-      return extension == "csv" ? WriteGeodesicCsv(all, temporary)
-                                : WritePolyDataFile(all, temporary, args.Compress);
-    });
-  if (Rank() != 0)
-  {
-    return;
-  }
-  // A one-line summary on stderr: how many lines, and why they stopped.
-  std::cerr << "riemann trace: " << counts[0] << " geodesic(s), " << counts[1] << " points -> "
-            << args.Output << " (";
+/// The one-line summary on stderr: how many lines, and why they stopped.
+void PrintTraceSummary(const TraceArguments& args, const TraceFigures& figures,
+  const std::string& untraced, const std::string& rejected)
+{
+  std::cerr << "riemann trace: " << figures.Lines() << " geodesic(s), " << figures.Points()
+            << " points -> " << args.Output << " (";
   bool first = true;
   for (int reason = 0; reason <= MaximumReason; ++reason)
   {
-    if (counts[2 + reason] > 0)
+    if (figures.LinesStoppedBy(reason) > 0)
     {
-      std::cerr << (first ? "" : ", ") << counts[2 + reason] << " "
+      std::cerr << (first ? "" : ", ") << figures.LinesStoppedBy(reason) << " "
                 << TerminationReasonName(reason);
       first = false;
     }
@@ -310,6 +300,60 @@ void RunTrace(const TraceArguments& args)
     std::cerr << "; " << NumberOfRanks() << " ranks";
   }
   std::cerr << ")\n";
+}
+
+void RunTrace(const TraceArguments& args)
+{
+  const std::string extension = CheckTracePaths(args);
+  const OutputLayout layout = ChooseOutputLayout("-o", args.Output, args.Gather, "pvtp");
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<vtkRiemannGeodesicTracer> tracer;
+  vtkNew<ErrorCollector> errors;
+  errors->Observe(tracer);
+  tracer->SetMetric(metric);
+  const std::string propagation = ConfigureTracer(args, tracer);
+  vtkIdType numberOfSeeds = 0;
+  vtkSmartPointer<vtkImageData> seedMask = SetTracerSeeds(args, tracer, numberOfSeeds);
+  CheckOutputSize(args, numberOfSeeds, propagation);
+  // A .trk's reference, before the work: a run without one is refused at once.
+  TractReference reference;
+  if (extension == "trk")
+  {
+    TractArguments tracts = args.Tracts;
+    tracts.SeedMask = args.SeedMask;
+    reference = ChooseTrkReference(tracts, metric, seedMask);
+  }
+  // This rank's share of the seeds (all of them in a single process).
+  UpdateThisRanksPiece(tracer);
+  errors->ThrowIfAny("tracing failed:");
+  AgreeToGoOn();
+
+  const TraceFigures figures = CountTraceFigures(tracer);
+  const std::string untraced = DescribeUntraced(figures.Untraced(), propagation == "both" ? 2 : 1);
+  const std::string rejected = DescribeRejectedTracts(figures.Rejected());
+  if (figures.Lines() == 0)
+  {
+    std::string why = untraced;
+    why += (why.empty() || rejected.empty() ? "" : "; ") + rejected;
+    throw Failure("no geodesic could be traced from the given seeds" +
+      (why.empty() ? std::string() : ": " + why));
+  }
+
+  WriteOutput(tracer, 0, args.Output, layout, args.Compress, {},
+    [&](vtkPolyData* all, const std::string& temporary)
+    {
+      if (IsTractFile(args.Output))
+      {
+        return WriteTractFile(all, temporary, args.Output, reference);
+      }
+      return extension == "csv" ? WriteGeodesicCsv(all, temporary)
+                                : WritePolyDataFile(all, temporary, args.Compress);
+    });
+  if (Rank() == 0)
+  {
+    PrintTraceSummary(args, figures, untraced, rejected);
+  }
 }
 } // namespace
 
