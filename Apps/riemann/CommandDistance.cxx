@@ -130,7 +130,9 @@ std::string DescribeRange(vtkImageData* field)
   return text;
 }
 
-void RunDistance(const DistanceArguments& args)
+/// Refuse missing inputs, outputs of the wrong kind and an MPI launch
+/// before any work.
+void CheckDistancePaths(const DistanceArguments& args)
 {
   CheckFilePaths({ { "-m", args.Metric }, { "--seeds", args.SeedsFile } },
     { { "-o", args.Output }, { "--cut-locus", args.CutLocus }, { "--geodesics", args.Geodesics } });
@@ -160,16 +162,15 @@ void RunDistance(const DistanceArguments& args)
                   "the grid is not split into pieces)",
       2);
   }
-  // Checked while parsing (the declared ranges, at least 2 points per axis, and LimitGridPoints).
-  double box[6];
-  int dims[3];
-  GridOf(*args.Field, box, dims);
-  const std::vector<double> seeds = ReadSeedPoints(args);
-  CheckSeedsInBox(seeds, box);
+}
 
-  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
-  vtkNew<vtkRiemannDistanceField> field;
-  vtkNew<ErrorCollector> errors;
+/// The distance field from `seeds` (x,y,z each), with a progress bar; sets
+/// how long it took.
+vtkSmartPointer<vtkRiemannDistanceField> ComputeDistanceField(const DistanceArguments& args,
+  vtkRiemannMetric* metric, const std::vector<double>& seeds, ErrorCollector* errors,
+  double& seconds)
+{
+  auto field = vtkSmartPointer<vtkRiemannDistanceField>::New();
   errors->Observe(field);
   field->SetMetric(metric);
   riemann::settings::ApplySettings(field, args.Field->Given());
@@ -181,37 +182,50 @@ void RunDistance(const DistanceArguments& args)
   progress->Observe(field, "riemann distance", ProgressBar::StderrIsTerminal());
   const auto start = std::chrono::steady_clock::now();
   field->Update();
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress->Finish();
   errors->ThrowIfAny("the distance field failed:");
-  vtkImageData* image = vtkImageData::SafeDownCast(field->GetOutput());
+  return field;
+}
 
-  vtkNew<vtkRiemannCutLocus> cut;
-  if (!args.CutLocus.empty())
+/// The cut locus of the field `image` (--cut-locus and its settings).
+vtkSmartPointer<vtkRiemannCutLocus> ComputeCutLocus(const DistanceArguments& args,
+  vtkRiemannMetric* metric, vtkImageData* image, ErrorCollector* errors)
+{
+  auto cut = vtkSmartPointer<vtkRiemannCutLocus>::New();
+  errors->Observe(cut);
+  cut->SetMetric(metric);
+  riemann::settings::ApplySettings(cut, args.Cut->Given());
+  cut->SetInputData(image);
+  cut->Update();
+  errors->ThrowIfAny("the cut locus failed:");
+  return cut;
+}
+
+/// The minimal geodesics from the field's seeds to the --to points.
+vtkSmartPointer<vtkRiemannMinimalGeodesics> ComputeMinimalGeodesics(const DistanceArguments& args,
+  vtkRiemannMetric* metric, vtkImageData* image, ErrorCollector* errors)
+{
+  auto minimal = vtkSmartPointer<vtkRiemannMinimalGeodesics>::New();
+  errors->Observe(minimal);
+  minimal->SetMetric(metric);
+  minimal->SetInputData(image);
+  for (const std::string& text : args.Targets)
   {
-    errors->Observe(cut);
-    cut->SetMetric(metric);
-    riemann::settings::ApplySettings(cut, args.Cut->Given());
-    cut->SetInputData(image);
-    cut->Update();
-    errors->ThrowIfAny("the cut locus failed:");
+    double p[3];
+    ParseVector3(text, "--to", p);
+    minimal->AddTarget(p);
   }
-  vtkNew<vtkRiemannMinimalGeodesics> minimal;
-  if (!args.Geodesics.empty())
-  {
-    errors->Observe(minimal);
-    minimal->SetMetric(metric);
-    minimal->SetInputData(image);
-    for (const std::string& text : args.Targets)
-    {
-      double p[3];
-      ParseVector3(text, "--to", p);
-      minimal->AddTarget(p);
-    }
-    minimal->Update();
-    errors->ThrowIfAny("the minimal geodesics failed:");
-  }
+  minimal->Update();
+  errors->ThrowIfAny("the minimal geodesics failed:");
+  return minimal;
+}
+
+/// The field, then the cut locus and the geodesics where asked, each file
+/// written whole or not at all.
+void WriteDistanceOutputs(const DistanceArguments& args, vtkImageData* image,
+  vtkRiemannCutLocus* cut, vtkRiemannMinimalGeodesics* minimal)
+{
   WriteAtomically(args.Output,
     [&](const std::string& temporary)
     {
@@ -221,31 +235,39 @@ void RunDistance(const DistanceArguments& args)
       SetCompressor(writer, args.Compress);
       return writer->Write() == 1;
     });
-  if (!args.CutLocus.empty())
+  if (cut)
   {
     WritePolyDataAtomically(cut->GetOutput(), args.CutLocus, args.Compress);
   }
-  if (!args.Geodesics.empty())
+  if (minimal)
   {
     vtkPolyData* lines = minimal->GetOutput();
+    const bool csv = Extension(args.Geodesics) == "csv";
     WriteAtomically(args.Geodesics,
       [&](const std::string& temporary)
       {
-        return geodesicsExtension == "csv" ? WriteGeodesicCsv(lines, temporary)
-                                           : WritePolyDataFile(lines, temporary, args.Compress);
+        return csv ? WriteGeodesicCsv(lines, temporary)
+                   : WritePolyDataFile(lines, temporary, args.Compress);
       });
   }
+}
+
+/// The one-line summary on stderr: the grid, the range, the work, the files.
+void PrintDistanceSummary(const DistanceArguments& args, const int dims[3], std::size_t seeds,
+  vtkRiemannDistanceField* field, double seconds, vtkRiemannCutLocus* cut,
+  vtkRiemannMinimalGeodesics* minimal)
+{
   std::cerr << "riemann distance: " << dims[0] << "x" << dims[1] << "x" << dims[2] << " grid, "
-            << seeds.size() / 3 << " seed(s): " << DescribeRange(image) << "; "
-            << field->GetNumberOfRounds() << " rounds, " << field->GetNumberOfUpdates()
+            << seeds << " seed(s): " << DescribeRange(vtkImageData::SafeDownCast(field->GetOutput()))
+            << "; " << field->GetNumberOfRounds() << " rounds, " << field->GetNumberOfUpdates()
             << " point updates in " << FormatNumber(std::round(seconds * 100) / 100) << " s -> "
             << args.Output;
-  if (!args.CutLocus.empty())
+  if (cut)
   {
     std::cerr << "; cut locus " << cut->GetOutput()->GetNumberOfPolys() << " squares -> "
               << args.CutLocus;
   }
-  if (!args.Geodesics.empty())
+  if (minimal)
   {
     std::cerr << "; " << minimal->GetOutput()->GetNumberOfLines() << " of " << args.Targets.size()
               << " minimal geodesic(s)";
@@ -257,6 +279,36 @@ void RunDistance(const DistanceArguments& args)
     std::cerr << " -> " << args.Geodesics;
   }
   std::cerr << "\n";
+}
+
+void RunDistance(const DistanceArguments& args)
+{
+  CheckDistancePaths(args);
+  // Checked while parsing (the declared ranges, at least 2 points per axis, and LimitGridPoints).
+  double box[6];
+  int dims[3];
+  GridOf(*args.Field, box, dims);
+  const std::vector<double> seeds = ReadSeedPoints(args);
+  CheckSeedsInBox(seeds, box);
+
+  vtkSmartPointer<vtkRiemannMetric> metric = LoadMetric(args.Metric);
+  vtkNew<ErrorCollector> errors;
+  double seconds = 0.0;
+  vtkSmartPointer<vtkRiemannDistanceField> field =
+    ComputeDistanceField(args, metric, seeds, errors, seconds);
+  vtkImageData* image = vtkImageData::SafeDownCast(field->GetOutput());
+  vtkSmartPointer<vtkRiemannCutLocus> cut;
+  if (!args.CutLocus.empty())
+  {
+    cut = ComputeCutLocus(args, metric, image, errors);
+  }
+  vtkSmartPointer<vtkRiemannMinimalGeodesics> minimal;
+  if (!args.Geodesics.empty())
+  {
+    minimal = ComputeMinimalGeodesics(args, metric, image, errors);
+  }
+  WriteDistanceOutputs(args, image, cut, minimal);
+  PrintDistanceSummary(args, dims, seeds.size() / 3, field, seconds, cut, minimal);
 }
 } // namespace
 
