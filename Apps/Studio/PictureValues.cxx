@@ -69,11 +69,6 @@ nlohmann::json CameraValues(vtkCamera* camera)
   return CameraPart(riemann::settings::SettingValues(picture));
 }
 
-bool IsCameraValue(const std::string& key)
-{
-  return vtkRiemannPictureSettings::IsCameraSetting(key);
-}
-
 std::string CheckCameraValues(const nlohmann::json& values)
 {
   vtkNew<vtkRiemannPictureSettings> picture;

@@ -33,9 +33,6 @@ std::vector<PropertySpec> PicturePropertySpecs();
 /// The camera's settings (Position, LookAt, ViewUp, ViewAngle).
 nlohmann::json CameraValues(vtkCamera* camera);
 
-/// True when `key` is one of the camera's settings.
-bool IsCameraValue(const std::string& key);
-
 /**
  * Set the camera settings that `values` names on `camera`, if the camera
  * they make still defines a view; else leave it alone and say why ("the

@@ -13,6 +13,8 @@
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannScene.h"
 
+#include "vtkRiemannPictureSettings.h"
+
 #include "vtkCamera.h"
 #include "vtkNew.h"
 
@@ -69,7 +71,7 @@ std::vector<std::string> CameraSettingNames()
   for (const riemann::SettingDeclaration& setting :
     riemann::declared::vtkRiemannPictureSettings::Settings)
   {
-    if (IsCameraValue(setting.Name))
+    if (vtkRiemannPictureSettings::IsCameraSetting(setting.Name))
     {
       names.push_back(setting.Name);
     }

@@ -33,6 +33,8 @@
 #include "vtkRiemannRayTracePass.h"
 #include "vtkRiemannScene.h"
 
+#include "vtkRiemannPictureSettings.h"
+
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -666,7 +668,7 @@ void StudioMainWindow::ShowInsideViewSettings()
       nlohmann::json camera = nlohmann::json::object();
       for (const auto& entry : changes.items())
       {
-        if (IsCameraValue(entry.key()))
+        if (vtkRiemannPictureSettings::IsCameraSetting(entry.key()))
         {
           camera[entry.key()] = entry.value();
         }
@@ -682,7 +684,7 @@ void StudioMainWindow::ShowInsideViewSettings()
       nlohmann::json integration = nlohmann::json::object();
       for (const auto& entry : changes.items())
       {
-        if (IsCameraValue(entry.key()))
+        if (vtkRiemannPictureSettings::IsCameraSetting(entry.key()))
         {
           continue;
         }

@@ -15,6 +15,8 @@
 #include "RiemannPictureSettingsDeclaration.h"
 #include "SettingValues.h"
 
+#include "vtkRiemannPictureSettings.h"
+
 #include "vtkCamera.h"
 
 #include <QCoreApplication>
@@ -329,7 +331,7 @@ Json StudioObserver(StudioMainWindow& window, const Json& args)
   for (const riemann::SettingDeclaration& setting :
     riemann::declared::vtkRiemannPictureSettings::Settings)
   {
-    if (!IsCameraValue(setting.Name) || !current.at(setting.Name).is_array())
+    if (!vtkRiemannPictureSettings::IsCameraSetting(setting.Name) || !current.at(setting.Name).is_array())
     {
       continue; // the view angle is the form's
     }
