@@ -1,6 +1,6 @@
-// A flight of the observer through curved space (vtkRiemannCameraPath): the
-// path as a tube and, at each frame, a cone along "straight ahead"; File >
-// Export Animation flies the inside view along it.
+// A flight of the observer through curved space (vtkRiemannCameraPath),
+// shown as a tube and, at each frame, a cone along "straight ahead" (its
+// Forward array); File > Export Animation flies the inside view along it.
 #include "PipelineItems.h"
 
 #include "ColorMaps.h"
@@ -12,16 +12,9 @@
 #include "vtkRiemannCameraPath.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
-#include "vtkConeSource.h"
-#include "vtkGlyph3D.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkTubeFilter.h"
 
 #include <algorithm>
 
@@ -42,34 +35,23 @@ nlohmann::json CameraPathDefaults()
   values["KeyPositions"] = nlohmann::json::array();
   return values;
 }
+
+/// A cyan tube, with cones along each frame's Forward: where the observer looks.
+OutputLook CameraPathLook()
+{
+  OutputLook look = LookOf("vtkPolyData", { { 0.3, 0.85, 0.95 } }, true);
+  look.TubeRadius = 0.01;
+  look.HeadingArray = "Forward";
+  return look;
+}
 }
 
 CameraPathItem::CameraPathItem(const QString& name)
-  : PipelineItem(name, CameraPathDefaults())
+  : PipelineItem(name, CameraPathDefaults(), { CameraPathLook() })
 {
-  this->Tubes->SetNumberOfSides(8);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(this->Tubes->GetOutputPort());
-  this->Path->SetMapper(mapper);
-  this->Assembly->AddPart(this->Path);
-  // Cones along each frame's Forward: where the observer looks.
-  vtkNew<vtkConeSource> cone;
-  cone->SetResolution(12);
-  cone->SetHeight(1.0);
-  cone->SetRadius(0.3);
-  this->Heading->SetSourceConnection(cone->GetOutputPort());
-  this->Heading->SetVectorModeToUseVector();
-  this->Heading->SetScaleModeToDataScalingOff();
-  this->Heading->OrientOn();
-  vtkNew<vtkPolyDataMapper> headingMapper;
-  headingMapper->SetInputConnection(this->Heading->GetOutputPort());
-  this->Cones->SetMapper(headingMapper);
-  this->Cones->GetProperty()->SetColor(0.95, 0.95, 0.95);
-  this->Assembly->AddPart(this->Cones);
-  this->UpdateDisplay();
 }
 
-std::vector<PropertySpec> CameraPathItem::Properties() const
+std::vector<PropertySpec> CameraPathItem::ItemProperties() const
 {
   // The key positions are the spline's input points, not a property of the
   // filter (SetKeyPositions takes vtkPoints): the item's own field.
@@ -83,10 +65,6 @@ std::vector<PropertySpec> CameraPathItem::Properties() const
   const auto afterLength = std::find_if(specs.begin(), specs.end(),
     [](const PropertySpec& spec) { return spec.Key == "Length"; });
   specs.insert(afterLength == specs.end() ? specs.end() : afterLength + 1, keys);
-  for (const PropertySpec& display : this->DisplayProperties())
-  {
-    specs.push_back(display);
-  }
   return specs;
 }
 
@@ -112,29 +90,6 @@ void CameraPathItem::SetKeyPositions(vtkRiemannCameraPath* path) const
     keys->InsertNextPoint(key[0].get<double>(), key[1].get<double>(), key[2].get<double>());
   }
   path->SetKeyPositions(keys);
-}
-
-void CameraPathItem::UpdateDisplay()
-{
-  auto* path = vtkPolyData::SafeDownCast(this->Result(0));
-  const bool shown = path && path->GetNumberOfPoints() > 1;
-  if (shown)
-  {
-    this->Tubes->SetInputData(path);
-    path->GetPointData()->SetActiveVectors("Forward");
-    this->Heading->SetInputData(path);
-    double bounds[6];
-    path->GetBounds(bounds);
-    const double size =
-      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-    this->Tubes->SetRadius(0.01 * size);
-    this->Heading->SetScaleFactor(0.06 * size);
-  }
-  const double cyan[3] = { 0.3, 0.85, 0.95 };
-  ApplyColoring(this->Path, path, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
-    cyan, this->ScalarBar());
-  this->Path->SetVisibility(shown);
-  this->Cones->SetVisibility(shown);
 }
 
 std::vector<std::string> CameraPathItem::PythonLines(const std::string& var) const

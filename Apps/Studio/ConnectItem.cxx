@@ -1,4 +1,4 @@
-// Every geodesic between two points (vtkRiemannGeodesicConnector), drawn as
+// Every geodesic between two points (vtkRiemannGeodesicConnector), shown as
 // the picked ray is: tubes, and a ball where they end.
 #include "PipelineItems.h"
 
@@ -12,13 +12,7 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkSphereSource.h"
-#include "vtkTubeFilter.h"
 
 #include <algorithm>
 
@@ -36,30 +30,28 @@ nlohmann::json ConnectDefaults()
     riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
     nlohmann::json::object());
 }
+
+/// The picked ray's look (OutsideView::ShowPickedRay): magenta tubes, and a magenta ball.
+std::vector<OutputLook> ConnectLooks()
+{
+  const std::array<double, 3> magenta{ { PickedRayColor[0], PickedRayColor[1], PickedRayColor[2] } };
+  OutputLook lines = LookOf("vtkPolyData", magenta, true);
+  lines.TubeRadius = 0.006;
+  OutputLook end = LookOf("vtkPolyData", magenta, false);
+  end.FollowsColoring = false;
+  return { lines, end };
+}
 }
 
 ConnectItem::ConnectItem(const QString& name)
-  : PipelineItem(name, ConnectDefaults())
+  : PipelineItem(name, ConnectDefaults(), ConnectLooks())
 {
-  // The picked ray's look (OutsideView::ShowPickedRay): magenta tubes.
-  this->Tubes->SetNumberOfSides(8);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(this->Tubes->GetOutputPort());
-  this->Lines->SetMapper(mapper);
-  this->Lines->GetProperty()->SetColor(PickedRayColor[0], PickedRayColor[1], PickedRayColor[2]);
-  this->Assembly->AddPart(this->Lines);
-  vtkNew<vtkPolyDataMapper> endMapper;
-  endMapper->SetInputConnection(this->End->GetOutputPort());
-  this->EndBall->SetMapper(endMapper);
-  this->EndBall->GetProperty()->SetColor(PickedRayColor[0], PickedRayColor[1], PickedRayColor[2]);
-  this->Assembly->AddPart(this->EndBall);
-  this->UpdateDisplay();
 }
 
-std::vector<PropertySpec> ConnectItem::Properties() const
+std::vector<PropertySpec> ConnectItem::ItemProperties() const
 {
   // Ctrl+click in the outside view picks From, then To (TakePickedPoint).
-  return this->WithIntegrationAndDisplay(
+  return WithIntegration(
     DeclaredPropertySpecs(riemann::declared::vtkRiemannGeodesicConnector::Settings));
 }
 
@@ -68,28 +60,21 @@ vtkSmartPointer<vtkAlgorithm> ConnectItem::MakeJob(const JobInputs& inputs) cons
   return DeclaredJob<vtkRiemannGeodesicConnector>(this->Settings(), inputs);
 }
 
-void ConnectItem::UpdateDisplay()
+std::vector<vtkSmartPointer<vtkDataObject>> ConnectItem::ShownData() const
 {
-  auto* lines = vtkPolyData::SafeDownCast(this->Result(0));
-  double to[3];
-  this->Vector("EndPosition", to, 3);
-  this->End->SetCenter(to);
-  if (lines)
+  vtkSmartPointer<vtkDataObject> result = this->Result(0);
+  auto* lines = vtkPolyData::SafeDownCast(result);
+  if (!lines || lines->GetNumberOfLines() == 0)
   {
-    this->Tubes->SetInputData(lines);
-    // Sized with the geodesics, as the picked ray with the scene.
-    double bounds[6];
-    lines->GetBounds(bounds);
-    const double size = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2],
-      bounds[5] - bounds[4], 1.0 });
-    this->Tubes->SetRadius(0.006 * size);
-    this->End->SetRadius(0.02 * size);
+    return { nullptr, nullptr };
   }
-  ApplyColoring(this->Lines, lines, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
-    PickedRayColor, this->ScalarBar());
-  const bool shown = lines && lines->GetNumberOfLines() > 0;
-  this->Lines->SetVisibility(shown);
-  this->EndBall->SetVisibility(shown);
+  // Sized with the geodesics, as the picked ray with the scene.
+  double to[3], bounds[6];
+  this->Vector("EndPosition", to, 3);
+  lines->GetBounds(bounds);
+  const double size =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
+  return { result, SphereMarker(to, 0.02 * size) };
 }
 
 std::vector<std::string> ConnectItem::PythonLines(const std::string& var) const

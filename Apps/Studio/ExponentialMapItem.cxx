@@ -10,12 +10,8 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 
 namespace riemann
 {
@@ -30,52 +26,32 @@ nlohmann::json ExponentialMapDefaults()
   return FilterDefaults(riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
     { { "ColorArray", "TransverseJacobian" } });
 }
+
+/// The rays faint and grey, so that the wavefronts (blue, with the legend) read.
+std::vector<OutputLook> ExponentialMapLooks()
+{
+  OutputLook rays = LookOf("vtkPolyData", { { 0.9, 0.9, 0.9 } }, false);
+  rays.OpacityScale = 0.35;
+  OutputLook fronts = LookOf("vtkPolyData", { { 0.3, 0.7, 1.0 } }, true);
+  fronts.OpacityScale = 0.8;
+  return { rays, fronts };
+}
 }
 
 ExponentialMapItem::ExponentialMapItem(const QString& name)
-  : PipelineItem(name, ExponentialMapDefaults())
+  : PipelineItem(name, ExponentialMapDefaults(), ExponentialMapLooks())
 {
-  for (vtkActor* actor : { this->Rays.Get(), this->Wavefronts.Get() })
-  {
-    vtkNew<vtkPolyDataMapper> mapper;
-    actor->SetMapper(mapper);
-    this->Assembly->AddPart(actor);
-  }
-  this->UpdateDisplay();
 }
 
-std::vector<PropertySpec> ExponentialMapItem::Properties() const
+std::vector<PropertySpec> ExponentialMapItem::ItemProperties() const
 {
-  return this->WithIntegrationAndDisplay(
+  return WithIntegration(
     DeclaredPropertySpecs(riemann::declared::vtkRiemannExponentialMap::Settings));
 }
 
 vtkSmartPointer<vtkAlgorithm> ExponentialMapItem::MakeJob(const JobInputs& inputs) const
 {
   return DeclaredJob<vtkRiemannExponentialMap>(this->Settings(), inputs);
-}
-
-void ExponentialMapItem::UpdateDisplay()
-{
-  const std::string array = this->Text("ColorArray");
-  const double opacity = this->Number("Opacity");
-  const double rayColor[3] = { 0.9, 0.9, 0.9 };
-  const double frontColor[3] = { 0.3, 0.7, 1.0 };
-  auto* rays = vtkPolyData::SafeDownCast(this->Result(0));
-  auto* fronts = vtkPolyData::SafeDownCast(this->Result(1));
-  if (rays)
-  {
-    vtkPolyDataMapper::SafeDownCast(this->Rays->GetMapper())->SetInputData(rays);
-  }
-  if (fronts)
-  {
-    vtkPolyDataMapper::SafeDownCast(this->Wavefronts->GetMapper())->SetInputData(fronts);
-  }
-  // The rays stay faint so the wavefronts read.
-  ApplyColoring(this->Rays, rays, this->Coloring(array, 0.35 * opacity), rayColor);
-  ApplyColoring(this->Wavefronts, fronts, this->Coloring(array, 0.8 * opacity), frontColor, this->ScalarBar());
-  this->Rays->SetVisibility(rays != nullptr);
-  this->Wavefronts->SetVisibility(fronts != nullptr);
 }
 
 std::vector<std::string> ExponentialMapItem::PythonLines(const std::string& var) const

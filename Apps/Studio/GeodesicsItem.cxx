@@ -11,11 +11,6 @@
 #include "vtkRiemannIntegrationSettings.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
-#include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 
 namespace riemann
 {
@@ -40,41 +35,30 @@ nlohmann::json GeodesicsDefaults()
   return FilterDefaults(riemann::settings::SettingValues(filter), filter->GetIntegrationSettings(),
     nlohmann::json::object(), MaskSeedSettings(), tracer::Fan::Json);
 }
+
+/// Yellow polylines, two pixels wide.
+OutputLook GeodesicsLook()
+{
+  OutputLook look = LookOf("vtkPolyData", { { 1.0, 0.85, 0.2 } }, true);
+  look.LineWidth = 2.0;
+  return look;
+}
 }
 
 GeodesicsItem::GeodesicsItem(const QString& name)
-  : PipelineItem(name, GeodesicsDefaults())
+  : PipelineItem(name, GeodesicsDefaults(), { GeodesicsLook() })
 {
-  vtkNew<vtkPolyDataMapper> mapper;
-  this->Lines->SetMapper(mapper);
-  this->Lines->GetProperty()->SetLineWidth(2.0);
-  this->Assembly->AddPart(this->Lines);
-  this->UpdateDisplay();
 }
 
-std::vector<PropertySpec> GeodesicsItem::Properties() const
+std::vector<PropertySpec> GeodesicsItem::ItemProperties() const
 {
-  return this->WithIntegrationAndDisplay(
+  return WithIntegration(
     DeclaredPropertySpecs(tracer::Settings, MaskSeedSettings()));
 }
 
 vtkSmartPointer<vtkAlgorithm> GeodesicsItem::MakeJob(const JobInputs& inputs) const
 {
   return DeclaredJob<vtkRiemannGeodesicTracer>(this->Settings(), inputs);
-}
-
-void GeodesicsItem::UpdateDisplay()
-{
-  auto* lines = vtkPolyData::SafeDownCast(this->Result(0));
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(this->Lines->GetMapper());
-  if (lines)
-  {
-    mapper->SetInputData(lines);
-  }
-  const double yellow[3] = { 1.0, 0.85, 0.2 };
-  ApplyColoring(this->Lines, lines, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
-    yellow, this->ScalarBar());
-  this->Lines->SetVisibility(lines != nullptr);
 }
 
 std::vector<std::string> GeodesicsItem::PythonLines(const std::string& var) const

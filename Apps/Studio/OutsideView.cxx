@@ -1,5 +1,7 @@
 #include "OutsideView.h"
 
+#include "ItemDisplay.h"
+
 #include "ColorMaps.h"
 #include "PipelineItem.h"
 #include "StudioDocument.h"
@@ -208,21 +210,41 @@ void OutsideView::DragKey(int key, const double position[3])
 
 void OutsideView::AddItem(PipelineItem* item)
 {
-  this->SceneRenderer->AddViewProp(item->Prop());
-  this->SceneRenderer->AddViewProp(item->ScalarBar());
-  auto render = [this]() { this->ScheduleRender(); };
-  QObject::connect(item, &PipelineItem::ResultChanged, this, render);
-  QObject::connect(item, &PipelineItem::VisibilityChanged, this, render);
-  QObject::connect(item, &PipelineItem::SettingsChanged, this, render);
+  auto display = std::make_unique<ItemDisplay>(*item);
+  display->Show(*item);
+  this->SceneRenderer->AddViewProp(display->Prop());
+  this->SceneRenderer->AddViewProp(display->ScalarBar());
+  ItemDisplay* shown = display.get();
+  this->Displays[item] = std::move(display);
+  // Redrawn at once (the panel and tests read it back), rendered once the event is handled.
+  auto redraw = [this, item, shown]() {
+    shown->Show(*item);
+    this->ScheduleRender();
+  };
+  QObject::connect(item, &PipelineItem::ResultChanged, this, redraw);
+  QObject::connect(item, &PipelineItem::VisibilityChanged, this, redraw);
+  QObject::connect(item, &PipelineItem::SettingsChanged, this, redraw);
+  QObject::connect(item, &PipelineItem::DisplayChanged, this, redraw);
   this->ScheduleRender();
 }
 
 void OutsideView::RemoveItem(PipelineItem* item)
 {
-  this->SceneRenderer->RemoveViewProp(item->Prop());
-  this->SceneRenderer->RemoveViewProp(item->ScalarBar());
+  const auto found = this->Displays.find(item);
+  if (found != this->Displays.end())
+  {
+    this->SceneRenderer->RemoveViewProp(found->second->Prop());
+    this->SceneRenderer->RemoveViewProp(found->second->ScalarBar());
+    this->Displays.erase(found);
+  }
   QObject::disconnect(item, nullptr, this, nullptr);
   this->ScheduleRender();
+}
+
+ItemDisplay* OutsideView::DisplayOf(const PipelineItem* item) const
+{
+  const auto found = this->Displays.find(item);
+  return found == this->Displays.end() ? nullptr : found->second.get();
 }
 
 void OutsideView::UpdateObserver()

@@ -6,6 +6,10 @@
  * frustum, the same camera placement), every pipeline item, and the picked
  * ray.
  *
+ * The view owns what it draws for each item (ItemDisplay): one display per
+ * output, chosen by the output's data type, redrawn when the item's
+ * results, settings or visibility change.
+ *
  * The eye is a handle: dragging it moves the observer (position and look-at
  * point together), so the inside view follows; navigating the inside view
  * moves the eye here. Ctrl+click picks a point (on what is drawn there, else
@@ -26,6 +30,8 @@
 
 #include <array>
 #include <functional>
+#include <map>
+#include <memory>
 #include <vector>
 
 class vtkActor;
@@ -39,6 +45,7 @@ namespace riemann
 {
 namespace studio
 {
+class ItemDisplay;
 class PipelineItem;
 class StudioDocument;
 
@@ -84,6 +91,8 @@ public:
   int NumberOfKeyHandles() const { return static_cast<int>(this->KeyHandles.size()); }
   /// Moves handle `key` to `position` as a drag ending there would (tests).
   void DragKey(int key, const double position[3]);
+  /// What the view draws for `item` (null for an item not in the document).
+  ItemDisplay* DisplayOf(const PipelineItem* item) const;
   ///@}
 
 Q_SIGNALS:
@@ -109,6 +118,8 @@ private:
   vtkNew<vtkCallbackCommand> PickCommand;
   std::vector<vtkSmartPointer<vtkHandleWidget>> KeyHandles;
   std::function<void(const Keys&)> KeysMoved;
+  /// The displays of the document's items.
+  std::map<const PipelineItem*, std::unique_ptr<ItemDisplay>> Displays;
   bool MovingEye = false;
   bool RenderPending = false;
 };

@@ -8,16 +8,12 @@
 
 #include "ColorMaps.h"
 #include "IntegrationValues.h"
+#include "OutputDisplay.h"
 
-#include "vtkCutter.h"
-#include "vtkImageData.h"
-#include "vtkPlane.h"
-#include "vtkPolyData.h"
 #include "vtkNew.h"
 #include "vtkRiemannIntegrationSettings.h"
 
 #include "vtkAlgorithm.h"
-#include "vtkAssembly.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
@@ -165,26 +161,22 @@ QString CheckPropertyValue(const PropertySpec& spec, const nlohmann::json& value
   return QStringLiteral("unknown kind of setting");
 }
 
-PipelineItem::PipelineItem(const QString& name, nlohmann::json defaults)
-  : Assembly(vtkSmartPointer<vtkAssembly>::New())
+PipelineItem::PipelineItem(const QString& name, nlohmann::json defaults, std::vector<OutputLook> looks)
+  : OutputLooks(std::move(looks))
   , ItemName(name)
   , Values(std::move(defaults))
 {
-  // Display settings every item has.
-  this->Values.emplace("ColorArray", "Solid");
-  // Perceptual and colour-blind safe by default (ColorMaps.h).
-  this->Values.emplace("ColorMap", "viridis");
-  this->Values.emplace("Opacity", 1.0);
-  this->Values.emplace("ColorRange", "data");
-  this->Values.emplace("ColorRangeMinimum", 0.0);
-  this->Values.emplace("ColorRangeMaximum", 1.0);
-  this->Values.emplace("ColorSteps", 0);
-  this->Values.emplace("ScalarBar", false);
-  this->Bar->SetVisibility(false);
-  this->Bar->SetNumberOfLabels(5);
-  this->Bar->SetPosition(0.88, 0.1);
-  this->Bar->SetWidth(0.08);
-  this->Bar->SetHeight(0.8);
+  // The displays' settings, but those the item gives itself.
+  std::vector<std::string> types;
+  for (const OutputLook& look : this->OutputLooks)
+  {
+    types.push_back(look.DataType);
+  }
+  const nlohmann::json displayDefaults = DisplayDefaults(types);
+  for (const auto& entry : displayDefaults.items())
+  {
+    this->Values.emplace(entry.key(), entry.value());
+  }
 }
 
 ColorScale PipelineItem::Coloring(const std::string& array, double opacity) const
@@ -225,7 +217,7 @@ void PipelineItem::SetTimeRange(const double range[2], const std::string& source
   this->TimeRange[0] = range[0];
   this->TimeRange[1] = range[1] > range[0] ? range[1] : range[0] + 1e-12;
   this->TimeRangeFor = source;
-  this->UpdateDisplay();
+  Q_EMIT this->DisplayChanged();
 }
 
 void PipelineItem::SetName(const QString& name)
@@ -242,22 +234,30 @@ void PipelineItem::SetVisible(bool visible)
   if (visible != this->Visible)
   {
     this->Visible = visible;
-    this->Assembly->SetVisibility(visible);
-    if (visible)
-    {
-      this->UpdateDisplay(); // the legend comes back with the colouring
-    }
-    else
-    {
-      this->Bar->SetVisibility(false);
-    }
     Q_EMIT this->VisibilityChanged();
   }
 }
 
 std::vector<PropertySpec> PipelineItem::Properties() const
 {
-  return this->DisplayProperties();
+  std::vector<PropertySpec> specs = this->ItemProperties();
+  std::vector<std::string> types;
+  for (const OutputLook& look : this->OutputLooks)
+  {
+    types.push_back(look.DataType);
+  }
+  for (const PropertySpec& spec : DisplayPropertySpecs(types, this->ColorArrays(), this->Text("ColorArray")))
+  {
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+std::vector<vtkSmartPointer<vtkDataObject>> PipelineItem::ShownData() const
+{
+  std::vector<vtkSmartPointer<vtkDataObject>> shown = this->Results;
+  shown.resize(this->OutputLooks.size());
+  return shown;
 }
 
 void PipelineItem::RevertSettings(const nlohmann::json& settings)
@@ -267,7 +267,6 @@ void PipelineItem::RevertSettings(const nlohmann::json& settings)
     return;
   }
   this->Values = settings;
-  this->UpdateDisplay();
   Q_EMIT this->SettingsChanged(false);
 }
 
@@ -316,7 +315,6 @@ QString PipelineItem::ApplySettings(const nlohmann::json& settings)
   {
     this->Values[entry.key()] = entry.value();
   }
-  this->UpdateDisplay();
   Q_EMIT this->SettingsChanged(needsRun);
   return QString();
 }
@@ -335,7 +333,6 @@ void PipelineItem::TakeResult(vtkAlgorithm* job)
     }
     this->Results.push_back(copy);
   }
-  this->UpdateDisplay();
   Q_EMIT this->ResultChanged();
 }
 
@@ -369,74 +366,6 @@ QStringList PipelineItem::ColorArrays() const
     }
   }
   return names;
-}
-
-std::vector<PropertySpec> PipelineItem::DisplayProperties() const
-{
-  PropertySpec array;
-  array.Key = "ColorArray";
-  array.Label = "Colour by";
-  array.Type = PropertySpec::Choice;
-  array.Choices = QStringList{ "Solid" } + this->ColorArrays();
-  // Keep the current choice selectable before the first result arrives.
-  const QString current = QString::fromStdString(this->Text("ColorArray"));
-  if (!array.Choices.contains(current))
-  {
-    array.Choices << current;
-  }
-  array.Help = "The point or cell array that colours the item (Solid, or an array the item "
-               "does not have: one colour)";
-  array.OpenChoice = true;
-  array.Display = true;
-
-  PropertySpec map;
-  map.Key = "ColorMap";
-  map.Label = "Colour map";
-  map.Type = PropertySpec::Choice;
-  map.Choices = ColorMapNames();
-  map.Display = true;
-
-  PropertySpec opacity;
-  opacity.Key = "Opacity";
-  opacity.Label = "Opacity";
-  opacity.Minimum = 0.0;
-  opacity.Maximum = 1.0;
-  opacity.Display = true;
-
-  // The colour-map editor: range, steps and legend.
-  PropertySpec range;
-  range.Key = "ColorRange";
-  range.Label = "Colour range";
-  range.Type = PropertySpec::Choice;
-  range.Choices = QStringList{ "data", "custom", "over time" };
-  range.Help = "data: the array's own range (a diverging map centred on zero); custom: the "
-               "minimum and maximum below; over time: the array's range over t = 0, 1/8, ..., 1 "
-               "(the same colours in every frame of a film)";
-  range.Display = true;
-  PropertySpec minimum;
-  minimum.Key = "ColorRangeMinimum";
-  minimum.Label = "Range minimum";
-  minimum.Help = "The value at the map's first colour (custom range)";
-  minimum.Display = true;
-  PropertySpec maximum = minimum;
-  maximum.Key = "ColorRangeMaximum";
-  maximum.Label = "Range maximum";
-  maximum.Help = "The value at the map's last colour (custom range; above the minimum)";
-  PropertySpec steps;
-  steps.Key = "ColorSteps";
-  steps.Label = "Discrete colours";
-  steps.Type = PropertySpec::Integer;
-  steps.Minimum = 0;
-  steps.Maximum = 256;
-  steps.Help = "0: a continuous map; N (2 to 256): N bands of equal width";
-  steps.Display = true;
-  PropertySpec bar;
-  bar.Key = "ScalarBar";
-  bar.Label = "Scalar bar";
-  bar.Type = PropertySpec::Boolean;
-  bar.Help = "Show the map's legend in the outside view";
-  bar.Display = true;
-  return { array, map, opacity, range, minimum, maximum, steps, bar };
 }
 
 double PipelineItem::Number(const char* key) const
@@ -494,51 +423,9 @@ std::vector<std::string> PipelineItem::IntegrationPythonLines(const std::string&
   return IntegrationPython(var + ".GetIntegrationSettings()", settings);
 }
 
-std::vector<PropertySpec> PipelineItem::SliceProperties() const
-{
-  PropertySpec normal;
-  normal.Key = "SliceNormal";
-  normal.Label = "Slice normal";
-  normal.Type = PropertySpec::Choice;
-  normal.Choices = QStringList{ "x", "y", "z" };
-  normal.Display = true;
-
-  PropertySpec offset;
-  offset.Key = "SliceOffset";
-  offset.Label = "Slice offset";
-  offset.Help = "Distance of the slice from the grid's centre along its normal";
-  offset.Display = true;
-  return { normal, offset };
-}
-
-vtkSmartPointer<vtkPolyData> PipelineItem::SliceOf(vtkImageData* image) const
-{
-  const std::string normal = this->Text("SliceNormal");
-  const int axis = normal == "x" ? 0 : normal == "y" ? 1 : 2;
-  double bounds[6];
-  image->GetBounds(bounds);
-  double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  origin[axis] += this->Number("SliceOffset");
-  double direction[3] = { 0, 0, 0 };
-  direction[axis] = 1.0;
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(origin);
-  plane->SetNormal(direction);
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(image);
-  cutter->SetCutFunction(plane);
-  cutter->Update();
-  return cutter->GetOutput();
-}
-
-std::vector<PropertySpec> PipelineItem::WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const
+std::vector<PropertySpec> PipelineItem::WithIntegration(std::vector<PropertySpec> specs)
 {
   for (const PropertySpec& spec : IntegrationPropertySpecs())
-  {
-    specs.push_back(spec);
-  }
-  for (const PropertySpec& spec : this->DisplayProperties())
   {
     specs.push_back(spec);
   }

@@ -9,8 +9,10 @@
  * own filter, configured from the item's settings with private copies of
  * the metric, scene and camera (vtkRiemannMetric::ShallowCopy), so the job
  * may run on a worker thread while the user goes on editing. TakeResult()
- * keeps the job's output and feeds the item's display pipeline (mappers of
- * the outside view).
+ * keeps the job's output. An item draws nothing either: it says what it
+ * shows (ShownData(), one OutputLook each) and the outside view draws it
+ * with the display its data type has (ItemDisplay.h, OutputDisplay.h),
+ * whose settings the item's form and project carry.
  *
  * Settings are one JSON object keyed by the toolkit's property names
  * (StartPosition, ConeAngle, IntegratorType, ...): the properties panel
@@ -26,18 +28,14 @@
 #include <QString>
 #include <QStringList>
 
-#include "ColorMaps.h"           // For ColorScale
-#include "vtkAssembly.h" // For the Prop() held by vtkSmartPointer
-#include "vtkNew.h"             // For the scalar bar
-#include "vtkScalarBarActor.h"  // For the scalar bar
+#include "ColorMaps.h"   // For ColorScale
+#include "ShownOutput.h" // For OutputLook
 #include "vtkSmartPointer.h"
 
 #include <string>
 #include <vector>
 
 class vtkAlgorithm;
-class vtkImageData;
-class vtkPolyData;
 class vtkCamera;
 class vtkDataObject;
 class vtkRiemannIntegrationSettings;
@@ -83,6 +81,8 @@ struct PropertySpec
   QStringList Aliases;
   /// Display-only (colouring, opacity): changing it does not re-run the job.
   bool Display = false;
+  /// A new item's value, where the field's declaration gives one (the displays').
+  nlohmann::json Default;
 };
 
 /**
@@ -141,8 +141,12 @@ public:
   bool IsVisible() const { return this->Visible; }
   void SetVisible(bool visible);
 
-  /// The settings the panel shows (with the current colouring choices).
-  virtual std::vector<PropertySpec> Properties() const;
+  /**
+   * The settings the panel shows: the item's own (ItemProperties()), then
+   * the display settings of its outputs' data types (DisplayPropertySpecs,
+   * with the current colouring choices).
+   */
+  std::vector<PropertySpec> Properties() const;
   const nlohmann::json& Settings() const { return this->Values; }
   /**
    * Check and take new settings (keys not given keep their value). Returns
@@ -172,10 +176,14 @@ public:
   /// Noticeable work: run with the progress bar (all jobs run off the GUI thread).
   virtual bool IsLongJob() const { return false; }
 
-  /// What the outside view shows for this item.
-  vtkAssembly* Prop() const { return this->Assembly; }
-  /// The item's legend (shown when its ScalarBar setting is on and an array colours it).
-  vtkScalarBarActor* ScalarBar() const { return this->Bar; }
+  /// How each output the item shows looks (its data type picks the view's display).
+  const std::vector<OutputLook>& Looks() const { return this->OutputLooks; }
+  /**
+   * What the item shows, one per look: its results (the default), or what
+   * it derives from them for the view (a distance field's cut locus, a
+   * marker at its seed). Null entries are not shown.
+   */
+  virtual std::vector<vtkSmartPointer<vtkDataObject>> ShownData() const;
 
   /// Python lines that build this item with `import riemann` (trace export):
   /// `var` is the filter's variable; `metric`, `scene`, `camera` exist.
@@ -218,21 +226,21 @@ Q_SIGNALS:
   /// needsRun: the job's settings changed (not only the display).
   void SettingsChanged(bool needsRun);
   void ResultChanged();
+  /// Only how it is drawn changed (a colour range sampled over time).
+  void DisplayChanged();
   void NameChanged();
   void VisibilityChanged();
 
 protected:
-  PipelineItem(const QString& name, nlohmann::json defaults);
+  /// `defaults`: the item's settings (and any display default it overrides);
+  /// `looks`: what it shows, whose displays' defaults complete the settings.
+  PipelineItem(const QString& name, nlohmann::json defaults, std::vector<OutputLook> looks);
 
-  /// Rebuild the display (actors in Prop()) from the results and settings.
-  virtual void UpdateDisplay() = 0;
+  /// The item's own settings: its filter's, and any the item derives its shown data with.
+  virtual std::vector<PropertySpec> ItemProperties() const = 0;
   /// How `array` colours the item at `opacity`: the colour-map settings
   /// (ColorMap, ColorRange and its minimum and maximum, ColorSteps, ScalarBar).
   ColorScale Coloring(const std::string& array, double opacity) const;
-  /// The display settings every item has: ColorArray, ColorMap, Opacity and
-  /// the colour-map editor's (ColorRange, ColorRangeMinimum,
-  /// ColorRangeMaximum, ColorSteps, ScalarBar).
-  std::vector<PropertySpec> DisplayProperties() const;
   /// Shared helpers for the concrete items.
   double Number(const char* key) const;
   int Integer(const char* key) const;
@@ -243,20 +251,15 @@ protected:
   void ApplyIntegration(vtkRiemannIntegrationSettings* settings) const;
   /// The Python lines of ApplyIntegration.
   std::vector<std::string> IntegrationPythonLines(const std::string& var) const;
-  /// The slice of a grid result ("SliceNormal" x|y|z, "SliceOffset" from the
-  /// grid's centre): the two settings, and the slice of `image` they make.
-  std::vector<PropertySpec> SliceProperties() const;
-  vtkSmartPointer<vtkPolyData> SliceOf(vtkImageData* image) const;
-  /// `specs` followed by the integration and display settings.
-  std::vector<PropertySpec> WithIntegrationAndDisplay(std::vector<PropertySpec> specs) const;
+  /// `specs` followed by the integration settings.
+  static std::vector<PropertySpec> WithIntegration(std::vector<PropertySpec> specs);
 
   std::vector<vtkSmartPointer<vtkDataObject>> Results;
-  vtkSmartPointer<vtkAssembly> Assembly;
-  vtkNew<vtkScalarBarActor> Bar;
 
 private:
   double TimeRange[2] = { 0.0, 1.0 };
   std::string TimeRangeFor;
+  std::vector<OutputLook> OutputLooks;
   QString ItemName;
   bool Visible = true;
   nlohmann::json Values;

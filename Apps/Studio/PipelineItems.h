@@ -18,12 +18,6 @@
 
 #include "PipelineItem.h"
 
-#include "vtkActor.h" // For vtkNew<vtkActor>
-#include "vtkGlyph3D.h" // For vtkNew<vtkGlyph3D>
-#include "vtkNew.h"
-#include "vtkSphereSource.h" // For vtkNew<vtkSphereSource>
-#include "vtkTubeFilter.h"   // For vtkNew<vtkTubeFilter>
-
 #include <memory>
 
 class vtkRiemannCameraPath;
@@ -49,15 +43,11 @@ public:
   std::string Kind() const override { return "geodesics"; }
   std::string FilterClass() const override { return "vtkRiemannGeodesicTracer"; }
   std::string Preset() const override { return "Fan"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Lines;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class RayBundleItem : public PipelineItem
@@ -67,17 +57,13 @@ public:
   explicit RayBundleItem(const QString& name);
   std::string Kind() const override { return "ray-bundle"; }
   std::string FilterClass() const override { return "vtkRiemannRayBundle"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool FollowsObserver() const override { return true; }
   bool UsesScene() const override { return true; }
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Rays;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class ExponentialMapItem : public PipelineItem
@@ -87,17 +73,12 @@ public:
   explicit ExponentialMapItem(const QString& name);
   std::string Kind() const override { return "exponential-map"; }
   std::string FilterClass() const override { return "vtkRiemannExponentialMap"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool IsLongJob() const override { return true; }
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Rays;
-  vtkNew<vtkActor> Wavefronts;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class ConjugateLocusItem : public PipelineItem
@@ -107,17 +88,12 @@ public:
   explicit ConjugateLocusItem(const QString& name);
   std::string Kind() const override { return "conjugate-locus"; }
   std::string FilterClass() const override { return "vtkRiemannConjugateLocus"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool IsLongJob() const override { return true; }
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Points;
-  vtkNew<vtkActor> Caustics;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class FieldItem : public PipelineItem
@@ -127,16 +103,12 @@ public:
   explicit FieldItem(const QString& name);
   std::string Kind() const override { return "field"; }
   std::string FilterClass() const override;
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool IsLongJob() const override { return true; }
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Surface;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class DistanceFieldItem : public PipelineItem
@@ -146,21 +118,15 @@ public:
   explicit DistanceFieldItem(const QString& name);
   std::string Kind() const override { return "distance-field"; }
   std::string FilterClass() const override { return "vtkRiemannDistanceField"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool IsLongJob() const override { return true; }
   bool TakePickedPoint(const double point[3]) override;
+  /// The grid, its cut locus (when ShowCutLocus) and a marker at the seed.
+  std::vector<vtkSmartPointer<vtkDataObject>> ShownData() const override;
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkActor> Slice;
-  vtkNew<vtkActor> Wavefronts;
-  vtkNew<vtkActor> CutLocus;
-  vtkNew<vtkActor> SeedBall;
-  vtkNew<vtkSphereSource> Seed;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 
 class ConnectItem : public PipelineItem
@@ -170,20 +136,17 @@ public:
   explicit ConnectItem(const QString& name);
   std::string Kind() const override { return "connect"; }
   std::string FilterClass() const override { return "vtkRiemannGeodesicConnector"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool IsLongJob() const override { return true; }
   bool TakePickedPoint(const double point[3]) override;
+  /// The geodesics and a marker where they end.
+  std::vector<vtkSmartPointer<vtkDataObject>> ShownData() const override;
 
 protected:
-  void UpdateDisplay() override;
+  std::vector<PropertySpec> ItemProperties() const override;
 
 private:
-  vtkNew<vtkTubeFilter> Tubes;
-  vtkNew<vtkActor> Lines;
-  vtkNew<vtkSphereSource> End;
-  vtkNew<vtkActor> EndBall;
   /// The next Ctrl+click sets To (else From).
   bool PickTo = false;
 };
@@ -195,7 +158,6 @@ public:
   explicit CameraPathItem(const QString& name);
   std::string Kind() const override { return "camera-path"; }
   std::string FilterClass() const override { return "vtkRiemannCameraPath"; }
-  std::vector<PropertySpec> Properties() const override;
   vtkSmartPointer<vtkAlgorithm> MakeJob(const JobInputs& inputs) const override;
   std::vector<std::string> PythonLines(const std::string& var) const override;
   bool TakePickedPoint(const double point[3]) override;
@@ -206,13 +168,7 @@ public:
   void SetKeyPositions(vtkRiemannCameraPath* path) const;
 
 protected:
-  void UpdateDisplay() override;
-
-private:
-  vtkNew<vtkTubeFilter> Tubes;
-  vtkNew<vtkActor> Path;
-  vtkNew<vtkGlyph3D> Heading;
-  vtkNew<vtkActor> Cones;
+  std::vector<PropertySpec> ItemProperties() const override;
 };
 }
 }

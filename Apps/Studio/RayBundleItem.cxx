@@ -12,12 +12,8 @@
 #include "vtkRiemannRayBundle.h"
 #include "vtkRiemannScene.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 
 namespace riemann
 {
@@ -44,26 +40,24 @@ nlohmann::json RayBundleDefaults()
   values["ColorArray"] = "EndColor";
   return values;
 }
+
+/// Grey lines, as the inside view's rays, coloured by where they end.
+OutputLook RayBundleLook()
+{
+  OutputLook look = LookOf("vtkPolyData", { { 0.8, 0.8, 0.8 } }, true);
+  look.LineWidth = 1.5;
+  return look;
+}
 }
 
 RayBundleItem::RayBundleItem(const QString& name)
-  : PipelineItem(name, RayBundleDefaults())
+  : PipelineItem(name, RayBundleDefaults(), { RayBundleLook() })
 {
-  vtkNew<vtkPolyDataMapper> mapper;
-  this->Rays->SetMapper(mapper);
-  this->Rays->GetProperty()->SetLineWidth(1.5);
-  this->Assembly->AddPart(this->Rays);
-  this->UpdateDisplay();
 }
 
-std::vector<PropertySpec> RayBundleItem::Properties() const
+std::vector<PropertySpec> RayBundleItem::ItemProperties() const
 {
-  std::vector<PropertySpec> specs = DeclaredPropertySpecs(bundle::Settings, InsideViewSettings());
-  for (const PropertySpec& spec : this->DisplayProperties())
-  {
-    specs.push_back(spec);
-  }
-  return specs;
+  return DeclaredPropertySpecs(bundle::Settings, InsideViewSettings());
 }
 
 vtkSmartPointer<vtkAlgorithm> RayBundleItem::MakeJob(const JobInputs& inputs) const
@@ -72,19 +66,6 @@ vtkSmartPointer<vtkAlgorithm> RayBundleItem::MakeJob(const JobInputs& inputs) co
   SetUpInsideViewRays(job.Get(), inputs, inputs.Width, inputs.Height, true);
   riemann::settings::ApplySettings(job, this->Settings());
   return job;
-}
-
-void RayBundleItem::UpdateDisplay()
-{
-  auto* rays = vtkPolyData::SafeDownCast(this->Result(0));
-  if (rays)
-  {
-    vtkPolyDataMapper::SafeDownCast(this->Rays->GetMapper())->SetInputData(rays);
-  }
-  const double grey[3] = { 0.8, 0.8, 0.8 };
-  ApplyColoring(this->Rays, rays, this->Coloring(this->Text("ColorArray"), this->Number("Opacity")),
-    grey, this->ScalarBar());
-  this->Rays->SetVisibility(rays != nullptr);
 }
 
 std::vector<std::string> RayBundleItem::PythonLines(const std::string& var) const

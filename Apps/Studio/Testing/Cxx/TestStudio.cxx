@@ -5,6 +5,8 @@
 #include "HelpMenu.h"
 #include "ColorMaps.h"
 #include "InsideView.h"
+#include "ItemDisplay.h"
+#include "OutputDisplay.h"
 #include "SpreadsheetView.h"
 #include "MetricEditor.h"
 #include "OutsideView.h"
@@ -32,6 +34,7 @@
 
 #include "QVTKOpenGLNativeWidget.h"
 #include "vtkCamera.h"
+#include "vtkProbeFilter.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -276,6 +279,7 @@ private Q_SLOTS:
   void CpuBackendSeesWhatTheGpuSees();
   void ExportsWriteWholeFiles();
   void FieldItemShowsCurvature();
+  void DisplaysAreTheViewsKeyedByOutputType();
   void DraggingTheEyeMovesTheObserver();
   void SampledMetricReadsItsVolumeFromItsFolder();
   void MovingTheCameraTracesFewerRaysUntilItStops();
@@ -448,7 +452,7 @@ void TestStudio::GeodesicItemAddsPolylines()
     QVERIFY(vtkMath::Norm(cross) < 1e-9);
   }
   // The polylines are in the outside view, and they show.
-  QVERIFY(ViewHasProp(window->Outside(), item->Prop()));
+  QVERIFY(ViewHasProp(window->Outside(), window->Outside()->DisplayOf(item)->Prop()));
   window->Outside()->RenderNow();
   QVERIFY(DifferentPixels(before, window->Outside()->Capture()) > 0.001);
   // Hide with a click on the eye, show again, rename in place, then delete.
@@ -456,7 +460,7 @@ void TestStudio::GeodesicItemAddsPolylines()
   const QRect eye = browser->visualItemRect(browser->Row(item));
   QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, QPoint(10, eye.center().y()));
   QVERIFY(!item->IsVisible());
-  QVERIFY(!item->Prop()->GetVisibility());
+  QVERIFY(!window->Outside()->DisplayOf(item)->Prop()->GetVisibility());
   QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, QPoint(10, eye.center().y()));
   QVERIFY(item->IsVisible());
   browser->Row(item)->setText(1, "Straight lines");
@@ -1131,8 +1135,8 @@ void TestStudio::FieldItemShowsCurvature()
     QVERIFY2(std::abs(scalar->GetTuple1(i) - 6.0) < 1e-6, qPrintable(QString::number(scalar->GetTuple1(i))));
   }
   // What the outside view draws: the slice through the centre, coloured by it.
-  auto shown = [field]() {
-    vtkProp3DCollection* parts = field->Prop()->GetParts();
+  auto shown = [&window, field]() {
+    vtkProp3DCollection* parts = window->Outside()->DisplayOf(field)->Prop()->GetParts();
     parts->InitTraversal();
     auto* actor = vtkActor::SafeDownCast(parts->GetNextProp3D());
     return vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
@@ -1159,6 +1163,100 @@ void TestStudio::FieldItemShowsCurvature()
     surface->GetPoint(i, p);
     QVERIFY2(std::abs(vtkMath::Norm(p) - 1.0) < 0.05, qPrintable(QString::number(vtkMath::Norm(p))));
   }
+}
+
+void TestStudio::DisplaysAreTheViewsKeyedByOutputType()
+{
+  // Every item says what it shows by data type; a display exists for each,
+  // and the item's form and settings carry that display's declared settings.
+  vtkNew<vtkAssembly> parts;
+  for (const std::string& kind : PipelineItemKinds())
+  {
+    std::unique_ptr<PipelineItem> item = MakePipelineItem(kind, "item");
+    QVERIFY(item);
+    QVERIFY2(!item->Looks().empty(), kind.c_str());
+    std::vector<std::string> types;
+    for (const OutputLook& look : item->Looks())
+    {
+      QVERIFY2(MakeOutputDisplay(look.DataType, parts) != nullptr, (kind + ": " + look.DataType).c_str());
+      types.push_back(look.DataType);
+    }
+    std::vector<std::string> keys;
+    for (const PropertySpec& spec : item->Properties())
+    {
+      keys.push_back(spec.Key);
+    }
+    for (const PropertySpec& spec : DisplayPropertySpecs(types, QStringList(), "Solid"))
+    {
+      QVERIFY2(std::count(keys.begin(), keys.end(), spec.Key) == 1, (kind + ": " + spec.Key).c_str());
+      QVERIFY2(spec.Display && !spec.Default.is_null(), spec.Key.c_str());
+      QVERIFY2(item->Settings().contains(spec.Key), (kind + ": " + spec.Key).c_str());
+    }
+    QVERIFY(MakeOutputDisplay("vtkUnstructuredGrid", parts) == nullptr);
+  }
+  // One display for every grid: a field and a distance field take the same
+  // settings with the same declared defaults, but what an item overrides.
+  auto field = MakePipelineItem("field", "field");
+  auto distance = MakePipelineItem("distance-field", "distance");
+  QCOMPARE(field->Settings().at("SliceNormal"), nlohmann::json("z"));
+  QCOMPARE(distance->Settings().at("SliceNormal"), nlohmann::json("z"));
+  QCOMPARE(field->Settings().at("NumberOfContours"), nlohmann::json(0));
+  QCOMPARE(distance->Settings().at("NumberOfContours"), nlohmann::json(20));
+  // The old key of a distance field's wavefronts still works (projects before displays).
+  QCOMPARE(distance->ApplySettings({ { "NumberOfWavefronts", 7 } }), QString());
+  QCOMPARE(distance->Settings().at("NumberOfContours"), nlohmann::json(7));
+  QVERIFY(!distance->Settings().contains("NumberOfWavefronts"));
+
+  // In the window: level lines of the curvature on a field's slice (a
+  // distance field's wavefronts before), drawn by the grid's display.
+  auto window = OpenWindow();
+  QVERIFY(window);
+  QFile metric(DataFile("metrics/round-sphere.json"));
+  QVERIFY(metric.open(QIODevice::ReadOnly));
+  QCOMPARE(window->Editor()->SetText(QString::fromUtf8(metric.readAll())), QString());
+  PipelineItem* shown = window->Document()->AddItem("distance-field");
+  QVERIFY(shown->ApplySettings({ { "Dimensions", { 17, 17, 5 } }, { "NumberOfContours", 5 } }).isEmpty());
+  QVERIFY(WaitForJobs(*window));
+  ItemDisplay* display = window->Outside()->DisplayOf(shown);
+  QVERIFY(display);
+  // The grid's surface and level lines, then the cut locus and the seed (one actor each).
+  vtkProp3DCollection* actors = display->Prop()->GetParts();
+  QCOMPARE(actors->GetNumberOfItems(), 2 + 2 + 2);
+  actors->InitTraversal();
+  auto* slice = vtkActor::SafeDownCast(actors->GetNextProp3D());
+  auto* levels = vtkActor::SafeDownCast(actors->GetNextProp3D());
+  QVERIFY(slice->GetVisibility() && levels->GetVisibility());
+  auto* lines = vtkPolyData::SafeDownCast(levels->GetMapper()->GetInput());
+  QVERIFY(lines && lines->GetNumberOfLines() > 0);
+  // Each level line is a level set of the distance: its points have one of
+  // the five values, evenly inside the grid's range.
+  auto* image = vtkImageData::SafeDownCast(shown->Result(0));
+  double range[2];
+  image->GetPointData()->GetArray("Distance")->GetRange(range);
+  QVERIFY(range[1] > range[0]);
+  const double gap = (range[1] - range[0]) / 6;
+  vtkNew<vtkProbeFilter> probe;
+  probe->SetInputData(lines);
+  // The slice as drawn: the lines are its level sets (linear on its triangles).
+  probe->SetSourceData(vtkPolyData::SafeDownCast(slice->GetMapper()->GetInput()));
+  probe->Update();
+  vtkDataArray* distances = vtkDataSet::SafeDownCast(probe->GetOutput())->GetPointData()->GetArray("Distance");
+  QVERIFY(distances);
+  for (vtkIdType i = 0; i < distances->GetNumberOfTuples(); ++i)
+  {
+    const double u = distances->GetTuple1(i);
+    double nearest = 1e300;
+    for (int k = 1; k <= 5; ++k)
+    {
+      nearest = std::min(nearest, std::abs(u - (range[0] + k * gap)));
+    }
+    QVERIFY2(nearest < 1e-6 * gap, qPrintable(QString("%1 (levels %2 apart)").arg(u).arg(gap)));
+  }
+  QCOMPARE(shown->ApplySettings({ { "NumberOfContours", 0 } }), QString());
+  QVERIFY(!levels->GetVisibility());
+  // Hidden item, hidden actors: the display follows the item's visibility.
+  shown->SetVisible(false);
+  QVERIFY(!display->Prop()->GetVisibility());
 }
 
 void TestStudio::DraggingTheEyeMovesTheObserver()
@@ -1691,8 +1789,8 @@ void TestStudio::ColourMapEditorIsAppliedAndSaved()
     { "ColorRange", "custom" }, { "ColorRangeMinimum", 0.5 }, { "ColorRangeMaximum", 2.0 },
     { "ColorSteps", 5 }, { "ScalarBar", true } };
   // The lookup table and legend an item shows for `colours`.
-  const auto check = [](PipelineItem* item) {
-    vtkScalarBarActor* bar = item->ScalarBar();
+  const auto check = [](OutsideView* view, PipelineItem* item) {
+    vtkScalarBarActor* bar = view->DisplayOf(item)->ScalarBar();
     QVERIFY(bar->GetVisibility());
     auto* table = vtkLookupTable::SafeDownCast(bar->GetLookupTable());
     QVERIFY(table);
@@ -1716,16 +1814,16 @@ void TestStudio::ColourMapEditorIsAppliedAndSaved()
     PipelineItem* geodesics = window->Document()->AddItem("geodesics");
     QCOMPARE(QString::fromStdString(geodesics->Settings().at("ColorMap").get<std::string>()), QString("viridis"));
     window->Settle();
-    QVERIFY(!geodesics->ScalarBar()->GetVisibility());
+    QVERIFY(!window->Outside()->DisplayOf(geodesics)->ScalarBar()->GetVisibility());
     QCOMPARE(geodesics->ApplySettings(colours), QString());
     window->Settle();
-    check(geodesics);
+    check(window->Outside(), geodesics);
     // Hidden item, hidden legend; shown again, back.
     geodesics->SetVisible(false);
-    QVERIFY(!geodesics->ScalarBar()->GetVisibility());
+    QVERIFY(!window->Outside()->DisplayOf(geodesics)->ScalarBar()->GetVisibility());
     geodesics->SetVisible(true);
     window->Settle();
-    QVERIFY(geodesics->ScalarBar()->GetVisibility());
+    QVERIFY(window->Outside()->DisplayOf(geodesics)->ScalarBar()->GetVisibility());
     QCOMPARE(window->SaveProject(project), QString());
   }
   auto window = OpenWindow();
@@ -1737,7 +1835,7 @@ void TestStudio::ColourMapEditorIsAppliedAndSaved()
   {
     QVERIFY2(reopened->Settings().at(setting.key()) == setting.value(), setting.key().c_str());
   }
-  check(reopened);
+  check(window->Outside(), reopened);
 }
 
 void TestStudio::SpreadsheetAndCsvExportShowThePoints()
