@@ -32,11 +32,13 @@ from ModuleGraph import ModuleGraph  # noqa: E402
 # table is about what the linker brings for the third-party targets (the
 # GiNaC target needs libcln; VTK's SMP backend brings libtbb): Embree only
 # in Rendering/Meshes, OpenImageIO only in Rendering/ImageIO, Highway only in
-# Common/Packets and Common/Expressions, GiNaC only in Common/Expressions.
+# Common/Packets, Common/Metric (the families' kernels) and Common/Expressions,
+# GiNaC only in Common/Expressions.
 THIRD_PARTY = {
     "RiemannCommonSettings": [],
     "RiemannCommonPackets": ["libhwy"],
-    "RiemannCommonMetric": [],
+    "RiemannCommonGlsl": [],
+    "RiemannCommonMetric": ["libhwy"],
     "RiemannCommonExpressions": ["libginac", "libcln", "libhwy"],
     "RiemannCommonJacobi": [],
     "RiemannCommonDistance": [],

@@ -1,6 +1,7 @@
 #include "ConformalMetric.h"
 
 #include "PacketCurvature.h"
+#include "ConformalMetricPackets.h"
 #include "PacketKernels.h"
 
 #include <cmath>

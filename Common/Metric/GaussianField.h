@@ -6,7 +6,7 @@
 #ifndef RiemannGaussianField_h
 #define RiemannGaussianField_h
 
-#include "PacketKernels.h"
+#include "GaussianTerms.h"
 #include "ScalarField.h"
 #include "RiemannCommonMetricExport.h"
 

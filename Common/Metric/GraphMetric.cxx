@@ -1,6 +1,7 @@
 #include "GraphMetric.h"
 
 #include "PacketCurvature.h"
+#include "GraphMetricPackets.h"
 #include "PacketKernels.h"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 #ifndef RiemannScalarFieldSum_h
 #define RiemannScalarFieldSum_h
 
-#include "PacketKernels.h"
+#include "GaussianTerms.h"
 #include "ScalarField.h"
 #include "RiemannCommonMetricExport.h"
 

@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "PacketCurvature.h"
+#include "PacketLanes-inl.h" // D, V, M, BitsAt
 
 #include <cmath>
 
@@ -18,20 +19,6 @@ namespace riemann
 {
 namespace HWY_NAMESPACE
 {
-namespace hn = hwy::HWY_NAMESPACE;
-using D = hn::CappedTag<double, PacketWidth>;
-using V = hn::Vec<D>;
-using M = hn::Mask<D>;
-
-/// `mask` as the bits [offset, offset + N) of a LaneMask.
-HWY_INLINE LaneMask BitsAt(D d, M mask, int offset)
-{
-  uint8_t bits[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-  hn::StoreMaskBits(d, mask, bits);
-  const LaneMask chunk = (LaneMask{ 1 } << hn::Lanes(d)) - 1;
-  return (LaneMask{ bits[0] } & chunk) << offset;
-}
-
 /// A symmetric 3x3 matrix of lanes [o, o + N), as a full array (m[i][j] = m[j][i]).
 struct Matrix
 {

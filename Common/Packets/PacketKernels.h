@@ -1,8 +1,10 @@
 /**
  * @file PacketKernels.h
- * @brief The SIMD kernels of the packet engine: sums of Gaussian bumps, the
- * graph and conformal accelerations, and the arithmetic of the packet
- * integrators, each a loop over the PacketWidth lanes of a packet.
+ * @brief The SIMD kernels of the packet engine: the geodesic and Jacobi
+ * flows and the arithmetic of the packet integrators, each a loop over the
+ * PacketWidth lanes of a packet. The metric families' own kernels live with
+ * the families (Common/Metric: GraphMetricPackets.h, ConformalMetricPackets.h,
+ * GaussianTerms.h), on the register helpers of PacketLanes-inl.h.
  *
  * They are written once with Google Highway and compiled for every x86
  * target Highway knows (SSE4, AVX2, AVX-512, ...); the first call picks the
@@ -23,59 +25,8 @@
 namespace riemann
 {
 
-
-/**
- * Gaussian bumps a exp(-sum_i w_i (p_i - c_i)^2 / 2) as flat arrays (one
- * array per parameter), so that a sum of bumps is one loop without a
- * virtual call per term (GaussianField, ScalarFieldSum).
- */
-struct RIEMANNCOMMONPACKETS_EXPORT GaussianTerms
-{
-  std::vector<double> Amplitude;
-  std::vector<double> Center[3];
-  /// 1 / sigma_i^2.
-  std::vector<double> InverseVariance[3];
-
-  void Add(double amplitude, const Vec3& center, const Vec3& inverseVariance);
-  size_t Size() const { return this->Amplitude.size(); }
-};
-
 /// The Highway target the kernels run on here ("AVX3", "AVX2", "SSE4", ...).
 RIEMANNCOMMONPACKETS_EXPORT std::string PacketTargetName();
-
-/**
- * Add the value, and the derivatives up to `order` (up to
- * ThirdDerivatives), of the sum of `terms` at the W points `p` to `jet`:
- * the formulas of GaussianField::Accumulate, every lane at once.
- */
-RIEMANNCOMMONPACKETS_EXPORT void AccumulateGaussianTerms(
-  const GaussianTerms& terms, const PacketVec3& p, int order, PacketScalarJet& jet);
-
-/**
- * The graph metric's acceleration a = -grad f (v^T H v) / (1 + |grad f|^2)
- * from the jet of f. Returns the lanes where a is finite.
- */
-RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphAccelerationFromJet(
-  const PacketScalarJet& f, const PacketVec3& v, PacketVec3& a);
-
-/**
- * The conformal metric's acceleration a = |v|^2 l - 2 (l . v) v with
- * l = grad n / n, from the jet of n (first order). Returns the lanes where
- * n > 0 and a is finite.
- */
-RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalAccelerationFromJet(
-  const PacketScalarJet& n, const PacketVec3& v, PacketVec3& a);
-
-/**
- * GraphAccelerationFromJet of f = a sum of bumps, fused: the jet stays in
- * registers (GraphMetric's hot path when its f is such a sum).
- */
-RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphAccelerationOfGaussians(
-  const GaussianTerms& terms, const PacketVec3& x, const PacketVec3& v, PacketVec3& a);
-
-/// ConformalAccelerationFromJet of n = constant + a sum of bumps, fused.
-RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalAccelerationOfGaussians(const GaussianTerms& terms,
-  double constant, const PacketVec3& x, const PacketVec3& v, PacketVec3& a);
 
 /**
  * The geodesic flow of W geodesics: dy = (v, a(x, v)) on the lanes in
@@ -117,21 +68,6 @@ RIEMANNCOMMONPACKETS_EXPORT LaneMask DormandPrince45PacketAttempt(const PacketGe
   PacketAttempt& attempt);
 
 // --- The Jacobi system (JacobiField.h) on packets ----------------------------
-
-/**
- * The graph family's Jacobi accelerations from the jet of f to third order:
- * dy.V = a = -grad f (v^T H v) / (1 + |grad f|^2) and dy.DJ[k] = its
- * linearisation along (J_k, DJ_k) of y, i.e.
- * -(d_{J_k} Gamma)(v, v) - 2 Gamma(v, DJ_k). Returns the lanes where all
- * are finite.
- */
-RIEMANNCOMMONPACKETS_EXPORT LaneMask GraphJacobiAccelerationsFromJet(
-  const PacketScalarJet& f, const PacketJacobiState& y, PacketJacobiState& dy);
-
-/// The conformal family's, from the jet of n to second order; the lanes where n > 0 and all are
-/// finite.
-RIEMANNCOMMONPACKETS_EXPORT LaneMask ConformalJacobiAccelerationsFromJet(
-  const PacketScalarJet& n, const PacketJacobiState& y, PacketJacobiState& dy);
 
 /**
  * The Jacobi system of W geodesics: dy = (v, a, DJ_0, A_0, DJ_1, A_1) on the

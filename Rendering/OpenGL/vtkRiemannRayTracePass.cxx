@@ -21,12 +21,7 @@
 #include "RiemannShading.h"
 
 // GLSL embedded at build time (vtk_encode_string).
-#include "RiemannRayTraceCS.h"
-#include "RiemannRayTraceFS.h"
-#include "RiemannRayTraceIntegrators.h"
-#include "RiemannRayTraceMeshes.h"
-#include "RiemannRayTracePixel.h"
-#include "RiemannRayTraceScene.h"
+#include "RiemannRayTraceShader.h"
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
@@ -274,22 +269,12 @@ public:
   unsigned long long UseCounter = 0;
 
   /// What a program is made of besides the fixed GLSL (ComposeSource).
+  /// What the last program was composed from: its choices and its texts.
   struct ProgramIngredients
   {
+    riemann::RayTraceShaderChoices Choices;
     std::string MetricSource;
-    int Integrator = -1;
-    bool Meshes = false;
-    bool Compute = false;
-    int Group[2] = { 0, 0 };
     std::string Extra;
-
-    /// The same compile-time choices (the texts are compared where they are, not copied).
-    bool SameChoices(const ProgramIngredients& other) const
-    {
-      return this->Integrator == other.Integrator && this->Meshes == other.Meshes &&
-        this->Compute == other.Compute && this->Group[0] == other.Group[0] &&
-        this->Group[1] == other.Group[1];
-    }
   };
   /// The last frame's ingredients and program: while a frame's ingredients
   /// are the same (a new camera, time, parameter value or scene object
@@ -835,37 +820,20 @@ bool vtkRiemannRayTracePass::AddRendererActors(FrameState& frame)
 //------------------------------------------------------------------------------
 std::string vtkRiemannRayTracePass::ComposeSource(const FrameState& frame) const
 {
-  std::ostringstream constants;
-  constants << "// Scene limits (RiemannScene.h).\n"
-            << "#define RT_MAX_SPHERES " << riemann::MaximumSpheres << "\n"
-            << "#define RT_MAX_PLANES " << riemann::MaximumPlanes << "\n"
-            << "#define RT_MAX_BOXES " << riemann::MaximumBoxes << "\n"
-            << "#define RT_MAX_GRIDS " << riemann::MaximumGrids << "\n"
-            << "#define RT_MAX_OBJECTS " << riemann::MaximumSceneUniformObjects << "\n"
-            << "// 0: Euler, 1: RK4, 2: adaptive Dormand-Prince 5(4).\n"
-            << "#define RT_INTEGRATOR " << static_cast<int>(frame.Rays.Integrator) << "\n"
-            << "// Triangle meshes (RiemannRayTraceMeshes.glsl) and their traversal stack.\n"
-            << "#define RT_MESHES " << (frame.Scene->HasMeshes() ? 1 : 0) << "\n"
-            << "#define RT_MESH_STACK " << riemann::MeshBVHStackSize << "\n";
-  if (frame.UseCompute)
-  {
-    constants << "// The compute path's workgroup (a tile of pixels).\n"
-              << "#define RT_GROUP_X " << this->ComputeWorkgroupSize[0] << "\n"
-              << "#define RT_GROUP_Y " << this->ComputeWorkgroupSize[1] << "\n"
-              << "#define RT_GROUP_INVOCATIONS "
-              << this->ComputeWorkgroupSize[0] * this->ComputeWorkgroupSize[1] << "\n";
-  }
-  std::string source = frame.UseCompute ? RiemannRayTraceCS : RiemannRayTraceFS;
-  Replace(source, "//RT::Version::Dec", "#version 430 core");
-  Replace(source, "//RT::Constants::Dec", constants.str());
-  Replace(source, "//RT::Metric::Impl", frame.MetricGlsl.Source);
-  Replace(source, "//RT::Meshes::Impl", frame.Scene->HasMeshes() ? RiemannRayTraceMeshes : "");
-  Replace(source, "//RT::Scene::Impl", RiemannRayTraceScene);
-  Replace(source, "//RT::Integrators::Impl", RiemannRayTraceIntegrators);
-  Replace(source, "//RT::Extra::Impl",
-    this->ExtraShaderCode ? std::string("// ExtraShaderCode\n") + this->ExtraShaderCode : "");
-  Replace(source, "//RT::Pixel::Impl", RiemannRayTracePixel);
-  return source;
+  return riemann::ComposeRayTraceShader(
+    this->ProgramChoices(frame), frame.MetricGlsl.Source, this->ExtraShaderCode ? this->ExtraShaderCode : "");
+}
+
+//------------------------------------------------------------------------------
+riemann::RayTraceShaderChoices vtkRiemannRayTracePass::ProgramChoices(const FrameState& frame) const
+{
+  riemann::RayTraceShaderChoices choices;
+  choices.Integrator = static_cast<int>(frame.Rays.Integrator);
+  choices.Meshes = frame.Scene->HasMeshes();
+  choices.Compute = frame.UseCompute;
+  choices.Group[0] = frame.UseCompute ? this->ComputeWorkgroupSize[0] : 0;
+  choices.Group[1] = frame.UseCompute ? this->ComputeWorkgroupSize[1] : 0;
+  return choices;
 }
 
 //------------------------------------------------------------------------------
@@ -873,17 +841,12 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
 {
   vtkInternals& internals = *this->Internals;
   // Step 1: the same ingredients as the last frame: the same program.
-  vtkInternals::ProgramIngredients ingredients;
-  ingredients.Integrator = static_cast<int>(frame.Rays.Integrator);
-  ingredients.Meshes = frame.Scene->HasMeshes();
-  ingredients.Compute = frame.UseCompute;
-  ingredients.Group[0] = frame.UseCompute ? this->ComputeWorkgroupSize[0] : 0;
-  ingredients.Group[1] = frame.UseCompute ? this->ComputeWorkgroupSize[1] : 0;
+  const riemann::RayTraceShaderChoices choices = this->ProgramChoices(frame);
   const char* extra = this->ExtraShaderCode ? this->ExtraShaderCode : "";
   const vtkInternals::ProgramIngredients& last = internals.LastIngredients;
-  if (internals.LastProgram && internals.LastProgram->IsValid() &&
-    ingredients.SameChoices(last) && last.Extra == extra &&
-    last.MetricSource == frame.MetricGlsl.Source)
+  // The texts are compared where they are, not copied, while nothing changes.
+  if (internals.LastProgram && internals.LastProgram->IsValid() && choices == last.Choices &&
+    last.Extra == extra && last.MetricSource == frame.MetricGlsl.Source)
   {
     return this->BindProgram(*internals.LastProgram, frame);
   }
@@ -934,9 +897,7 @@ vtkShaderProgram* vtkRiemannRayTracePass::ReadyProgram(FrameState& frame)
     }
     found = internals.StoreProgram(source, std::move(built));
   }
-  ingredients.MetricSource = frame.MetricGlsl.Source;
-  ingredients.Extra = extra;
-  internals.LastIngredients = std::move(ingredients);
+  internals.LastIngredients = { choices, frame.MetricGlsl.Source, extra };
   internals.LastProgram = &found->second;
   return this->BindProgram(found->second, frame);
 }

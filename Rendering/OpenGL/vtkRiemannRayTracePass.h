@@ -123,6 +123,7 @@ class vtkRiemannScene;
 namespace riemann
 {
 class Metric;
+struct RayTraceShaderChoices;
 }
 
 class RIEMANNRENDERINGOPENGL_EXPORT vtkRiemannRayTracePass : public vtkRenderPass
@@ -469,6 +470,8 @@ private:
 
   /// The shader of this frame on its path: fixed GLSL + the metric's + the integrator.
   std::string ComposeSource(const FrameState& frame) const;
+  /// The frame's compile-time choices (RiemannRayTraceShader.h).
+  riemann::RayTraceShaderChoices ProgramChoices(const FrameState& frame) const;
 
   /// Compile and link `source` as a fragment shader; null with `message` (the GLSL log) on
   /// failure.

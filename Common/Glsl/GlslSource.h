@@ -27,7 +27,7 @@
 #ifndef RiemannGlslSource_h
 #define RiemannGlslSource_h
 
-#include "RiemannCommonMetricExport.h"
+#include "RiemannCommonGlslExport.h"
 
 #include <array>
 #include <memory>
@@ -65,7 +65,7 @@ struct GlslTexture3D
 };
 
 /// A metric (or provider) that the GLSL backend cannot express; what() says which.
-class RIEMANNCOMMONMETRIC_EXPORT GlslUnsupportedError : public std::runtime_error
+class RIEMANNCOMMONGLSL_EXPORT GlslUnsupportedError : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
@@ -89,7 +89,7 @@ struct GlslEmitOptions
  * Collects uniforms and functions while providers emit themselves. Names are
  * numbered in emission order, so the same structure always yields the same text.
  */
-class RIEMANNCOMMONMETRIC_EXPORT GlslBuilder
+class RIEMANNCOMMONGLSL_EXPORT GlslBuilder
 {
 public:
   GlslBuilder() = default;
