@@ -3,7 +3,6 @@
 // Forward array); File > Export Animation flies the inside view along it.
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
@@ -12,9 +11,7 @@
 #include "vtkRiemannCameraPath.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkPolyData.h"
 
 #include <algorithm>
 

@@ -1,7 +1,6 @@
 // Conjugate points and caustic sheets of a point (vtkRiemannConjugateLocus).
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannConjugateLocusSettingAccess.h"

@@ -5,7 +5,6 @@
 // at the seed.
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
@@ -16,12 +15,10 @@
 #include "vtkRiemannDistanceField.h"
 #include "vtkRiemannMetric.h"
 
-#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
-#include <algorithm>
 
 namespace riemann
 {

@@ -1,7 +1,6 @@
 // The exponential map at a point: rays and wavefronts (vtkRiemannExponentialMap).
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannExponentialMapSettingAccess.h"

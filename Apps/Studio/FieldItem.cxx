@@ -3,7 +3,6 @@
 // glyphs (ImageDataDisplay).
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "SettingValues.h"
@@ -14,12 +13,7 @@
 #include "vtkRiemannMetricTensorField.h"
 #include "vtkRiemannVolumeForm.h"
 
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
 
-#include <algorithm>
 
 namespace riemann
 {

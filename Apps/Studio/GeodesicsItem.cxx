@@ -2,7 +2,6 @@
 // which fans its seed itself: NumberOfDirections, ConeAngle).
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredJob.h"
 #include "DeclaredProperties.h"
 #include "vtkRiemannGeodesicTracerSettingAccess.h"

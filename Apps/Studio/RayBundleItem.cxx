@@ -1,7 +1,6 @@
 // The inside view's rays (vtkRiemannRayBundle), following the observer.
 #include "PipelineItems.h"
 
-#include "ColorMaps.h"
 #include "DeclaredProperties.h"
 #include "InsideViewRays.h"
 #include "SettingValues.h"
