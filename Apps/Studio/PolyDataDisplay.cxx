@@ -35,6 +35,9 @@ PolyDataDisplay::PolyDataDisplay(vtkAssembly* parts)
   cone->SetResolution(12);
   cone->SetHeight(1.0);
   cone->SetRadius(0.3);
+  this->HeadingPoints->RandomModeOff();
+  this->HeadingPoints->GenerateVerticesOff();
+  this->Heading->SetInputConnection(this->HeadingPoints->GetOutputPort());
   this->Heading->SetSourceConnection(cone->GetOutputPort());
   this->Heading->SetVectorModeToUseVector();
   this->Heading->SetScaleModeToDataScalingOff();
@@ -80,7 +83,10 @@ void PolyDataDisplay::Show(vtkDataObject* data, const OutputLook& look, const nl
   if (heading)
   {
     poly->GetPointData()->SetActiveVectors(look.HeadingArray.c_str());
-    this->Heading->SetInputData(poly);
+    // About 16 cones: a dense flight's frames would overlap into a sleeve.
+    this->HeadingPoints->SetInputData(poly);
+    this->HeadingPoints->SetOnRatio(std::max<vtkIdType>(1, poly->GetNumberOfPoints() / 16));
+    this->HeadingPoints->SetMaximumNumberOfPoints(poly->GetNumberOfPoints());
     this->Heading->SetScaleFactor(0.06 * SizeOf(poly));
   }
   this->Cones->SetVisibility(heading);

@@ -11,6 +11,7 @@
 
 #include "vtkActor.h"
 #include "vtkGlyph3D.h"
+#include "vtkMaskPoints.h"
 #include "vtkNew.h"
 #include "vtkTubeFilter.h"
 
@@ -30,6 +31,8 @@ public:
 private:
   vtkNew<vtkActor> Surface;
   vtkNew<vtkTubeFilter> Tubes;
+  /// Every k-th point carries a cone: a few along the whole path, however many frames it has.
+  vtkNew<vtkMaskPoints> HeadingPoints;
   vtkNew<vtkGlyph3D> Heading;
   vtkNew<vtkActor> Cones;
 };
