@@ -1,6 +1,6 @@
 // A flight of the observer through curved space (vtkRiemannCameraPath),
-// shown as a tube and, at each frame, a cone along "straight ahead" (its
-// Forward array); File > Export Animation flies the inside view along it.
+// shown as a tube with cones along "straight ahead" (its Forward array) at
+// a few of its frames; File > Export Animation flies the inside view along it.
 #include "PipelineItems.h"
 
 #include "DeclaredJob.h"
