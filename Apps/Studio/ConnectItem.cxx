@@ -14,7 +14,6 @@
 
 #include "vtkPolyData.h"
 
-#include <algorithm>
 
 namespace riemann
 {
@@ -69,12 +68,9 @@ std::vector<vtkSmartPointer<vtkDataObject>> ConnectItem::ShownData() const
     return { nullptr, nullptr };
   }
   // Sized with the geodesics, as the picked ray with the scene.
-  double to[3], bounds[6];
+  double to[3];
   this->Vector("EndPosition", to, 3);
-  lines->GetBounds(bounds);
-  const double size =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-  return { result, SphereMarker(to, 0.02 * size) };
+  return { result, SphereMarker(to, 0.02 * LargestSide(lines)) };
 }
 
 std::vector<std::string> ConnectItem::PythonLines(const std::string& var) const

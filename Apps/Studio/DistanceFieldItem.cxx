@@ -108,20 +108,33 @@ std::vector<vtkSmartPointer<vtkDataObject>> DistanceFieldItem::ShownData() const
   {
     return { nullptr, nullptr, nullptr };
   }
-  vtkSmartPointer<vtkDataObject> cutLocus;
-  if (this->Settings().at("ShowCutLocus").get<bool>())
-  {
-    vtkNew<vtkRiemannCutLocus> cut;
-    riemann::settings::ApplySettings(cut, this->Settings());
-    cut->SetInputData(image);
-    cut->Update();
-    cutLocus = cut->GetOutput();
-  }
+  vtkSmartPointer<vtkDataObject> cutLocus =
+    this->Settings().at("ShowCutLocus").get<bool>() ? this->CutLocusOf(image) : nullptr;
   double seed[3], bounds[6];
   this->Vector("Seed", seed, 3);
   image->GetBounds(bounds);
   const double radius = 0.015 * (bounds[1] - bounds[0] + bounds[3] - bounds[2] + bounds[5] - bounds[4]);
   return { grid, cutLocus, SphereMarker(seed, radius) };
+}
+
+vtkDataObject* DistanceFieldItem::CutLocusOf(vtkImageData* grid) const
+{
+  nlohmann::json settings = nlohmann::json::object();
+  for (const riemann::SettingDeclaration& setting : cutlocus::Settings)
+  {
+    settings[setting.Name] = this->Settings().at(setting.Name);
+  }
+  if (!this->CutLocus || this->CutLocusGrid != grid || this->CutLocusSettings != settings)
+  {
+    vtkNew<vtkRiemannCutLocus> cut;
+    riemann::settings::ApplySettings(cut, settings);
+    cut->SetInputData(grid);
+    cut->Update();
+    this->CutLocus = cut->GetOutput();
+    this->CutLocusGrid = grid;
+    this->CutLocusSettings = std::move(settings);
+  }
+  return this->CutLocus;
 }
 
 std::vector<std::string> DistanceFieldItem::PythonLines(const std::string& var) const

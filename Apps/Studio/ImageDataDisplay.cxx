@@ -122,19 +122,6 @@ vtkSmartPointer<vtkPolyData> LevelLinesOf(
   return lines->GetOutput();
 }
 
-PropertySpec ChoiceSpec(const char* key, const char* label, QStringList choices, const char* value,
-  const char* help)
-{
-  PropertySpec spec;
-  spec.Key = key;
-  spec.Label = label;
-  spec.Type = PropertySpec::Choice;
-  spec.Choices = std::move(choices);
-  spec.Default = value;
-  spec.Help = help;
-  spec.Display = true;
-  return spec;
-}
 }
 
 ImageDataDisplay::ImageDataDisplay(vtkAssembly* parts)
@@ -153,39 +140,25 @@ ImageDataDisplay::ImageDataDisplay(vtkAssembly* parts)
 
 std::vector<PropertySpec> ImageDataDisplay::Properties()
 {
-  PropertySpec representation = ChoiceSpec("Representation", "Show as",
-    QStringList{ "slice", "isosurface", "glyphs" }, "slice",
+  PropertySpec representation = DisplaySpec("Representation", "Show as", PropertySpec::Choice,
+    "slice",
     "slice: a plane through the grid; isosurface: where the colouring array (or the first scalar) "
     "has the isovalue; glyphs: ellipsoids of a tensor array (a field's MetricTensor)");
-  PropertySpec normal =
-    ChoiceSpec("SliceNormal", "Slice normal", QStringList{ "x", "y", "z" }, "z", "The slice's normal axis");
-
-  PropertySpec offset;
-  offset.Key = "SliceOffset";
-  offset.Label = "Slice offset";
-  offset.Default = 0.0;
-  offset.Help = "Distance of the slice from the grid's centre along its normal";
-  offset.Display = true;
-
-  PropertySpec contour;
-  contour.Key = "ContourValue";
-  contour.Label = "Isovalue";
-  contour.Default = 0.5;
-  contour.Help = "Value of the colouring array (or the first scalar) on the isosurface";
-  contour.Display = true;
-
-  PropertySpec levels;
-  levels.Key = "NumberOfContours";
-  levels.Label = "Level lines";
-  levels.Type = PropertySpec::Integer;
+  representation.Choices = QStringList{ "slice", "isosurface", "glyphs" };
+  PropertySpec normal = DisplaySpec(
+    "SliceNormal", "Slice normal", PropertySpec::Choice, "z", "The slice's normal axis");
+  normal.Choices = QStringList{ "x", "y", "z" };
+  PropertySpec offset = DisplaySpec("SliceOffset", "Slice offset", PropertySpec::Number, 0.0,
+    "Distance of the slice from the grid's centre along its normal");
+  PropertySpec contour = DisplaySpec("ContourValue", "Isovalue", PropertySpec::Number, 0.5,
+    "Value of the colouring array (or the first scalar) on the isosurface");
+  PropertySpec levels = DisplaySpec("NumberOfContours", "Level lines", PropertySpec::Integer, 0,
+    "Level lines of the colouring array (or the first scalar) drawn on the slice: a distance's "
+    "wavefronts");
   levels.Minimum = 0;
   levels.Maximum = 200;
-  levels.Default = 0;
-  levels.Help = "Level lines of the colouring array (or the first scalar) drawn on the slice: a "
-                "distance's wavefronts";
   // A distance field's projects before displays were the view's.
   levels.Aliases = QStringList{ "NumberOfWavefronts" };
-  levels.Display = true;
   return { representation, normal, offset, contour, levels };
 }
 

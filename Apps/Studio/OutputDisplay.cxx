@@ -31,19 +31,6 @@ const std::vector<DisplayKind>& DisplayKinds()
   return kinds;
 }
 
-PropertySpec DisplaySpec(const char* key, const char* label, PropertySpec::Kind type,
-  nlohmann::json value, const char* help)
-{
-  PropertySpec spec;
-  spec.Key = key;
-  spec.Label = label;
-  spec.Type = type;
-  spec.Default = std::move(value);
-  spec.Help = help;
-  spec.Display = true;
-  return spec;
-}
-
 /// The colouring every display has: the array, the map and the colour-map editor's settings.
 std::vector<PropertySpec> ColoringPropertySpecs(const QStringList& colorArrays, const std::string& colorArray)
 {
@@ -84,6 +71,19 @@ std::vector<PropertySpec> ColoringPropertySpecs(const QStringList& colorArrays, 
     "Show the map's legend in the outside view");
   return { array, map, opacity, range, minimum, maximum, steps, bar };
 }
+}
+
+PropertySpec DisplaySpec(const char* key, const char* label, PropertySpec::Kind type,
+  nlohmann::json value, const char* help)
+{
+  PropertySpec spec;
+  spec.Key = key;
+  spec.Label = label;
+  spec.Type = type;
+  spec.Default = std::move(value);
+  spec.Help = help;
+  spec.Display = true;
+  return spec;
 }
 
 std::unique_ptr<OutputDisplay> MakeOutputDisplay(const std::string& dataType, vtkAssembly* parts)

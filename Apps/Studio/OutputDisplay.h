@@ -57,6 +57,10 @@ protected:
   OutputDisplay() = default;
 };
 
+/// A display setting as a display declares it: shown in the form, kept in projects, never re-running the job.
+PropertySpec DisplaySpec(const char* key, const char* label, PropertySpec::Kind type,
+  nlohmann::json value, const char* help);
+
 /// A display for outputs of `dataType`, its actors added to `parts`; null for a type no display shows.
 std::unique_ptr<OutputDisplay> MakeOutputDisplay(const std::string& dataType, vtkAssembly* parts);
 

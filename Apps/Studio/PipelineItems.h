@@ -20,6 +20,7 @@
 
 #include <memory>
 
+class vtkImageData;
 class vtkRiemannCameraPath;
 
 
@@ -127,6 +128,14 @@ public:
 
 protected:
   std::vector<PropertySpec> ItemProperties() const override;
+
+private:
+  /// The cut locus of `grid` for the cut-locus settings now (kept: a colour
+  /// or slice change redraws without computing it again).
+  vtkDataObject* CutLocusOf(vtkImageData* grid) const;
+  mutable vtkSmartPointer<vtkDataObject> CutLocus;
+  mutable vtkSmartPointer<vtkDataObject> CutLocusGrid;
+  mutable nlohmann::json CutLocusSettings;
 };
 
 class ConnectItem : public PipelineItem

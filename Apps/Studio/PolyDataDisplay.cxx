@@ -7,23 +7,12 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 
-#include <algorithm>
+#include <algorithm> // std::max
 
 namespace riemann
 {
 namespace studio
 {
-namespace
-{
-/// The largest side of `data`'s bounds, at least 1: what tubes and cones are sized by.
-double SizeOf(vtkPolyData* data)
-{
-  double bounds[6];
-  data->GetBounds(bounds);
-  return std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0 });
-}
-}
-
 PolyDataDisplay::PolyDataDisplay(vtkAssembly* parts)
 {
   vtkNew<vtkPolyDataMapper> mapper;
@@ -59,7 +48,7 @@ void PolyDataDisplay::Show(vtkDataObject* data, const OutputLook& look, const nl
   if (shown && look.TubeRadius > 0.0)
   {
     this->Tubes->SetInputData(poly);
-    this->Tubes->SetRadius(look.TubeRadius * SizeOf(poly));
+    this->Tubes->SetRadius(look.TubeRadius * LargestSide(poly));
     mapper->SetInputConnection(this->Tubes->GetOutputPort());
   }
   else if (shown)
@@ -87,7 +76,7 @@ void PolyDataDisplay::Show(vtkDataObject* data, const OutputLook& look, const nl
     this->HeadingPoints->SetInputData(poly);
     this->HeadingPoints->SetOnRatio(std::max<vtkIdType>(1, poly->GetNumberOfPoints() / 16));
     this->HeadingPoints->SetMaximumNumberOfPoints(poly->GetNumberOfPoints());
-    this->Heading->SetScaleFactor(0.06 * SizeOf(poly));
+    this->Heading->SetScaleFactor(0.06 * LargestSide(poly));
   }
   this->Cones->SetVisibility(heading);
 }

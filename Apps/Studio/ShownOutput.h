@@ -12,6 +12,7 @@
 #include <array>
 #include <string>
 
+class vtkDataSet;
 class vtkPolyData;
 
 namespace riemann
@@ -42,6 +43,9 @@ struct OutputLook
 
 /// Look helpers: one output of `dataType` in `solid`, with the legend or without.
 OutputLook LookOf(const std::string& dataType, const std::array<double, 3>& solid, bool legend);
+
+/// The largest side of `data`'s bounds, at least 1: what tubes, cones and markers are sized by.
+double LargestSide(vtkDataSet* data);
 
 /// A sphere at `center` (a marker: the distance field's seed, a connection's end).
 vtkSmartPointer<vtkPolyData> SphereMarker(const double center[3], double radius);
