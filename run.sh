@@ -65,7 +65,16 @@ PACKAGES=(
   # and .tck) and the DIPY comparison (Examples/tractography_dipy.py,
   # Testing/Benchmarks); never needed by the library.
   python3-dipy python3-nibabel
+  # ParaView 5.11 and what its plugin build needs (the plugin RiemannVTK,
+  # ParaView/). Installed without recommends: python3-paraview, recommended,
+  # conflicts with python3-vtk9 (its hierarchy files are unpacked instead,
+  # unpack_paraview_hierarchy).
+  paraview paraview-dev libqt5svg5-dev qtxmlpatterns5-dev-tools
 )
+# Where python3-paraview's wrapping hierarchy files are unpacked (the
+# plugin's client-server wrapping reads them; RIEMANN_PARAVIEW_DEB_DIR).
+PARAVIEW_DEB_DIR="$BUILD_DIR/paraview-deb"
+PARAVIEW_HIERARCHY="usr/lib/x86_64-linux-gnu/vtk/hierarchy/ParaView"
 
 log() { printf '[run.sh] %s\n' "$*" >&2; }
 die() { printf '[run.sh] error: %s\n' "$*" >&2; exit 1; }
@@ -97,6 +106,27 @@ install_packages() {
   "${sudo[@]}" apt-get update
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
     apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# --- 1b. python3-paraview's hierarchy files, unpacked, never installed -------
+unpack_paraview_hierarchy() {
+  [[ -d "$PARAVIEW_DEB_DIR/$PARAVIEW_HIERARCHY" ]] && return
+  local deb scratch
+  # A copy apt already has, or one downloaded (from Debian's archive) into a
+  # scratch folder: apt-get download writes into the working directory.
+  deb="$(ls /var/cache/apt/archives/python3-paraview_5.11*.deb 2>/dev/null | head -n 1 || true)"
+  scratch="$(mktemp -d)"
+  if [[ -z "$deb" ]]; then
+    log "paraview: downloading python3-paraview (its hierarchy files only are unpacked)"
+    (cd "$scratch" && apt-get download python3-paraview >/dev/null) \
+      || { apt-get update >/dev/null && (cd "$scratch" && apt-get download python3-paraview >/dev/null); } \
+      || die "apt-get download python3-paraview failed (the ParaView plugin needs its hierarchy files)"
+    deb="$(ls "$scratch"/python3-paraview_*.deb | head -n 1)"
+  fi
+  mkdir -p "$PARAVIEW_DEB_DIR"
+  dpkg-deb --fsys-tarfile "$deb" | tar -x -C "$PARAVIEW_DEB_DIR" "./$PARAVIEW_HIERARCHY"
+  rm -rf "$scratch"
+  log "paraview: $(ls "$PARAVIEW_DEB_DIR/$PARAVIEW_HIERARCHY" | wc -l) hierarchy files in $PARAVIEW_DEB_DIR"
 }
 
 # --- 2. Configure once, build incrementally ----------------------------------
@@ -243,6 +273,7 @@ if [[ "$mode" == sanitize ]]; then
   run_sanitize_tests "$@"
   exit 0
 fi
+unpack_paraview_hierarchy
 build
 case "$mode" in
   demo) run_demo "$@" ;;

@@ -38,7 +38,10 @@ KINDS = {
 }
 KEYS = {"like", "name", "type", "default", "minimum", "maximum", "minimum_exclusive", "maximum_exclusive",
         "choices", "unit", "label", "help", "aliases", "commands"}
-TOP_KEYS = {"class", "label", "help", "paraview_group", "settings", "presets", "abstract"}
+TOP_KEYS = {"class", "label", "help", "paraview_group", "settings", "presets", "abstract",
+            "inputs", "metric_port", "integration"}
+# What a ParaView input may require (the VTK class's input types).
+INPUT_TYPES = {"vtkDataSet", "vtkImageData", "vtkPolyData", "vtkDataObject"}
 
 
 class DeclarationError(Exception):
@@ -90,7 +93,33 @@ def read_declaration(path):
     check(where, doc["class"] == expected, f"\"class\" is {doc['class']}, the file is for {expected}")
     settings = doc.get("settings")
     check(where, isinstance(settings, list) and settings, "\"settings\": expected a list")
+    check_pipeline(where, doc)
     return doc
+
+
+def check_pipeline(where, doc):
+    """The pipeline facts ParaView's proxy needs: the data inputs it shows (each a VTK input
+    port), the VTK class's metric port (GetMetricPort()) and its integration settings
+    (vtkRiemannIntegrationSettings' defaults, or one of its presets)."""
+    inputs = doc.get("inputs", [])
+    check(where, isinstance(inputs, list), "\"inputs\": expected a list")
+    for i, item in enumerate(inputs):
+        at = f"{where}: inputs[{i}]"
+        check(at, isinstance(item, dict) and set(item) <= {"name", "port", "types", "help"},
+              "expected {\"name\", \"port\", \"types\", \"help\"}")
+        check(at, isinstance(item.get("name"), str) and item["name"][:1].isupper(), "\"name\": the property's name")
+        check(at, item.get("port") == i, f"\"port\": the shown data inputs are ports 0, 1, ... in order ({i} here)")
+        check(at, isinstance(item.get("types"), list) and item["types"] and set(item["types"]) <= INPUT_TYPES,
+              f"\"types\": a list of {', '.join(sorted(INPUT_TYPES))}")
+        check(at, isinstance(item.get("help"), str) and item["help"], "\"help\" is missing")
+    if "metric_port" in doc:
+        # A field filter's optional dataset (port 0) is not shown: its metric port is 1 regardless.
+        check(where, isinstance(doc["metric_port"], int) and doc["metric_port"] >= len(inputs),
+              "\"metric_port\": the VTK class's GetMetricPort(), after the data inputs shown")
+    integration = doc.get("integration")
+    check(where, integration is None or (isinstance(integration, str) and
+          (integration == "default" or integration[:1].isupper())),
+          "\"integration\": \"default\" or the name of a vtkRiemannIntegrationSettings preset")
 
 
 def within(s, x):
@@ -473,14 +502,71 @@ def paraview_property(s):
             f"{rng}{doc}    </DoubleVectorProperty>\n")
 
 
+def paraview_input(name, port, types, help_text, label=None):
+    domain = "".join(f"          <DataType value=\"{t}\" />\n" for t in types)
+    label_attr = f" label={quoteattr(label)}" if label else ""
+    return (f"    <InputProperty name={quoteattr(name)}{label_attr} command=\"SetInputConnection\" port_index=\"{port}\">\n"
+            f"      <ProxyGroupDomain name=\"groups\">\n        <Group name=\"sources\" />\n        <Group name=\"filters\" />\n      </ProxyGroupDomain>\n"
+            f"      <DataTypeDomain name=\"input_type\">\n{domain}      </DataTypeDomain>\n"
+            f"      <Documentation>{escape(help_text)}</Documentation>\n    </InputProperty>\n")
+
+
+def paraview_inputs(doc):
+    """The data inputs, then the metric: named Input when it is the only one (ParaView's
+    Filters menu applies a filter to the selected source through Input)."""
+    out = "".join(paraview_input(i["name"], i["port"], i["types"], i["help"]) for i in doc.get("inputs", []))
+    if "metric_port" in doc:
+        name = "Metric" if doc.get("inputs") else "Input"
+        out += paraview_input(name, doc["metric_port"], ["vtkPolyData"],
+                              "The metric: a Riemann Metric source (its definition, parameters and time)",
+                              label="Metric")
+    return out
+
+
+def integration_proxy_name(preset):
+    return "IntegrationSettings" + ("" if preset == "default" else preset)
+
+
+def paraview_integration(doc):
+    preset = doc.get("integration")
+    if preset is None:
+        return ""
+    return (f"    <ProxyProperty name=\"IntegrationSettings\" label=\"Integration\" command=\"SetIntegrationSettings\">\n"
+            f"      <ProxyListDomain name=\"proxy_list\">\n"
+            f"        <Proxy group=\"riemann_integration\" name=\"{integration_proxy_name(preset)}\" />\n"
+            f"      </ProxyListDomain>\n"
+            f"      <Documentation>How the geodesics are integrated (vtkRiemannIntegrationSettings)</Documentation>\n"
+            f"    </ProxyProperty>\n")
+
+
+def settings_proxies(doc, label, help_text):
+    """A settings object (no pipeline): one proxy with the declared defaults, and one per
+    preset with the preset's values as its defaults (the filters that start from it)."""
+    cls = doc["class"]
+    variants = [("default", {})] + list(doc.get("presets", {}).items())
+    out = ""
+    for preset, values in variants:
+        settings = [dict(x, default=values.get(x["name"], x["default"])) for x in doc["settings"]]
+        props = "".join(paraview_property(x) for x in settings)
+        name = integration_proxy_name(preset) if cls == "vtkRiemannIntegrationSettings" else \
+            cls[len("vtkRiemann"):] + ("" if preset == "default" else preset)
+        out += (f"   <Proxy name=\"{name}\" class=\"{cls}\" label={quoteattr(label)}>\n"
+                f"    <Documentation short_help={quoteattr(label)}>{help_text}</Documentation>\n{props}   </Proxy>\n")
+    return out
+
+
 def paraview_xml(doc):
     cls = doc["class"]
     group = doc.get("paraview_group", "filters")
     label = doc.get("label", words(cls[len("vtkRiemann"):]))
-    props = "".join(paraview_property(s) for s in doc["settings"])
     help_text = escape(doc.get("help", label))
-    return f"""<!-- Generated by cmake/RiemannSettings.py from {cls}.settings.json: edit that file. -->
-<ServerManagerConfiguration>
+    header = f"<!-- Generated by cmake/RiemannSettings.py from {cls}.settings.json: edit that file. -->\n"
+    if group == "riemann_settings":
+        group = "riemann_integration" if cls == "vtkRiemannIntegrationSettings" else group
+        return (f"{header}<ServerManagerConfiguration>\n  <ProxyGroup name=\"{group}\">\n"
+                f"{settings_proxies(doc, label, help_text)}  </ProxyGroup>\n</ServerManagerConfiguration>\n")
+    props = paraview_inputs(doc) + "".join(paraview_property(s) for s in doc["settings"]) + paraview_integration(doc)
+    return f"""{header}<ServerManagerConfiguration>
   <ProxyGroup name="{group}">
    <SourceProxy name="{cls[len('vtk'):]}" class="{cls}" label={quoteattr(label)}>
     <Documentation short_help={quoteattr(label)}>{help_text}</Documentation>

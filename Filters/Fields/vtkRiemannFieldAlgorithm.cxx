@@ -7,6 +7,7 @@
 #include "Metric.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkExtentTranslator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -53,6 +54,25 @@ vtkRiemannFieldAlgorithm::vtkRiemannFieldAlgorithm()
     GridDefault::Bounds[3], GridDefault::Bounds[4], GridDefault::Bounds[5] }
   , Dimensions{ GridDefault::Dimensions[0], GridDefault::Dimensions[1], GridDefault::Dimensions[2] }
 {
+  // The dataset whose points are sampled (optional), then the metric port.
+  this->SetNumberOfInputPorts(2);
+}
+
+void vtkRiemannFieldAlgorithm::SetMetricConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(GetMetricPort(), output);
+}
+
+vtkTypeBool vtkRiemannFieldAlgorithm::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const vtkTypeBool result = this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) &&
+    vtkRiemannMetricInput::IsConnected(this, GetMetricPort()))
+  {
+    vtkRiemannMetricInput::CopyTimeSteps(inputVector[GetMetricPort()], outputVector);
+  }
+  return result;
 }
 
 vtkRiemannFieldAlgorithm::~vtkRiemannFieldAlgorithm()
@@ -70,8 +90,13 @@ vtkMTimeType vtkRiemannFieldAlgorithm::GetMTime()
   return time;
 }
 
-int vtkRiemannFieldAlgorithm::FillInputPortInformation(int, vtkInformation* info)
+int vtkRiemannFieldAlgorithm::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == GetMetricPort())
+  {
+    vtkRiemannMetricInput::FillPortInformation(info);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
@@ -247,14 +272,16 @@ int vtkRiemannFieldAlgorithm::RequestData(
     this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   output->Initialize();
   this->LastError.clear();
-  if (!this->Metric || !this->Metric->HasDefinition())
+  std::string error;
+  vtkRiemannMetric* metricHandle =
+    this->MetricInput.Resolve(this, GetMetricPort(), this->Metric, error);
+  if (!metricHandle)
   {
-    vtkRiemannReportErrorMacro(this->LastError, << "No metric: call SetMetric() with a vtkRiemannMetric that has a valid "
-                     "definition.");
+    vtkRiemannReportErrorMacro(this->LastError, << error);
     return 1;
   }
   // Hold the metric for the whole computation (SetDefinition may replace it).
-  const std::shared_ptr<const riemann::Metric> metric = this->Metric->GetMetric();
+  const std::shared_ptr<const riemann::Metric> metric = metricHandle->GetMetric();
 
   if (input)
   {

@@ -33,6 +33,7 @@
 #include "RiemannFiltersFieldsModule.h" // For export macro
 #include "vtkDataSetAlgorithm.h"
 #include "vtkDoubleArray.h"   // For NewPointArray
+#include "vtkRiemannMetricInput.h" // For the metric port
 #include "vtkSmartPointer.h"  // For NewPointArray
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
@@ -57,6 +58,21 @@ public:
   virtual void SetMetric(vtkRiemannMetric* metric);
   vtkGetObjectMacro(Metric, vtkRiemannMetric);
   ///@}
+
+  ///@{
+  /**
+   * The metric from the pipeline: the output of a vtkRiemannMetricSource,
+   * connected to port 1 (GetMetricPort(); port 0 is the optional dataset
+   * whose points are sampled). When connected it is used instead of
+   * SetMetric()'s, at the time the pipeline asks for.
+   */
+  void SetMetricConnection(vtkAlgorithmOutput* output);
+  static int GetMetricPort() { return 1; }
+  ///@}
+
+  /// The executive's requests, with the metric input's time steps copied to the outputs.
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
   ///@{
   /// The grid's box x0,x1,y0,y1,z0,z1 (used without an input). Default [-2,2]^3.
@@ -114,6 +130,7 @@ protected:
   VTK_WRAPEXCLUDE std::string CheckGrid() const;
 
   vtkRiemannMetric* Metric = nullptr;
+  vtkRiemannMetricInput MetricInput;
   // The declared defaults (vtkRiemannFieldAlgorithm.settings.json), set by the constructor.
   double Bounds[6];
   int Dimensions[3];

@@ -20,6 +20,7 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannDirectionGrid.h"
 #include "vtkRiemannIntegrationSettings.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -41,7 +42,7 @@ vtkRiemannConjugateLocus::vtkRiemannConjugateLocus()
   this->Tolerance = declared::Default::Tolerance;
   this->MaximumNumberOfConjugatePoints =
     static_cast<int>(declared::Default::MaximumNumberOfConjugatePoints);
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfDataPorts(0);
   this->SetNumberOfOutputPorts(2);
   // Defaults of this filter. DORMAND_PRINCE45: on the round sphere it finds
   // all of 10,000 double conjugate points to 1e-8, where RK4 at step 0.01
@@ -50,11 +51,13 @@ vtkRiemannConjugateLocus::vtkRiemannConjugateLocus()
   // (Testing/Benchmarks/README.md). MaximumError is only a cap: the
   // integration tolerance follows Tolerance (FindConjugatePoints). The step
   // budget is large: the search must not stop before MaximumPropagation.
+  // The declared "ConjugateLocus" preset (vtkRiemannIntegrationSettings.settings.json).
+  namespace preset = riemann::declared::vtkRiemannIntegrationSettings::ConjugateLocus;
   vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
-  settings->SetIntegratorTypeToDormandPrince45();
-  settings->SetMaximumIntegrationStep(0.1);
-  settings->SetMaximumError(1e-6);
-  settings->SetMaximumNumberOfSteps(10000000);
+  settings->SetIntegratorType(preset::IntegratorType);
+  settings->SetMaximumIntegrationStep(preset::MaximumIntegrationStep);
+  settings->SetMaximumError(preset::MaximumError);
+  settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(preset::MaximumNumberOfSteps));
 }
 
 vtkRiemannConjugateLocus::~vtkRiemannConjugateLocus() = default;

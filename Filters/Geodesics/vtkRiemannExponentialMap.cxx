@@ -18,6 +18,7 @@
 #include "vtkRiemannDirectionGrid.h"
 #include "RiemannExponentialMapDeclaration.h"
 #include "vtkRiemannIntegrationSettings.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
 #include "vtkRiemannNewArray.h"
 #include "vtkRiemannParallelBatches.h"
 #include "vtkUnsignedCharArray.h"
@@ -37,13 +38,15 @@ vtkRiemannExponentialMap::vtkRiemannExponentialMap()
   this->NumberOfDirections = static_cast<int>(declared::Default::NumberOfDirections);
   std::copy(declared::Default::ConeAxis, declared::Default::ConeAxis + 3, this->ConeAxis);
   this->ConeAngle = declared::Default::ConeAngle;
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfDataPorts(0);
   this->SetNumberOfOutputPorts(2);
-  // Defaults of this filter: a bundle of moderate length, fine steps.
+  // Defaults of this filter: a bundle of moderate length, fine steps (the
+  // declared "ExponentialMap" preset, vtkRiemannIntegrationSettings.settings.json).
+  namespace preset = riemann::declared::vtkRiemannIntegrationSettings::ExponentialMap;
   vtkRiemannIntegrationSettings* settings = this->GetIntegrationSettings();
-  settings->SetMaximumPropagation(5.0);
-  settings->SetMaximumIntegrationStep(0.1);
-  settings->SetMaximumNumberOfSteps(100000);
+  settings->SetMaximumPropagation(preset::MaximumPropagation);
+  settings->SetMaximumIntegrationStep(preset::MaximumIntegrationStep);
+  settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(preset::MaximumNumberOfSteps));
 }
 
 vtkRiemannExponentialMap::~vtkRiemannExponentialMap() = default;

@@ -21,6 +21,45 @@ vtkCxxSetObjectMacro(vtkRiemannGeodesicAlgorithm, Metric, vtkRiemannMetric);
 vtkRiemannGeodesicAlgorithm::vtkRiemannGeodesicAlgorithm()
   : IntegrationSettings(vtkRiemannIntegrationSettings::New())
 {
+  this->SetNumberOfDataPorts(1);
+}
+
+void vtkRiemannGeodesicAlgorithm::SetNumberOfDataPorts(int count)
+{
+  this->MetricPort = count;
+  this->SetNumberOfInputPorts(count + 1);
+}
+
+void vtkRiemannGeodesicAlgorithm::SetMetricConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(this->MetricPort, output);
+}
+
+int vtkRiemannGeodesicAlgorithm::FillDataPortInformation(int port, vtkInformation* info)
+{
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+int vtkRiemannGeodesicAlgorithm::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == this->MetricPort)
+  {
+    vtkRiemannMetricInput::FillPortInformation(info);
+    return 1;
+  }
+  return this->FillDataPortInformation(port, info);
+}
+
+vtkTypeBool vtkRiemannGeodesicAlgorithm::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const vtkTypeBool result = this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) &&
+    vtkRiemannMetricInput::IsConnected(this, this->MetricPort))
+  {
+    vtkRiemannMetricInput::CopyTimeSteps(inputVector[this->MetricPort], outputVector);
+  }
+  return result;
 }
 
 vtkRiemannGeodesicAlgorithm::~vtkRiemannGeodesicAlgorithm()
@@ -81,10 +120,12 @@ bool vtkRiemannGeodesicAlgorithm::BuildDirectionGrid(
 std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricAndSettings()
 {
   this->LastError.clear();
-  if (!this->Metric || !this->Metric->HasDefinition())
+  std::string error;
+  vtkRiemannMetric* metric =
+    this->MetricInput.Resolve(this, this->MetricPort, this->Metric, error);
+  if (!metric)
   {
-    this->ReportError(
-      "No metric: call SetMetric() with a vtkRiemannMetric that has a valid definition.");
+    this->ReportError(error);
     return nullptr;
   }
   const std::string settingsError =
@@ -95,7 +136,7 @@ std::shared_ptr<const riemann::Metric> vtkRiemannGeodesicAlgorithm::CheckMetricA
     return nullptr;
   }
   // Held for the whole computation (SetDefinition may replace it meanwhile).
-  return this->Metric->GetMetric();
+  return metric->GetMetric();
 }
 
 riemann::GeodesicOptions vtkRiemannGeodesicAlgorithm::MakeGeodesicOptions() const
@@ -109,6 +150,8 @@ void vtkRiemannGeodesicAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Metric: " << this->Metric << "\n";
+  os << indent << "MetricPort: " << this->MetricPort
+     << (vtkRiemannMetricInput::IsConnected(this, this->MetricPort) ? " (connected)" : "") << "\n";
   os << indent << "IntegrationSettings:\n";
   this->IntegrationSettings->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LastError: " << this->LastError << "\n";

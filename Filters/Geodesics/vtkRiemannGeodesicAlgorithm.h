@@ -7,7 +7,9 @@
  * and vtkRiemannRayBundle derive from it, as the field filters derive from
  * vtkRiemannFieldAlgorithm. It holds:
  *
- * - the metric (SetMetric, required);
+ * - the metric: SetMetric(), or from the pipeline through the last input
+ *   port (SetMetricConnection: a vtkRiemannMetricSource's output, with its
+ *   parameters and time; ParaView's filters take theirs so);
  * - the integration settings (GetIntegrationSettings: integrator, steps,
  *   error, propagation and step limits in vtkStreamTracer's words; see
  *   vtkRiemannIntegrationSettings), which several filters and renderers may
@@ -27,6 +29,7 @@
 
 #include "RiemannFiltersGeodesicsModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannMetricInput.h" // For the metric port
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 #include <memory> // For std::shared_ptr
@@ -54,6 +57,22 @@ public:
 
   ///@{
   /**
+   * The metric from the pipeline: the output of a vtkRiemannMetricSource,
+   * connected to the metric port (the last input port, after the filter's
+   * data inputs). When connected it is used instead of SetMetric()'s, at the
+   * time the pipeline asks for (the outputs advertise the source's time
+   * steps).
+   */
+  void SetMetricConnection(vtkAlgorithmOutput* output);
+  int GetMetricPort() const { return this->MetricPort; }
+  ///@}
+
+  /// The executive's requests, with the metric input's time steps copied to the outputs.
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  ///@{
+  /**
    * How geodesics are integrated. Each filter starts with its own settings
    * object (with the filter's defaults); setting another one shares it (null
    * is ignored).
@@ -71,6 +90,16 @@ public:
 protected:
   vtkRiemannGeodesicAlgorithm();
   ~vtkRiemannGeodesicAlgorithm() override;
+
+  /**
+   * The filter's data inputs (1 here, a vtkPolyData; a subclass's
+   * constructor says its own): the metric port comes after them.
+   */
+  void SetNumberOfDataPorts(int count);
+
+  /// The data ports' requirements (FillInputPortInformation's, without the metric port).
+  virtual int FillDataPortInformation(int port, vtkInformation* info);
+  int FillInputPortInformation(int port, vtkInformation* info) final;
 
   /**
    * The core metric when there is one and every integration setting is
@@ -117,6 +146,8 @@ protected:
   vtkRiemannMetric* Metric = nullptr;
   vtkRiemannIntegrationSettings* IntegrationSettings = nullptr;
   std::string LastError;
+  int MetricPort = 1;
+  vtkRiemannMetricInput MetricInput;
 
 private:
   vtkRiemannGeodesicAlgorithm(const vtkRiemannGeodesicAlgorithm&) = delete;

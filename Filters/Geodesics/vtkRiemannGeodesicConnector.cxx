@@ -1,5 +1,6 @@
 #include "vtkRiemannGeodesicConnector.h"
 #include "RiemannGeodesicConnectorDeclaration.h"
+#include "RiemannIntegrationSettingsDeclaration.h"
 
 #include "GeodesicConnector.h"
 #include "Metric.h"
@@ -46,19 +47,21 @@ vtkRiemannGeodesicConnector::vtkRiemannGeodesicConnector()
   std::copy(connectorDeclared::Default::EndPosition, connectorDeclared::Default::EndPosition + 3,
     this->EndPosition);
   this->Tolerance = connectorDeclared::Default::Tolerance;
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfDataPorts(0);
   ApplyConnectionDefaults(this->GetIntegrationSettings());
 }
 
 void vtkRiemannGeodesicConnector::ApplyConnectionDefaults(vtkRiemannIntegrationSettings* settings)
 {
-  // The conjugate locus's integration defaults (vtkRiemannConjugateLocus):
-  // the Morse indices come from the same Maslov-phase search. The step
+  // The declared "Connection" preset (vtkRiemannIntegrationSettings.settings.json):
+  // the conjugate locus's integration defaults (vtkRiemannConjugateLocus),
+  // as the Morse indices come from the same Maslov-phase search. The step
   // budget is large: no geodesic may stop before MaximumPropagation.
-  settings->SetIntegratorTypeToDormandPrince45();
-  settings->SetMaximumIntegrationStep(0.1);
-  settings->SetMaximumError(1e-8);
-  settings->SetMaximumNumberOfSteps(10000000);
+  namespace connection = riemann::declared::vtkRiemannIntegrationSettings::Connection;
+  settings->SetIntegratorType(connection::IntegratorType);
+  settings->SetMaximumIntegrationStep(connection::MaximumIntegrationStep);
+  settings->SetMaximumError(connection::MaximumError);
+  settings->SetMaximumNumberOfSteps(static_cast<vtkIdType>(connection::MaximumNumberOfSteps));
 }
 
 std::string vtkRiemannGeodesicConnector::CheckTolerance(double tolerance)

@@ -91,7 +91,7 @@ vtkRiemannGeodesicTracer::~vtkRiemannGeodesicTracer()
   this->SetDirectionArrayName(nullptr);
 }
 
-int vtkRiemannGeodesicTracer::FillInputPortInformation(int, vtkInformation* info)
+int vtkRiemannGeodesicTracer::FillDataPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);

@@ -262,7 +262,7 @@ protected:
   vtkRiemannGeodesicTracer();
   ~vtkRiemannGeodesicTracer() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillDataPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
   int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,

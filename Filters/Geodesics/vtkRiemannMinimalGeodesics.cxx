@@ -28,7 +28,7 @@ vtkStandardNewMacro(vtkRiemannMinimalGeodesics);
 
 vtkRiemannMinimalGeodesics::vtkRiemannMinimalGeodesics()
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfDataPorts(1);
   // Newton's is the connector's: its integration defaults.
   vtkRiemannGeodesicConnector::ApplyConnectionDefaults(this->GetIntegrationSettings());
 }
@@ -50,7 +50,7 @@ void vtkRiemannMinimalGeodesics::RemoveAllTargets()
   }
 }
 
-int vtkRiemannMinimalGeodesics::FillInputPortInformation(int, vtkInformation* info)
+int vtkRiemannMinimalGeodesics::FillDataPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
   return 1;

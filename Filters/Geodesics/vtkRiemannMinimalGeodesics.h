@@ -68,7 +68,7 @@ protected:
   vtkRiemannMinimalGeodesics();
   ~vtkRiemannMinimalGeodesics() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillDataPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

@@ -45,7 +45,7 @@ vtkRiemannCameraPath::vtkRiemannCameraPath()
   , NumberOfFrames(static_cast<int>(CameraPathDefault::NumberOfFrames))
   , Step(CameraPathDefault::Step)
 {
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfDataPorts(0);
   std::copy(CameraPathDefault::Position, CameraPathDefault::Position + 3, this->Position);
   std::copy(CameraPathDefault::LookAt, CameraPathDefault::LookAt + 3, this->LookAt);
   std::copy(CameraPathDefault::ViewUp, CameraPathDefault::ViewUp + 3, this->ViewUp);
@@ -56,7 +56,7 @@ vtkRiemannCameraPath::~vtkRiemannCameraPath()
   this->SetKeyPositions(nullptr);
 }
 
-int vtkRiemannCameraPath::FillInputPortInformation(int, vtkInformation*)
+int vtkRiemannCameraPath::FillDataPortInformation(int, vtkInformation*)
 {
   return 1;
 }

@@ -106,7 +106,7 @@ protected:
   vtkRiemannCameraPath();
   ~vtkRiemannCameraPath() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillDataPortInformation(int port, vtkInformation* info) override;
   bool UsesIntegrationSettings() const override { return false; }
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;

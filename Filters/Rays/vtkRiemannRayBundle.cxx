@@ -54,7 +54,7 @@ vtkRiemannRayBundle::vtkRiemannRayBundle()
   , SubgridResolution(static_cast<int>(BundleDeclared::Default::SubgridResolution))
   , UseSceneSettings(BundleDeclared::Default::UseSceneSettings)
 {
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfDataPorts(0);
   vtkRiemannSetRayDefaults(this->IntegrationSettings);
 }
 
@@ -64,7 +64,7 @@ vtkRiemannRayBundle::~vtkRiemannRayBundle()
   this->SetCamera(nullptr);
 }
 
-int vtkRiemannRayBundle::FillInputPortInformation(int, vtkInformation*)
+int vtkRiemannRayBundle::FillDataPortInformation(int, vtkInformation*)
 {
   return 1;
 }

@@ -121,7 +121,7 @@ protected:
   vtkRiemannRayBundle();
   ~vtkRiemannRayBundle() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillDataPortInformation(int port, vtkInformation* info) override;
   /// The integration settings are checked only when they apply (UseSceneSettings off).
   bool UsesIntegrationSettings() const override { return !this->UseSceneSettings; }
   int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,

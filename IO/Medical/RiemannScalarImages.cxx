@@ -10,6 +10,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkStructuredPoints.h" // GetOutput()'s type (VTK 9.2 only declares it)
 #include "vtkStructuredPointsReader.h"
 #include "vtkXMLImageDataReader.h"
 

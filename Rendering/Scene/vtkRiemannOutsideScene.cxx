@@ -1,5 +1,6 @@
 #include "vtkRiemannOutsideScene.h"
 
+#include "RiemannScene.h"
 #include "vtkRiemannScene.h"
 #include "vtkRiemannSceneSource.h"
 

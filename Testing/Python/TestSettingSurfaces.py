@@ -122,6 +122,10 @@ def default_text(setting):
     return shortest(d)
 
 
+# Every declaration (main() fills it), for the checks that read another class's.
+DOCS = []
+
+
 # --- 1. The VTK class ---------------------------------------------------------
 def check_vtk_defaults(doc):
     cls = doc["class"]
@@ -148,8 +152,24 @@ def check_paraview(doc):
     check(os.path.isfile(path), "%s: no ParaView XML at %s" % (cls, path))
     if not os.path.isfile(path):
         return
-    proxy = ET.parse(path).getroot().find("./ProxyGroup/SourceProxy")
-    check(proxy is not None and proxy.get("class") == cls, "%s: the XML's proxy is not of the class" % cls)
+    root = ET.parse(path).getroot()
+    proxies = root.findall("./ProxyGroup/SourceProxy") + root.findall("./ProxyGroup/Proxy")
+    check(proxies and all(p.get("class") == cls for p in proxies), "%s: the XML's proxies are not of the class" % cls)
+    if not proxies:
+        return
+    # A settings object has one proxy per preset after its own: each preset's values are its defaults.
+    presets = doc.get("presets", {}) if root.find("./ProxyGroup/Proxy") is not None else {}
+    check(len(proxies) == 1 + len(presets), "%s: %d proxies for %d presets" % (cls, len(proxies), len(presets)))
+    for proxy, (preset, values) in zip(proxies[1:], presets.items()):
+        for p in proxy:
+            if p.get("name") in values:
+                s = next(x for x in doc["settings"] if x["name"] == p.get("name"))
+                v = values[p.get("name")]
+                want = [float(s["choices"].index(v))] if s["type"] == "choice" else [float(v)]
+                check([float(x) for x in p.get("default_values").split()] == want,
+                      "%s preset %s: %s defaults to %s, declared %s" % (cls, preset, p.get("name"), p.get("default_values"), want))
+    proxy = proxies[0]
+    check_pipeline_properties(doc, proxy)
     properties = {p.get("name"): p for p in proxy if p.tag.endswith("VectorProperty")}
     check(set(properties) == {s["name"] for s in doc["settings"]},
           "%s: XML properties %s, declared %s" % (cls, sorted(properties), [s["name"] for s in doc["settings"]]))
@@ -180,6 +200,38 @@ def check_paraview(doc):
         if kind == "choice":
             entries = [e.get("text") for e in p.find("EnumerationDomain")]
             check(entries == s["choices"], "%s: entries %s" % (where, entries))
+
+
+def check_pipeline_properties(doc, proxy):
+    """The proxy's inputs are the declared data inputs, then the metric at the class's
+    GetMetricPort(); a geodesic filter's integration settings start from its preset."""
+    cls = doc["class"]
+    inputs = [(p.get("name"), int(p.get("port_index"))) for p in proxy if p.tag == "InputProperty"]
+    want = [(i["name"], i["port"]) for i in doc.get("inputs", [])]
+    if "metric_port" in doc:
+        want.append(("Metric" if doc.get("inputs") else "Input", doc["metric_port"]))
+        obj = getattr(riemann, cls)()
+        check(obj.GetMetricPort() == doc["metric_port"],
+              "%s: GetMetricPort() is %d, declared %d" % (cls, obj.GetMetricPort(), doc["metric_port"]))
+        check(obj.GetNumberOfInputPorts() == doc["metric_port"] + 1,
+              "%s: %d input ports, the metric's is the last (%d)" % (cls, obj.GetNumberOfInputPorts(), doc["metric_port"]))
+    check(inputs == want, "%s: ParaView inputs %s, declared %s" % (cls, inputs, want))
+    integration = [p for p in proxy if p.tag == "ProxyProperty" and p.get("name") == "IntegrationSettings"]
+    check(bool(integration) == ("integration" in doc), "%s: integration settings %s in ParaView" % (cls, bool(integration)))
+    if integration and "integration" in doc:
+        preset = doc["integration"]
+        name = integration[0].find("./ProxyListDomain/Proxy").get("name")
+        check(name == "IntegrationSettings" + ("" if preset == "default" else preset),
+              "%s: integration proxy %s for preset %s" % (cls, name, preset))
+        # The VTK object starts from the same preset.
+        settings = getattr(riemann, cls)().GetIntegrationSettings()
+        declared = next(d for d in DOCS if d["class"] == "vtkRiemannIntegrationSettings")
+        values = declared.get("presets", {}).get(preset, {})
+        for s in declared["settings"]:
+            v = values.get(s["name"], s["default"])
+            v = s["choices"].index(v) if s["type"] == "choice" else v
+            got = getattr(settings, "Get" + s["name"])()
+            check(got == v, "%s: integration %s is %r, its preset %s says %r" % (cls, s["name"], got, preset, v))
 
 
 # --- 3. The commands ------------------------------------------------------------
@@ -335,6 +387,7 @@ def check_generator_follows(generator, files):
 def main():
     generator = load_generator()
     files, docs = generator.declarations_of(SOURCE)
+    DOCS.extend(docs)
     check(len(files) >= 4, "only %d declarations found under %s" % (len(files), SOURCE))
     count = 0
     for doc in docs:

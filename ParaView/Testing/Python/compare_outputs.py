@@ -1,0 +1,59 @@
+"""Read VTK files with the toolkit's VTK (9.1) and compare their arrays.
+
+ParaView (VTK 9.2 inside) and the riemann commands write the same XML
+formats; these read both and say where two outputs differ.
+"""
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader
+
+
+def read(path):
+    reader = vtkXMLGenericDataObjectReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    if data is None:
+        raise AssertionError(f"{path}: not readable as VTK XML")
+    return data
+
+
+def arrays(data):
+    """name -> numpy array of the point data; the points as "Points" (an image's: its
+    origin, spacing and extent)."""
+    out = {}
+    attributes = data.GetPointData()
+    for i in range(attributes.GetNumberOfArrays()):
+        array = attributes.GetArray(i)
+        if array is not None:
+            out[array.GetName()] = vtk_to_numpy(array).astype(np.float64)
+    if data.IsA("vtkImageData"):
+        out["Points"] = np.array(list(data.GetOrigin()) + list(data.GetSpacing()) + list(data.GetExtent()),
+                                 dtype=np.float64)
+    elif hasattr(data, "GetPoints") and data.GetPoints() is not None:
+        out["Points"] = vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
+    return out
+
+
+def compare(got_path, want_path, names, tolerance=0.0):
+    """Each named array of `got` equals `want`'s to `tolerance` (0: bitwise); messages for the rest."""
+    got, want = arrays(read(got_path)), arrays(read(want_path))
+    problems = []
+    for name in names:
+        if name not in got:
+            problems.append(f"{got_path}: no array {name} (has {sorted(got)})")
+            continue
+        if name not in want:
+            problems.append(f"{want_path}: no array {name} (has {sorted(want)})")
+            continue
+        a, b = got[name], want[name]
+        if a.shape != b.shape:
+            problems.append(f"{name}: shape {a.shape} against {b.shape}")
+            continue
+        both_nan = np.isnan(a) & np.isnan(b)
+        difference = np.where(both_nan, 0.0, np.abs(a - b))
+        worst = float(np.nanmax(difference)) if difference.size else 0.0
+        if not worst <= tolerance or np.any(np.isnan(a) != np.isnan(b)):
+            problems.append(f"{name}: differs by up to {worst:.3g} (allowed {tolerance:g})")
+    return problems

@@ -1,0 +1,120 @@
+"""Drive the real ParaView (the GUI, under Xvfb) with its XML event scripts.
+
+ParaView plays a test script of Qt events (--test-script=X.xml --exit): the
+same clicks a user makes. A script is written here from named steps
+(Steps.apply_source, Steps.set_file, Steps.save_data, ...), ParaView runs it
+with the plugin loaded (--plugins=RiemannVTK), and the log is read: a script
+that fails exits 1, but a proxy whose execution fails does not stop
+ParaView, so the log's errors are returned for the test to judge.
+
+Environment (set by ParaView/Testing/CMakeLists.txt): RIEMANN_PARAVIEW
+(the paraview executable), RIEMANN_PARAVIEW_PLUGIN_DIR (the plugin's folder).
+"""
+
+import os
+import re
+import subprocess
+import tempfile
+from xml.sax.saxutils import quoteattr
+
+PANEL = ("pqClientMainWindow/propertiesDock/propertiesPanel/scrollArea/qt_scrollarea_viewport/"
+         "scrollAreaWidgetContents/PropertiesFrame/ProxyPanel")
+
+
+class Steps:
+    """The events of one script, named after what a user does."""
+
+    def __init__(self):
+        self.events = []
+
+    def event(self, obj, command, arguments=""):
+        self.events.append((obj, command, arguments))
+        return self
+
+    def menu(self, menu, category, item):
+        self.event("pqClientMainWindow/menubar", "activate", menu)
+        return self.event(f"pqClientMainWindow/menubar/{menu}/{category}", "activate", item)
+
+    def apply(self):
+        return self.event("pqClientMainWindow/propertiesDock/propertiesPanel/Accept", "activate")
+
+    def apply_source(self, proxy, **settings):
+        """Sources > Riemann > proxy, then its settings, then Apply."""
+        self.menu("menuSources", "Riemann", proxy)
+        return self.settings(settings).apply()
+
+    def apply_filter(self, proxy, **settings):
+        """Filters > Riemann > proxy on the selected source, its settings, Apply."""
+        self.menu("menuFilters", "Riemann", proxy)
+        return self.settings(settings).apply()
+
+    def settings(self, settings):
+        for name, value in settings.items():
+            if name == "DefinitionFile":
+                self.set_file(name, value)
+            else:
+                self.set_line(name, value)
+        return self
+
+    def set_file(self, prop, path):
+        return self.event(f"{PANEL}/{prop}/FileChooser/FileLineEdit", "set_string", path)
+
+    def set_line(self, prop, value, element=0):
+        """A number property's line edit (the element-th of a vector property)."""
+        return self.event(f"{PANEL}/{prop}/DoubleLineEdit{element}", "set_string", str(value))
+
+    def set_text(self, prop, text):
+        return self.event(f"{PANEL}/{prop}/{prop}", "set_string", text)
+
+    def select(self, source_label):
+        """Select a pipeline item by its label in the Pipeline Browser."""
+        return self.event("pqClientMainWindow/pipelineBrowserDock/pipelineBrowser", "mousePress",
+                          f"1,1,0,0,0,0,/0:0/0:{source_label}")
+
+    def last_time(self):
+        """The animation toolbar's Last Frame: ParaView's time to the end."""
+        return self.event("pqClientMainWindow/VCRToolbar/actionVCRLastFrame", "activate")
+
+    def save_data(self, path):
+        """File > Save Data of the selected output, as `path` (its writer's defaults)."""
+        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveData")
+        self.event("pqClientMainWindow/FileSaveDialog", "filesSelected", path)
+        return self.event("pqClientMainWindow/WriterSettingsDialog/widget/OKButton", "activate")
+
+    def save_state(self, path):
+        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveServerState")
+        return self.event("pqClientMainWindow/FileSaveServerStateDialog", "filesSelected", path)
+
+    def xml(self):
+        lines = ['<?xml version="1.0" ?>', "<pqevents>"]
+        for obj, command, arguments in self.events:
+            lines.append(f"  <pqevent object={quoteattr(obj)} command={quoteattr(command)} "
+                         f"arguments={quoteattr(arguments)} />")
+        lines.append("</pqevents>")
+        return "\n".join(lines) + "\n"
+
+
+class Run:
+    def __init__(self, returncode, log):
+        self.returncode = returncode
+        self.log = log
+
+    def errors(self):
+        """The lines of the log that report errors (vtkErrorMacro, ParaView's own)."""
+        return [line for line in self.log.splitlines() if re.search(r"\bERR\b|\bERROR\b|Error:", line)]
+
+
+def run(steps, work, name="script", extra_args=(), timeout=240):
+    """Play `steps` in ParaView with the plugin loaded; its home (settings) is a fresh folder."""
+    script = os.path.join(work, name + ".xml")
+    with open(script, "w", encoding="utf-8") as f:
+        f.write(steps.xml())
+    home = tempfile.mkdtemp(prefix="home-", dir=work)
+    env = dict(os.environ, HOME=home, XDG_CONFIG_HOME=os.path.join(home, ".config"))
+    command = [os.environ["RIEMANN_PARAVIEW"], "--dr",
+               "--plugin-search-paths=" + os.environ["RIEMANN_PARAVIEW_PLUGIN_DIR"],
+               "--plugins=RiemannVTK", *extra_args, "--test-script=" + script, "--exit"]
+    done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True, timeout=timeout)
+    return Run(done.returncode, done.stdout + done.stderr)
