@@ -80,6 +80,9 @@ int vtkRiemannMetricSource::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), steps);
   const double range[2] = { 0.0, 1.0 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  // Every piece is the whole metric (it is the same everywhere): without
+  // this, the executive would hand the ranks other than 0 an empty output.
+  outInfo->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
   return 1;
 }
 

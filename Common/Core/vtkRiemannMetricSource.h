@@ -13,7 +13,8 @@
  * advertises TIME_RANGE [0, 1] and NumberOfTimeSteps steps over it, and each
  * execution evaluates the definition at the requested UPDATE_TIME_STEP
  * (clamped to [0, 1]; 0 without a request). A filter downstream asking for
- * another time re-executes this source, as ParaView's animation does.
+ * another time re-executes this source, as ParaView's animation does. Every
+ * piece of a piece request (each rank under MPI) is the whole metric.
  *
  * The output is an empty vtkPolyData whose field data carries the metric:
  * its definition with the parameters given (string array

@@ -20,14 +20,20 @@ def read(path):
 
 
 def arrays(data):
-    """name -> numpy array of the point data; the points as "Points" (an image's: its
-    origin, spacing and extent)."""
+    """name -> numpy array: the point data by name, the cell data as "cell:<name>"; the
+    points as "Points" (an image's: its origin, spacing and extent); a polydata's cells
+    as "Lines", "Polys", "Verts" (offsets, then connectivity)."""
     out = {}
-    attributes = data.GetPointData()
-    for i in range(attributes.GetNumberOfArrays()):
-        array = attributes.GetArray(i)
-        if array is not None:
-            out[array.GetName()] = vtk_to_numpy(array).astype(np.float64)
+    for prefix, attributes in (("", data.GetPointData()), ("cell:", data.GetCellData())):
+        for i in range(attributes.GetNumberOfArrays()):
+            array = attributes.GetArray(i)
+            if array is not None:
+                out[prefix + array.GetName()] = vtk_to_numpy(array).astype(np.float64)
+    if data.IsA("vtkPolyData"):
+        for name, cells in (("Lines", data.GetLines()), ("Polys", data.GetPolys()), ("Verts", data.GetVerts())):
+            if cells.GetNumberOfCells() > 0:
+                out[name] = np.concatenate([vtk_to_numpy(cells.GetOffsetsArray()),
+                                            vtk_to_numpy(cells.GetConnectivityArray())]).astype(np.float64)
     if data.IsA("vtkImageData"):
         out["Points"] = np.array(list(data.GetOrigin()) + list(data.GetSpacing()) + list(data.GetExtent()),
                                  dtype=np.float64)
@@ -36,10 +42,19 @@ def arrays(data):
     return out
 
 
-def compare(got_path, want_path, names, tolerance=0.0):
-    """Each named array of `got` equals `want`'s to `tolerance` (0: bitwise); messages for the rest."""
+# What ParaView's writers add of their own (not the filter's output).
+WRITER_ARRAYS = {"vtkOriginalPointIds", "vtkOriginalCellIds"}
+
+
+def compare(got_path, want_path, names=None, tolerance=0.0):
+    """Each named array of `got` (None: all it has, which must include Points) equals
+    `want`'s to `tolerance` (0: bitwise); messages for the rest."""
     got, want = arrays(read(got_path)), arrays(read(want_path))
     problems = []
+    if names is None:
+        names = sorted(set(got) - WRITER_ARRAYS)
+        if "Points" not in names:
+            problems.append(f"{got_path}: no points")
     for name in names:
         if name not in got:
             problems.append(f"{got_path}: no array {name} (has {sorted(got)})")

@@ -48,6 +48,24 @@ class Steps:
         self.menu("menuFilters", "Riemann", proxy)
         return self.settings(settings).apply()
 
+    def apply_filter_with_inputs(self, proxy, inputs, **settings):
+        """Filters > Riemann > proxy for a filter of several inputs: ParaView asks which
+        source goes to which input (its Select Input dialog); `inputs` maps an input's
+        name to the source's row under builtin: (0 for the first source made)."""
+        self.menu("menuFilters", "Riemann", proxy)
+        dialog = "pqClientMainWindow/SelectInputDialog"
+        for name, row in inputs.items():
+            self.event(f"{dialog}/buttonFrame/{name}", "activate")
+            # The pipeline's tree: builtin: (row 0), then the sources under it ("row|column" last).
+            self.event(f"{dialog}/pipelineView", "currentChanged", f"/0/{row}|0")
+        self.event(f"{dialog}/buttonBox/1QPushButton0", "activate")
+        return self.settings(settings).apply()
+
+    def apply_vtk_source(self, proxy):
+        """Sources > Alphabetical > proxy (one of ParaView's own), with its defaults."""
+        self.menu("menuSources", "Alphabetical", proxy)
+        return self.apply()
+
     def settings(self, settings):
         for name, value in settings.items():
             if name == "DefinitionFile":
@@ -65,11 +83,6 @@ class Steps:
 
     def set_text(self, prop, text):
         return self.event(f"{PANEL}/{prop}/{prop}", "set_string", text)
-
-    def select(self, source_label):
-        """Select a pipeline item by its label in the Pipeline Browser."""
-        return self.event("pqClientMainWindow/pipelineBrowserDock/pipelineBrowser", "mousePress",
-                          f"1,1,0,0,0,0,/0:0/0:{source_label}")
 
     def last_time(self):
         """The animation toolbar's Last Frame: ParaView's time to the end."""
