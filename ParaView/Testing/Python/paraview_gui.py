@@ -13,8 +13,10 @@ Environment (set by ParaView/Testing/CMakeLists.txt): RIEMANN_PARAVIEW
 
 import os
 import re
+import socket
 import subprocess
 import tempfile
+import time
 from xml.sax.saxutils import quoteattr
 
 PANEL = ("pqClientMainWindow/propertiesDock/propertiesPanel/scrollArea/qt_scrollarea_viewport/"
@@ -117,6 +119,44 @@ class Run:
     def errors(self):
         """The lines of the log that report errors (vtkErrorMacro, ParaView's own)."""
         return [line for line in self.log.splitlines() if re.search(r"\bERR\b|\bERROR\b|Error:", line)]
+
+
+class Server:
+    """pvserver with the plugin, alone or under `mpirun -np ranks`, on a free port."""
+
+    def __init__(self, work, ranks=1):
+        with socket.socket() as probe:
+            probe.bind(("localhost", 0))
+            self.port = probe.getsockname()[1]
+        command = ["/usr/bin/pvserver", f"--server-port={self.port}", "--plugins=RiemannVTK"]
+        if ranks > 1:
+            command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + command
+        env = dict(os.environ, PV_PLUGIN_PATH=os.environ["RIEMANN_PARAVIEW_PLUGIN_DIR"])
+        self.log_path = os.path.join(work, f"pvserver-{ranks}.log")
+        self.log = open(self.log_path, "w", encoding="utf-8")
+        self.process = subprocess.Popen(command, cwd=work, env=env, stdout=self.log, stderr=subprocess.STDOUT)
+        # Ready once it listens ("Accepting connection(s): ...").
+        for _ in range(600):
+            with open(self.log_path, encoding="utf-8", errors="replace") as f:
+                if "Accepting connection" in f.read():
+                    return
+            if self.process.poll() is not None:
+                break
+            time.sleep(0.1)
+        raise RuntimeError("pvserver did not start:\n" + open(self.log_path, encoding="utf-8").read())
+
+    def url(self):
+        return f"cs://localhost:{self.port}"
+
+    def stop(self):
+        """Wait for the server to end (it exits when its client disconnects); its log."""
+        try:
+            self.process.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+        self.log.close()
+        with open(self.log_path, encoding="utf-8", errors="replace") as f:
+            return f.read()
 
 
 def run(steps, work, name="script", extra_args=(), timeout=240):
