@@ -1,0 +1,96 @@
+"""The direction grid, the camera path and the metric file reader in the real ParaView.
+
+1. Sources > Riemann > Direction Grid with its defaults, saved: equal bit for
+   bit to the toolkit's vtkRiemannDirectionGrid (Python) with the same
+   declared defaults.
+2. A Riemann Metric reading the lens, then a Camera Path with its defaults:
+   equal to vtkRiemannCameraPath on the same file (Python).
+3. A metric file opened as data (paraview --data=FILE.json: the Riemann
+   Metric File reader), then a Curvature Field: equal to `riemann fields`.
+"""
+
+import os
+import subprocess
+import sys
+import tempfile
+
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare_outputs  # noqa: E402
+import paraview_gui  # noqa: E402
+
+import riemann  # noqa: E402
+
+DATA = os.environ["RIEMANN_DATA_DIR"]
+RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
+LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
+
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL: " + message)
+
+
+def write_polydata(algorithm, path):
+    algorithm.Update()
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(algorithm.GetOutput())
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def played(steps, work, name, output, extra_args=()):
+    run = paraview_gui.run(steps, work, name=name, extra_args=extra_args)
+    check(run.returncode == 0 and not run.errors(),
+          f"{name}: ParaView failed ({run.returncode}) or reported errors: {run.errors()[:5]}\n{run.log[-1500:]}")
+    check(os.path.isfile(output), f"{name}: nothing saved")
+    return os.path.isfile(output)
+
+
+def compared(name, output, reference, names=None):
+    problems = compare_outputs.compare(output, reference, names)
+    for problem in problems:
+        check(False, f"{name}: {problem}")
+    if not problems:
+        print(f"{name}: equal to the toolkit's: " + ", ".join(sorted(compare_outputs.arrays(compare_outputs.read(output)))))
+
+
+def main():
+    work = tempfile.mkdtemp(prefix="ParaViewSources-")
+
+    output = os.path.join(work, "directions.vtp")
+    if played(paraview_gui.Steps().apply_source("RiemannDirectionGrid").save_data(output), work, "direction-grid", output):
+        reference = os.path.join(work, "directions.reference.vtp")
+        write_polydata(riemann.vtkRiemannDirectionGrid(), reference)
+        compared("direction grid", output, reference)
+
+    output = os.path.join(work, "camera-path.vtp")
+    steps = (paraview_gui.Steps()
+             .apply_source("RiemannMetricSource", DefinitionFile=LENS)
+             .apply_filter("RiemannCameraPath")
+             .save_data(output))
+    if played(steps, work, "camera-path", output):
+        metric = riemann.vtkRiemannMetric()
+        check(metric.SetDefinitionFile(LENS), metric.GetLastError())
+        path = riemann.vtkRiemannCameraPath()
+        path.SetMetric(metric)
+        reference = os.path.join(work, "camera-path.reference.vtp")
+        write_polydata(path, reference)
+        compared("camera path", output, reference)
+
+    output = os.path.join(work, "from-reader.vti")
+    steps = paraview_gui.Steps().apply().apply_filter("RiemannCurvatureField").save_data(output)
+    if played(steps, work, "reader", output, extra_args=["--data=" + LENS]):
+        reference = os.path.join(work, "from-reader.reference.vti")
+        subprocess.run([RIEMANN, "fields", "--metric", LENS, "--compress", "none", "-o", reference],
+                       check=True, capture_output=True)
+        compared("metric file reader", output, reference, ["ScalarCurvature", "Ricci", "Points"])
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
