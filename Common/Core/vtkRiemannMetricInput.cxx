@@ -53,8 +53,19 @@ vtkRiemannMetric* vtkRiemannMetricInput::Resolve(
     }
     return own;
   }
-  vtkDataObject* data = algorithm->GetInputDataObject(port, 0);
+  return this->FromData(algorithm->GetInputDataObject(port, 0), error);
+}
+
+vtkRiemannMetric* vtkRiemannMetricInput::FromData(vtkDataObject* data, std::string& error)
+{
   return this->Read(data, error) ? this->Metric.Get() : nullptr;
+}
+
+bool vtkRiemannMetricInput::CarriesMetric(vtkDataObject* data)
+{
+  std::string definition;
+  vtkFieldData* fieldData = data ? data->GetFieldData() : nullptr;
+  return fieldData && OneString(fieldData, vtkRiemannMetricSource::DefinitionArrayName(), definition);
 }
 
 bool vtkRiemannMetricInput::Read(vtkDataObject* data, std::string& error)

@@ -41,6 +41,17 @@ public:
   vtkRiemannMetric* Resolve(
     vtkAlgorithm* algorithm, int port, vtkRiemannMetric* own, std::string& error);
 
+  /**
+   * The metric `data` carries (a vtkRiemannMetricSource's output, or data
+   * that kept its field data), parsed again only when its definition,
+   * folder or time changed; null with `error` set when it carries none or
+   * it does not parse. The handle is this object's: valid until the next call.
+   */
+  vtkRiemannMetric* FromData(vtkDataObject* data, std::string& error);
+
+  /// Whether `data` carries a metric (the field-data array of the definition).
+  static bool CarriesMetric(vtkDataObject* data);
+
   /// Whether `algorithm`'s input at `port` is connected.
   static bool IsConnected(vtkAlgorithm* algorithm, int port);
 

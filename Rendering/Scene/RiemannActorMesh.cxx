@@ -7,6 +7,8 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAppendPolyData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -26,9 +28,26 @@ namespace riemann
 {
 namespace
 {
-/// The polydata `actor` draws, its pipeline brought up to date; null when
-/// the actor draws nothing in the inside view.
-vtkPolyData* DrawnInput(vtkActor* actor)
+/// The surface cells (polygons and strips) of the polydata in `data`: itself,
+/// or the leaves of a composite dataset (vtkCompositePolyDataMapper2's
+/// input, as ParaView's representations give their mappers).
+vtkIdType SurfaceCells(vtkDataObject* data)
+{
+  vtkIdType cells = 0;
+  for (vtkPolyData* leaf : vtkCompositeDataSet::GetDataSets<vtkPolyData>(data))
+  {
+    cells += leaf->GetNumberOfPolys() + leaf->GetNumberOfStrips();
+  }
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
+  {
+    cells += polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips();
+  }
+  return cells;
+}
+
+/// The data `actor` draws (a polydata or a composite of them), its pipeline
+/// brought up to date; null when the actor draws nothing in the inside view.
+vtkDataObject* DrawnData(vtkActor* actor)
 {
   if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
     actor->GetProperty()->GetOpacity() <= 0.0)
@@ -37,12 +56,24 @@ vtkPolyData* DrawnInput(vtkActor* actor)
   }
   vtkMapper* mapper = actor->GetMapper();
   mapper->Update();
-  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  return input && SurfaceCells(input) > 0 ? input : nullptr;
+}
+
+/// `data` as one polydata: itself, or a composite's polydata leaves appended in order.
+vtkSmartPointer<vtkPolyData> AsOnePolyData(vtkDataObject* data)
+{
+  if (auto* polyData = vtkPolyData::SafeDownCast(data))
   {
-    return nullptr;
+    return polyData;
   }
-  return input;
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkPolyData* leaf : vtkCompositeDataSet::GetDataSets<vtkPolyData>(data))
+  {
+    append->AddInputData(leaf);
+  }
+  append->Update();
+  return append->GetOutput();
 }
 
 /// `input` moved by the actor's matrix (itself when that is the identity).
@@ -103,7 +134,7 @@ vtkSmartPointer<vtkUnsignedCharArray> VertexColors(vtkActor* actor, vtkPolyData*
 
 vtkMTimeType ActorMeshTime(vtkActor* actor)
 {
-  vtkPolyData* input = DrawnInput(actor);
+  vtkDataObject* input = DrawnData(actor);
   if (!input)
   {
     return 0;
@@ -114,7 +145,8 @@ vtkMTimeType ActorMeshTime(vtkActor* actor)
 
 std::shared_ptr<TriangleMesh> MeshFromActor(vtkActor* actor)
 {
-  vtkPolyData* input = DrawnInput(actor);
+  vtkDataObject* drawn = DrawnData(actor);
+  vtkSmartPointer<vtkPolyData> input = drawn ? AsOnePolyData(drawn) : nullptr;
   if (!input)
   {
     throw SceneDefinitionError("the actor draws no surface (hidden, opacity 0, no mapper, or "

@@ -2,7 +2,9 @@
  * @file RiemannActorMesh.h
  * @brief A renderer's vtkActors as triangle meshes of the inside view, so
  * that an actor added to a renderer is seen curved by the metric, as VTK
- * would draw it straight: the polydata of its mapper's input, moved by the
+ * would draw it straight: the polydata of its mapper's input (or the polydata
+ * leaves of a composite input, as vtkCompositePolyDataMapper2 draws them:
+ * ParaView's representations), moved by the
  * actor's matrix (position, orientation, scale, user transform), coloured per
  * vertex as VTK colours it (the mapper's point scalars through its lookup
  * table, else the property's colour).

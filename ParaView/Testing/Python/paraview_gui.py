@@ -97,6 +97,25 @@ class Steps:
         self.event("pqClientMainWindow/FileSaveDialog", "filesSelected", path)
         return self.event("pqClientMainWindow/WriterSettingsDialog/widget/OKButton", "activate")
 
+    def open_inside_view(self):
+        """Split the first view and make the new half a Riemann Inside View (it becomes active)."""
+        frames = ("pqClientMainWindow/centralwidget/MultiViewWidget/CoreWidget/qt_tabwidget_stackedwidget/"
+                  "MultiViewWidget1/Container")
+        self.event(f"{frames}/Frame.0/SplitHorizontal", "activate")
+        return self.event(f"{frames}/Frame.2/CentralWidgetFrame/EmptyView/scrollArea/qt_scrollarea_viewport/"
+                          "widgetFoo/ConvertActionsFrame/RiemannInsideView", "activate")
+
+    def save_screenshot(self, path, width, height):
+        """File > Save Screenshot of the active view at width x height."""
+        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveScreenshot")
+        self.event("pqClientMainWindow/SaveScreenshotFileDialog", "filesSelected", path)
+        resolution = ("pqClientMainWindow/SaveScreenshotDialog/scrollArea/qt_scrollarea_viewport/Container/"
+                      "ProxyWidget/ImageResolution")
+        self.event(f"{resolution}/width", "set_string", str(width))
+        self.event(f"{resolution}/height", "set_string", str(height))
+        return self.event("pqClientMainWindow/SaveScreenshotDialog/widget/OKButton", "activate")
+
     def save_state(self, path):
         self.event("pqClientMainWindow/menubar", "activate", "menu_File")
         self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveServerState")

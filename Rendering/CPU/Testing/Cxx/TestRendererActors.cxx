@@ -7,7 +7,8 @@
 // - moving the camera rebuilds nothing, moving or recolouring an actor
 //   rebuilds the meshes' buffers and never recompiles the shader;
 // - the depth written is the hit's Euclidean distance mapped to the clipping
-//   range, the far plane where nothing is hit; text overlays are drawn on top.
+//   range, the far plane where nothing is hit; text overlays are drawn on top;
+// - a composite mapper's actor (ParaView's) is drawn as its polydata leaves.
 #include "vtkRiemannCPURayTracer.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannRayTracePass.h"
@@ -16,7 +17,9 @@
 #include "vtkActor.h"
 #include "vtkAutoInit.h"
 #include "vtkCamera.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricTorus.h"
@@ -337,4 +340,40 @@ TEST(RendererActors, DepthIsTheHitsDistanceAndOverlaysComposeOnTop)
   view.Window->Render();
   EXPECT_GT(whitePixels(), 30);
   EXPECT_EQ(view.Pass->GetNumberOfRenderedProps(), 2) << "the sphere and the text";
+}
+
+// ParaView's representations give their mappers composite data (a
+// vtkCompositePolyDataMapper2 over a vtkMultiBlockDataSet): the actor is
+// drawn as its polydata leaves, the same picture as the same polydata under
+// a vtkPolyDataMapper, and it is converted again only when the data change.
+TEST(RendererActors, CompositeInputIsDrawnAsItsPolyDataLeaves)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(16);
+  sphere->SetCenter(0.3, -0.2, -1.5);
+  sphere->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, sphere->GetOutput());
+  vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+  compositeMapper->SetInputDataObject(blocks);
+  vtkNew<vtkActor> compositeActor;
+  compositeActor->SetMapper(compositeMapper);
+  vtkNew<vtkPolyDataMapper> plainMapper;
+  plainMapper->SetInputData(sphere->GetOutput());
+  vtkNew<vtkActor> plainActor;
+  plainActor->SetMapper(plainMapper);
+
+  PassView composite(TwoBumps, false);
+  composite.Renderer->AddActor(compositeActor);
+  composite.Window->Render();
+  EXPECT_STREQ(composite.Pass->GetLastError(), "");
+  EXPECT_EQ(composite.Pass->GetNumberOfRenderedProps(), 1);
+  PassView plain(TwoBumps, false);
+  plain.Renderer->AddActor(plainActor);
+  plain.Window->Render();
+  EXPECT_EQ(WindowPixels(composite.Window), WindowPixels(plain.Window));
+  composite.Window->Render();
+  EXPECT_EQ(composite.Pass->GetNumberOfMeshBuilds(), 1) << "nothing changed";
 }
