@@ -116,6 +116,8 @@ unpack_paraview_hierarchy() {
   # scratch folder: apt-get download writes into the working directory.
   deb="$(ls /var/cache/apt/archives/python3-paraview_5.11*.deb 2>/dev/null | head -n 1 || true)"
   scratch="$(mktemp -d)"
+  # apt downloads as its sandbox user _apt, who must be able to write there.
+  chmod a+rwx "$scratch"
   if [[ -z "$deb" ]]; then
     log "paraview: downloading python3-paraview (its hierarchy files only are unpacked)"
     (cd "$scratch" && apt-get download python3-paraview >/dev/null) \
