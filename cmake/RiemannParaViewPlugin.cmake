@@ -27,8 +27,12 @@ option(RIEMANN_BUILD_PARAVIEW_PLUGIN "Build the ParaView plugin RiemannVTK (Para
   ${_riemann_paraview_default})
 
 if (NOT RIEMANN_BUILD_PARAVIEW_PLUGIN)
-  message(STATUS "ParaView plugin: not built (needs paraview-dev and python3-paraview's hierarchy "
-    "files in ${_riemann_paraview_hierarchy}; ./run.sh build provides both)")
+  if (RIEMANN_SANITIZE)
+    message(STATUS "ParaView plugin: not built in the sanitizer build (ParaView is not instrumented)")
+  else ()
+    message(STATUS "ParaView plugin: not built (needs paraview-dev and python3-paraview's hierarchy "
+      "files in ${_riemann_paraview_hierarchy}; ./run.sh build provides both)")
+  endif ()
   return ()
 endif ()
 if (NOT EXISTS "${RIEMANN_PARAVIEW_SYSTEM_CONFIG}")
