@@ -17,6 +17,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
+from compare_outputs import check  # noqa: E402
 import paraview_gui  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
@@ -24,14 +25,6 @@ RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 METRIC = os.path.join(DATA, "metrics", "gaussian-lens.json")
 CASES = [("RiemannCurvatureField", ["fields"], ".pvti", ".vti", ["ScalarCurvature", "Ricci", "SectionalMin"]),
          ("RiemannExponentialMap", ["expmap"], ".pvtp", ".vtp", None)]
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def main():
@@ -65,7 +58,7 @@ def main():
                 check(False, f"{proxy}: two ranks against one: {problem}")
             if not problems:
                 print(f"{proxy}: two ranks' pieces equal one rank's and riemann {command[0]}'s")
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 if __name__ == "__main__":

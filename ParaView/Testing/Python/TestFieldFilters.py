@@ -17,6 +17,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
+from compare_outputs import check  # noqa: E402
 import paraview_gui  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
@@ -30,14 +31,6 @@ FILTERS = {
 }
 # Every filter on the bump; the curvature (the most code) on the twist too.
 METRICS = {"gaussian-bump.json": list(FILTERS), "twist.json": ["RiemannCurvatureField"]}
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def main():
@@ -63,7 +56,7 @@ def main():
                 for problem in compare_outputs.compare(output, reference, names):
                     check(False, f"{where}: {problem}")
                 print(f"{where}: {len(names)} arrays equal to riemann fields'")
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 if __name__ == "__main__":

@@ -18,20 +18,13 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
+from compare_outputs import check  # noqa: E402
 import paraview_gui  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
 SOURCE = os.path.join(DATA, "..")
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 METRIC = os.path.join(DATA, "metrics", "gaussian-lens.json")
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def declared_default(path, name):
@@ -74,7 +67,7 @@ def main():
                 names = sorted(compare_outputs.arrays(compare_outputs.read(output)))
                 print(f"{proxy}: equal to riemann {command[0]}'s: {', '.join(names)}")
     tracer(work)
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 def tracer(work):

@@ -25,20 +25,14 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare_outputs  # noqa: E402
 import paraview_gui  # noqa: E402
+from compare_outputs import check  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
 WIDTH, HEIGHT = 400, 300
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def rgb(path):
@@ -88,7 +82,7 @@ def main():
     check(not run.errors(), f"ParaView reported errors: {run.errors()[:5]}")
     for path in (sphere, state, picture):
         check(os.path.isfile(path), f"ParaView wrote no {path}")
-    if failures:
+    if compare_outputs.failures:
         return 1
 
     view = view_properties(state)
@@ -107,7 +101,7 @@ def main():
     done = subprocess.run([RIEMANN, "render", "--scene", scene_path, "--width", str(WIDTH), "--height", str(HEIGHT),
                            "-o", reference], capture_output=True, text=True)
     check(done.returncode == 0, f"riemann render failed: {done.stderr}")
-    if failures:
+    if compare_outputs.failures:
         return 1
     got, want = rgb(picture), rgb(reference)
     check(got.shape == want.shape, f"ParaView's picture is {got.shape}, riemann render's {want.shape}")
@@ -119,7 +113,7 @@ def main():
         check(mean < 1.0 / 255.0, f"the pictures differ by {mean * 255:.3f}/255 on average (allowed 1/255): "
               f"{picture} against {reference}")
         check(drawn > 100, f"the sphere covers only {drawn} pixels of the reference")
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 if __name__ == "__main__":

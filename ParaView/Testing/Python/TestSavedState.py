@@ -13,24 +13,15 @@ import os
 import sys
 import tempfile
 
-from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
+from compare_outputs import check  # noqa: E402
 import paraview_gui  # noqa: E402
 
 import riemann  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
 WAVY = os.path.join(DATA, "metrics", "wavy-diffeo.json")
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def main():
@@ -60,22 +51,14 @@ def main():
     check(run.returncode == 0 and not run.errors(), f"loading: ParaView failed or reported errors: {run.errors()[:5]}")
     check(os.path.isfile(output), "loading: the reloaded filter's output was not saved")
     if os.path.isfile(output):
-        metric = riemann.vtkRiemannMetric()
-        check(metric.SetDefinitionFile(WAVY) and metric.SetTime(1.0), metric.GetLastError())
-        field = riemann.vtkRiemannCurvatureField()
-        field.SetMetric(metric)
-        field.Update()
         reference = os.path.join(work, "wavy-at-1.reference.vti")
-        writer = vtkXMLImageDataWriter()
-        writer.SetInputData(field.GetOutput())
-        writer.SetFileName(reference)
-        writer.Write()
+        compare_outputs.toolkit_curvature_at(riemann, WAVY, 1.0, reference)
         problems = compare_outputs.compare(output, reference, ["ScalarCurvature", "Ricci", "Points"])
         for problem in problems:
             check(False, f"reloaded: {problem}")
         if not problems:
             print("the reloaded state's curvature field is the metric's at t = 1")
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 if __name__ == "__main__":

@@ -14,10 +14,9 @@ import subprocess
 import sys
 import tempfile
 
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
+from compare_outputs import check  # noqa: E402
 import paraview_gui  # noqa: E402
 
 import riemann  # noqa: E402
@@ -25,22 +24,6 @@ import riemann  # noqa: E402
 DATA = os.environ["RIEMANN_DATA_DIR"]
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
-
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL: " + message)
-
-
-def write_polydata(algorithm, path):
-    algorithm.Update()
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputData(algorithm.GetOutput())
-    writer.SetFileName(path)
-    writer.Write()
 
 
 def played(steps, work, name, output, extra_args=()):
@@ -65,7 +48,7 @@ def main():
     output = os.path.join(work, "directions.vtp")
     if played(paraview_gui.Steps().apply_source("RiemannDirectionGrid").save_data(output), work, "direction-grid", output):
         reference = os.path.join(work, "directions.reference.vtp")
-        write_polydata(riemann.vtkRiemannDirectionGrid(), reference)
+        compare_outputs.write(riemann.vtkRiemannDirectionGrid(), reference)
         compared("direction grid", output, reference)
 
     output = os.path.join(work, "camera-path.vtp")
@@ -79,7 +62,7 @@ def main():
         path = riemann.vtkRiemannCameraPath()
         path.SetMetric(metric)
         reference = os.path.join(work, "camera-path.reference.vtp")
-        write_polydata(path, reference)
+        compare_outputs.write(path, reference)
         compared("camera path", output, reference)
 
     output = os.path.join(work, "from-reader.vti")
@@ -89,7 +72,7 @@ def main():
         subprocess.run([RIEMANN, "fields", "--metric", LENS, "--compress", "none", "-o", reference],
                        check=True, capture_output=True)
         compared("metric file reader", output, reference, ["ScalarCurvature", "Ricci", "Points"])
-    return 1 if failures else 0
+    return compare_outputs.exit_status()
 
 
 if __name__ == "__main__":

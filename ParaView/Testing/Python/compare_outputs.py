@@ -1,4 +1,5 @@
-"""Read VTK files with the toolkit's VTK (9.1) and compare their arrays.
+"""Read VTK files with the toolkit's VTK (9.1) and compare their arrays; the
+checks the plugin's tests share.
 
 ParaView (VTK 9.2 inside) and the riemann commands write the same XML
 formats; these read both and say where two outputs differ.
@@ -6,7 +7,39 @@ formats; these read both and say where two outputs differ.
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader
+from vtkmodules.vtkIOXML import vtkXMLDataObjectWriter, vtkXMLGenericDataObjectReader
+
+# What failed so far in this test (check); a test exits 1 when it is not empty.
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL: " + message)
+
+
+def exit_status():
+    return 1 if failures else 0
+
+
+def write(algorithm, path):
+    """The algorithm's output, brought up to date, as a VTK XML file (the toolkit's answer)."""
+    algorithm.Update()
+    writer = vtkXMLDataObjectWriter()
+    writer.SetInputData(algorithm.GetOutputDataObject(0))
+    writer.SetFileName(path)
+    if not writer.Write():
+        raise AssertionError(f"{path}: not written")
+
+
+def toolkit_curvature_at(riemann, metric_file, t, path):
+    """The toolkit's own curvature field (declared grid) of a metric file at time t, written to path."""
+    metric = riemann.vtkRiemannMetric()
+    check(metric.SetDefinitionFile(metric_file) and metric.SetTime(t), metric.GetLastError())
+    field = riemann.vtkRiemannCurvatureField()
+    field.SetMetric(metric)
+    write(field, path)
 
 
 def read(path):

@@ -69,19 +69,13 @@ class Steps:
         return self.apply()
 
     def settings(self, settings):
+        """The panel's settings before Apply: file properties only, so far."""
         for name, value in settings.items():
-            if name == "DefinitionFile":
-                self.set_file(name, value)
-            else:
-                self.set_line(name, value)
+            self.set_file(name, value)
         return self
 
     def set_file(self, prop, path):
         return self.event(f"{PANEL}/{prop}/FileChooser/FileLineEdit", "set_string", path)
-
-    def set_line(self, prop, value, element=0):
-        """A number property's line edit (the element-th of a vector property)."""
-        return self.event(f"{PANEL}/{prop}/DoubleLineEdit{element}", "set_string", str(value))
 
     def set_text(self, prop, text):
         return self.event(f"{PANEL}/{prop}/{prop}", "set_string", text)
