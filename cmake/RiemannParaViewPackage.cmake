@@ -12,8 +12,10 @@
 #   .deb unpacked (not installed: it conflicts with python3-vtk9); run.sh
 #   unpacks it.
 #
-# The copies' imported targets keep pointing at /usr (each targets file
-# computes its prefix from where it lies, which is no longer /usr).
+# The copies keep pointing at /usr: each targets, prefix and VTK-m config file
+# computes the install prefix by walking up from where it lies, which in the
+# copy is the build tree (a walk that reaches "/" found /usr only through
+# Debian's /lib -> /usr/lib link, and only for a build tree at that depth).
 function (riemann_prepare_paraview_package out_dir hierarchy_dir)
   set(source_dir "/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11")
   # Every file (the templates, paraview_plugin.h.in, ...); the .cmake ones mended.
@@ -21,8 +23,10 @@ function (riemann_prepare_paraview_package out_dir hierarchy_dir)
   foreach (file IN LISTS files)
     set(from "${source_dir}/${file}")
     set(to "${out_dir}/${file}")
-    # Mended once per change of the system's file (re-configures are cheap).
-    if (EXISTS "${to}" AND NOT "${from}" IS_NEWER_THAN "${to}")
+    # Mended once per change of the system's file or of this mending
+    # (re-configures are cheap).
+    if (EXISTS "${to}" AND NOT "${from}" IS_NEWER_THAN "${to}"
+        AND NOT "${CMAKE_CURRENT_FUNCTION_LIST_FILE}" IS_NEWER_THAN "${to}")
       continue ()
     endif ()
     if (NOT file MATCHES "\\.cmake$")
@@ -30,6 +34,11 @@ function (riemann_prepare_paraview_package out_dir hierarchy_dir)
       continue ()
     endif ()
     file(READ "${from}" text)
+    get_filename_component(from_dir "${from}" DIRECTORY)
+    string(REPLACE [[set(_vtk_module_import_prefix "${CMAKE_CURRENT_LIST_DIR}")]]
+      "set(_vtk_module_import_prefix \"${from_dir}\")" text "${text}")
+    string(REPLACE [[get_filename_component(PACKAGE_PREFIX_DIR "${CMAKE_CURRENT_LIST_DIR}/]]
+      "get_filename_component(PACKAGE_PREFIX_DIR \"${from_dir}/" text "${text}")
     string(REPLACE [[if(_IMPORT_PREFIX STREQUAL "/")]]
       "set(_IMPORT_PREFIX \"/usr\")\nif(_IMPORT_PREFIX STREQUAL \"/\")" text "${text}")
     string(REPLACE [[if(NOT EXISTS "${_cmake_file}")]]
