@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkRiemannCutLocus.h"
 #include "vtkRiemannCutLocusSettingAccess.h"
+#include "vtkRiemannMinimalGeodesicsSettingAccess.h"
 #include "vtkRiemannDistanceField.h"
 #include "vtkRiemannMetric.h"
 #include "vtkRiemannMinimalGeodesics.h"
@@ -53,6 +54,8 @@ struct DistanceArguments
   std::unique_ptr<DeclaredOptions> Cut;
   std::vector<std::string> Targets;
   std::string Geodesics;
+  /// The minimal geodesics' settings (vtkRiemannMinimalGeodesics.settings.json).
+  std::unique_ptr<DeclaredOptions> Minimal;
   std::string Compress = "lz4";
   std::string Output;
 };
@@ -209,6 +212,7 @@ vtkSmartPointer<vtkRiemannMinimalGeodesics> ComputeMinimalGeodesics(const Distan
   auto minimal = vtkSmartPointer<vtkRiemannMinimalGeodesics>::New();
   errors->Observe(minimal);
   minimal->SetMetric(metric);
+  riemann::settings::ApplySettings(minimal, args.Minimal->Given());
   minimal->SetInputData(image);
   for (const std::string& text : args.Targets)
   {
@@ -344,6 +348,8 @@ void RegisterDistanceCommand(CLI::App& app)
   command->add_option("--geodesics", args->Geodesics,
     "Write the minimal geodesics from the seeds to the --to points (.vtp or .csv as trace writes "
     "them: the descent along the field, refined by Newton with the Jacobi fields)");
+  args->Minimal = std::make_unique<DeclaredOptions>(
+    command, riemann::declared::vtkRiemannMinimalGeodesics::Settings);
   AddCompressOption(command, args->Compress);
   command
     ->add_option("--output,-o", args->Output,

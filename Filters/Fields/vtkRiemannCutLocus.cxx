@@ -31,6 +31,8 @@ vtkRiemannCutLocus::vtkRiemannCutLocus()
   : MinimumAngle(riemann::declared::vtkRiemannCutLocus::Default::MinimumAngle)
   , SmoothFactor(riemann::declared::vtkRiemannCutLocus::Default::SmoothFactor)
 {
+  // The distance field, then the metric (optional).
+  this->SetNumberOfInputPorts(2);
 }
 
 vtkRiemannCutLocus::~vtkRiemannCutLocus()
@@ -48,8 +50,18 @@ vtkMTimeType vtkRiemannCutLocus::GetMTime()
   return time;
 }
 
-int vtkRiemannCutLocus::FillInputPortInformation(int, vtkInformation* info)
+void vtkRiemannCutLocus::SetMetricConnection(vtkAlgorithmOutput* output)
 {
+  this->SetInputConnection(GetMetricPort(), output);
+}
+
+int vtkRiemannCutLocus::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == GetMetricPort())
+  {
+    vtkRiemannMetricInput::FillPortInformation(info);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
   return 1;
 }
@@ -81,8 +93,20 @@ int vtkRiemannCutLocus::RequestData(
          "components) and SeedId, as vtkRiemannDistanceField makes them.");
     return 1;
   }
+  // The pipeline's metric, else SetMetric()'s, else edges measured as in R^3.
+  std::shared_ptr<const riemann::Metric> metric;
+  if (this->Metric || vtkRiemannMetricInput::IsConnected(this, GetMetricPort()))
+  {
+    std::string error;
+    vtkRiemannMetric* handle = this->MetricInput.Resolve(this, GetMetricPort(), this->Metric, error);
+    if (!handle)
+    {
+      vtkRiemannReportErrorMacro(this->LastError, << error);
+      return 1;
+    }
+    metric = handle->GetMetric();
+  }
   const riemann::EuclideanMetric flat;
-  std::shared_ptr<const riemann::Metric> metric = this->Metric ? this->Metric->GetMetric() : nullptr;
   riemann::CutLocusOptions options;
   options.MinimumAngle = vtkMath::RadiansFromDegrees(this->MinimumAngle);
   options.SmoothFactor = this->SmoothFactor;

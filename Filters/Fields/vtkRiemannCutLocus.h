@@ -26,6 +26,7 @@
 
 #include "RiemannFiltersFieldsModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkRiemannMetricInput.h" // For the metric port
 
 #include <string> // For LastError
 
@@ -42,6 +43,16 @@ public:
   /// The metric the distance field was computed with (optional).
   virtual void SetMetric(vtkRiemannMetric* metric);
   vtkGetObjectMacro(Metric, vtkRiemannMetric);
+  ///@}
+
+  ///@{
+  /**
+   * The metric from the pipeline (optional): a vtkRiemannMetricSource's
+   * output at port 1 (GetMetricPort(); port 0 is the distance field). When
+   * connected it is used instead of SetMetric()'s.
+   */
+  void SetMetricConnection(vtkAlgorithmOutput* output);
+  static int GetMetricPort() { return 1; }
   ///@}
 
   ///@{
@@ -73,6 +84,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   vtkRiemannMetric* Metric = nullptr;
+  vtkRiemannMetricInput MetricInput;
   double MinimumAngle; // declared (vtkRiemannCutLocus.settings.json)
   double SmoothFactor;
   std::string LastError;

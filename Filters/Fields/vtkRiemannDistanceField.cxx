@@ -67,6 +67,29 @@ int vtkRiemannDistanceField::RequestInformation(
   return 1;
 }
 
+int vtkRiemannDistanceField::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  if (vtkInformation* seedsInfo = inputVector[0]->GetInformationObject(0))
+  {
+    seedsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    seedsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    seedsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+int vtkRiemannDistanceField::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->SeedsInput = this->GetNumberOfInputConnections(0) > 0
+    ? vtkDataSet::GetData(inputVector[0], 0)
+    : nullptr;
+  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->SeedsInput = nullptr;
+  return result;
+}
+
 // ComputeFields as named steps: the checks -> vtkRiemannDistanceGridOf ->
 // ComputeDistanceField (in parallel, progress between rounds) -> the point
 // arrays.
@@ -75,10 +98,9 @@ bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDa
   this->NumberOfUpdates = 0;
   this->NumberOfRounds = 0;
   vtkImageData* image = vtkImageData::SafeDownCast(output);
-  if (!image || this->GetNumberOfInputConnections(0) > 0)
+  if (!image)
   {
-    vtkRiemannReportErrorMacro(this->LastError,
-      << "The distance field is computed on its own grid (Bounds, Dimensions): connect no input.");
+    vtkRiemannReportErrorMacro(this->LastError, << "The distance field is computed on an image.");
     return false;
   }
   const int* extent = image->GetExtent();
@@ -96,10 +118,18 @@ bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDa
       << "SeedRadius is " << this->SeedRadius << ": expected a number from 1 to 20 (grid spacings).");
     return false;
   }
+  // AddSeed's, then the seeds input's points (SeedId's order).
   std::vector<riemann::Vec3> seeds;
   for (std::size_t s = 0; s + 2 < this->Seeds.size(); s += 3)
   {
     seeds.emplace_back(this->Seeds[s], this->Seeds[s + 1], this->Seeds[s + 2]);
+  }
+  const vtkIdType inputSeeds = this->SeedsInput ? this->SeedsInput->GetNumberOfPoints() : 0;
+  for (vtkIdType n = 0; n < inputSeeds; ++n)
+  {
+    riemann::Vec3 p;
+    this->SeedsInput->GetPoint(n, p.data());
+    seeds.push_back(p);
   }
   riemann::DistanceOptions options;
   options.SeedRadius = this->SeedRadius;
@@ -146,10 +176,11 @@ bool vtkRiemannDistanceField::ComputeFields(const riemann::Metric& metric, vtkDa
     seedId->SetValue(n, result.SeedId[static_cast<std::size_t>(n)]);
   }
   // The seeds, for those who walk back to them (vtkRiemannMinimalGeodesics).
-  vtkSmartPointer<vtkDoubleArray> seedPoints = NewPointArray("Seeds", 3, this->GetNumberOfSeeds());
-  for (int s = 0; s < this->GetNumberOfSeeds(); ++s)
+  vtkSmartPointer<vtkDoubleArray> seedPoints =
+    NewPointArray("Seeds", 3, static_cast<vtkIdType>(seeds.size()));
+  for (std::size_t s = 0; s < seeds.size(); ++s)
   {
-    seedPoints->SetTuple(s, this->Seeds.data() + 3 * s);
+    seedPoints->SetTuple(static_cast<vtkIdType>(s), seeds[s].data());
   }
   image->GetFieldData()->AddArray(seedPoints);
   vtkPointData* pd = image->GetPointData();

@@ -14,16 +14,20 @@
  *   (NaN where the metric fails, so no geodesic gets there);
  * - `ArrivalDirection`: the g-unit velocity at the point of that geodesic
  *   (pointing away from the seed): the direction the wavefront moves;
- * - `SeedId`: which seed is closest (0, 1, ... in AddSeed's order; -1 where
- *   unreached): the seeds' Voronoi regions in g.
+ * - `SeedId`: which seed is closest (0, 1, ... in AddSeed's order, then
+ *   the seeds input's points in theirs; -1 where unreached): the seeds'
+ *   Voronoi regions in g.
  * Field data `Seeds` holds the seeds (3 components, in SeedId's order). Its
  * level sets are the true wavefronts of the metric; vtkRiemannCutLocus
  * extracts where ArrivalDirection jumps (the cut locus of the seeds), and
  * vtkRiemannMinimalGeodesics walks back from any point to its seed.
  *
- * Unlike the other field filters it is computed on the whole grid at once
- * (a point's distance depends on the whole grid between it and its seed): it
- * takes no input dataset, does not split into pieces, and `riemann distance`
+ * Seeds: AddSeed's, then the points of the dataset at port 0 (optional; any
+ * dataset: ParaView's Input, a Point Source, a probe). Unlike the other
+ * field filters, port 0 is not sampled, and the field is computed on the
+ * whole grid at once (a point's distance depends on the whole grid between
+ * it and its seed): it does not split into pieces (every piece request gets
+ * the whole grid, from all of the seeds input), and `riemann distance`
  * refuses to run under mpirun. Progress is reported between rounds of the
  * solver (a rough fraction of the grid settled) and AbortExecute honoured.
  * Without a metric, without seeds, with a seed outside Bounds or a bad grid,
@@ -68,11 +72,20 @@ protected:
   vtkRiemannDistanceField();
   ~vtkRiemannDistanceField() override;
 
+  /// Port 0 holds seeds, not points to sample.
+  bool SamplesInputPoints() const override { return false; }
   int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  /// All of the seeds input, whatever piece is asked for.
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
   VTK_WRAPEXCLUDE bool ComputeFields(const riemann::Metric& metric, vtkDataSet* output) override;
 
   std::vector<double> Seeds;
+  /// The seeds input's points of the execution under way (RequestData to ComputeFields).
+  vtkDataSet* SeedsInput = nullptr;
   double SeedRadius; // declared (vtkRiemannDistanceField.settings.json)
   vtkIdType NumberOfUpdates = 0;
   int NumberOfRounds = 0;

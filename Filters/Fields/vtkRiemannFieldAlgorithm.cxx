@@ -106,8 +106,7 @@ int vtkRiemannFieldAlgorithm::RequestDataObject(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataSet* input =
-    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  vtkDataSet* input = this->SampledInput(inputVector);
   vtkDataSet* output = vtkDataSet::GetData(outInfo);
   if (input)
   {
@@ -125,6 +124,15 @@ int vtkRiemannFieldAlgorithm::RequestDataObject(
     instance->FastDelete();
   }
   return 1;
+}
+
+vtkDataSet* vtkRiemannFieldAlgorithm::SampledInput(vtkInformationVector** inputVector)
+{
+  if (!this->SamplesInputPoints() || this->GetNumberOfInputConnections(0) == 0)
+  {
+    return nullptr;
+  }
+  return vtkDataSet::GetData(inputVector[0], 0);
 }
 
 std::string vtkRiemannFieldAlgorithm::CheckGrid() const
@@ -185,7 +193,8 @@ int vtkRiemannFieldAlgorithm::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   // With an input the pipeline copies its information; alone, describe the grid.
-  if (this->GetNumberOfInputConnections(0) > 0 || !this->CheckGrid().empty())
+  if ((this->SamplesInputPoints() && this->GetNumberOfInputConnections(0) > 0) ||
+    !this->CheckGrid().empty())
   {
     return 1;
   }
@@ -268,8 +277,7 @@ int vtkRiemannFieldAlgorithm::RequestData(
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
-  vtkDataSet* input =
-    this->GetNumberOfInputConnections(0) > 0 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  vtkDataSet* input = this->SampledInput(inputVector);
   output->Initialize();
   this->LastError.clear();
   std::string error;

@@ -126,6 +126,16 @@ protected:
   VTK_WRAPEXCLUDE bool ForEachPointInBatches(
     vtkIdType count, const std::function<void(vtkIdType, vtkIdType)>& work);
 
+  /**
+   * Whether port 0's dataset is the one whose points are sampled (the
+   * default). A subclass that takes port 0 for something else (the distance
+   * field's seeds) answers false: its output is then always the grid.
+   */
+  virtual bool SamplesInputPoints() const { return true; }
+
+  /// The dataset whose points are sampled: port 0's, when connected and SamplesInputPoints().
+  vtkDataSet* SampledInput(vtkInformationVector** inputVector);
+
   /// Empty string when Bounds and Dimensions make a valid grid, else why not.
   VTK_WRAPEXCLUDE std::string CheckGrid() const;
 

@@ -1,5 +1,7 @@
 #include "vtkRiemannMinimalGeodesics.h"
 
+#include "RiemannMinimalGeodesicsDeclaration.h"
+
 #include "DistanceDescent.h"
 #include "GeodesicConnector.h"
 #include "Metric.h"
@@ -27,8 +29,10 @@
 vtkStandardNewMacro(vtkRiemannMinimalGeodesics);
 
 vtkRiemannMinimalGeodesics::vtkRiemannMinimalGeodesics()
+  : Tolerance(riemann::declared::vtkRiemannMinimalGeodesics::Default::Tolerance)
 {
-  this->SetNumberOfDataPorts(1);
+  // The distance field, then the targets (optional).
+  this->SetNumberOfDataPorts(2);
   // Newton's is the connector's: its integration defaults.
   vtkRiemannGeodesicConnector::ApplyConnectionDefaults(this->GetIntegrationSettings());
 }
@@ -50,8 +54,14 @@ void vtkRiemannMinimalGeodesics::RemoveAllTargets()
   }
 }
 
-int vtkRiemannMinimalGeodesics::FillDataPortInformation(int, vtkInformation* info)
+int vtkRiemannMinimalGeodesics::FillDataPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
   return 1;
 }
@@ -241,18 +251,30 @@ int vtkRiemannMinimalGeodesics::RequestData(
                       "vtkRiemannDistanceField makes them.");
     return 1;
   }
+  // AddTarget's, then port 1's points (TargetIds' order).
+  std::vector<double> targets = this->Targets;
+  if (vtkDataSet* more = this->GetNumberOfInputConnections(1) > 0
+        ? vtkDataSet::GetData(inputVector[1], 0)
+        : nullptr)
+  {
+    for (vtkIdType n = 0; n < more->GetNumberOfPoints(); ++n)
+    {
+      double p[3];
+      more->GetPoint(n, p);
+      targets.insert(targets.end(), p, p + 3);
+    }
+  }
   riemann::ConnectOptions connect;
   connect.Integration = this->MakeGeodesicOptions();
   connect.Tolerance = this->Tolerance;
-  std::vector<MinimalGeodesic> found(this->Targets.size() / 3);
+  std::vector<MinimalGeodesic> found(targets.size() / 3);
   const auto count = static_cast<vtkIdType>(found.size());
   const vtkIdType done = vtkRiemannForInBatches(this, count, 1,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType t = first; t < last; ++t)
       {
-        const riemann::Vec3 target(
-          this->Targets[3 * t], this->Targets[3 * t + 1], this->Targets[3 * t + 2]);
+        const riemann::Vec3 target(targets[3 * t], targets[3 * t + 1], targets[3 * t + 2]);
         found[static_cast<std::size_t>(t)] = FindOne(*metric, grid, field, seeds, target, connect);
       }
     });

@@ -3,8 +3,10 @@
  * @brief   The minimal geodesic from each target point back to its closest
  *          seed, from a distance field.
  *
- * Input: the image of vtkRiemannDistanceField (point data Distance,
- * ArrivalDirection, SeedId; field data Seeds). For each target (AddTarget)
+ * Inputs: port 0, the image of vtkRiemannDistanceField (point data
+ * Distance, ArrivalDirection, SeedId; field data Seeds); port 1 (optional),
+ * a dataset whose points are targets too; the metric at GetMetricPort() (2)
+ * or SetMetric(). For each target (AddTarget's, then port 1's points)
  * the filter walks back along the arrival directions to the target's
  * closest seed (riemann::DescendToSeed, DistanceDescent.h: the steepest
  * descent of the distance, within the field's first-order error), then
@@ -15,7 +17,7 @@
  *
  * Output: one polyline per target reached, from its seed to the target,
  * with point data `ArcLength` and `Velocity` (as vtkRiemannGeodesicTracer's)
- * and cell data `TargetIds` (AddTarget's order), `SeedId` (its closest seed,
+ * and cell data `TargetIds` (AddTarget's order, then port 1's), `SeedId` (its closest seed,
  * as the field's array), `Length` (the geodesic's arc length, or the field's
  * distance where no geodesic was found), `Distance` (the field's value at
  * the target: Length - Distance is the field's error there) and `Refined`
@@ -56,7 +58,8 @@ public:
   ///@}
 
   ///@{
-  /// |end - target| each refined geodesic reaches, in [1e-13, 1e-2]. Default 1e-9.
+  /// |end - target| each refined geodesic reaches, in [1e-13, 1e-2]. Default 1e-9
+  /// (declared: vtkRiemannMinimalGeodesics.settings.json).
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}
@@ -73,7 +76,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   std::vector<double> Targets;
-  double Tolerance = 1e-9;
+  double Tolerance;
   int NumberOfUnrefined = 0;
 
 private:

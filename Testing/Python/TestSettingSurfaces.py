@@ -43,6 +43,7 @@ COMMANDS = {
     "vtkRiemannMetricTensorField": ["fields"],
     "vtkRiemannDistanceField": ["distance"],
     "vtkRiemannCutLocus": ["distance"],
+    "vtkRiemannMinimalGeodesics": ["distance"],
     "vtkRiemannIntegrationSettings": ["trace", "expmap", "conjugate", "connect", "connectivity", "render"],
     "vtkRiemannPictureSettings": ["render"],
 }

@@ -141,6 +141,76 @@ class DistanceFieldTests(unittest.TestCase):
             np.testing.assert_allclose(points[first], seeds[exact[line].argmin()], atol=1e-15)
             np.testing.assert_allclose(points[last], target, atol=1e-8)
 
+    def test_seeds_targets_and_metric_from_the_pipeline_are_the_setters(self):
+        # ParaView's way: the seeds and the targets as the points of datasets,
+        # the metric from a vtkRiemannMetricSource. Every array, bit for bit,
+        # as with AddSeed, AddTarget and SetMetric.
+        seeds = [(-0.6, 0.1, -0.2), (0.6, -0.1, 0.3)]
+        targets = [(-0.2, 0.7, 0.5), (0.9, 0.8, -0.7)]
+
+        def points(coordinates):
+            from vtkmodules.vtkCommonCore import vtkPoints
+            from vtkmodules.vtkCommonDataModel import vtkPolyData
+            data, pts = vtkPolyData(), vtkPoints()
+            pts.SetDataTypeToDouble()
+            for p in coordinates:
+                pts.InsertNextPoint(p)
+            data.SetPoints(pts)
+            return data
+
+        def grid(field):
+            field.SetBounds(-1, 1, -1, 1, -1, 1)
+            field.SetDimensions(17, 17, 17)
+            return field
+
+        twist_metric = metric(TWIST)
+        by_setters = grid(riemann.vtkRiemannDistanceField())
+        by_setters.SetMetric(twist_metric)
+        for p in seeds:
+            by_setters.AddSeed(*p)
+        cut_by_setters = riemann.vtkRiemannCutLocus()
+        cut_by_setters.SetMetric(twist_metric)
+        cut_by_setters.SetInputConnection(by_setters.GetOutputPort())
+        minimal_by_setters = riemann.vtkRiemannMinimalGeodesics()
+        minimal_by_setters.SetMetric(twist_metric)
+        minimal_by_setters.SetInputConnection(by_setters.GetOutputPort())
+        for p in targets:
+            minimal_by_setters.AddTarget(*p)
+
+        source = riemann.vtkRiemannMetricSource()
+        source.SetDefinition(TWIST)
+        by_pipeline = grid(riemann.vtkRiemannDistanceField())
+        self.assertEqual(by_pipeline.GetMetricPort(), 1)
+        by_pipeline.SetInputData(points(seeds))
+        by_pipeline.SetMetricConnection(source.GetOutputPort())
+        cut_by_pipeline = riemann.vtkRiemannCutLocus()
+        cut_by_pipeline.SetInputConnection(by_pipeline.GetOutputPort())
+        cut_by_pipeline.SetMetricConnection(source.GetOutputPort())
+        minimal_by_pipeline = riemann.vtkRiemannMinimalGeodesics()
+        self.assertEqual(minimal_by_pipeline.GetMetricPort(), 2)
+        minimal_by_pipeline.SetInputConnection(by_pipeline.GetOutputPort())
+        minimal_by_pipeline.SetInputData(1, points(targets))
+        minimal_by_pipeline.SetMetricConnection(source.GetOutputPort())
+
+        for a, b in ((by_setters, by_pipeline), (cut_by_setters, cut_by_pipeline),
+                     (minimal_by_setters, minimal_by_pipeline)):
+            with self.subTest(filter=a.GetClassName()):
+                a.Update()
+                b.Update()
+                self.assertEqual(b.GetLastError(), "")
+                out_a, out_b = a.GetOutput(), b.GetOutput()
+                self.assertGreater(out_a.GetNumberOfPoints(), 0)
+                self.assertEqual(out_a.GetNumberOfPoints(), out_b.GetNumberOfPoints())
+                for attributes in ("GetPointData", "GetCellData", "GetFieldData"):
+                    da, db = getattr(out_a, attributes)(), getattr(out_b, attributes)()
+                    names = sorted(da.GetArrayName(i) for i in range(da.GetNumberOfArrays()))
+                    self.assertEqual(names, sorted(db.GetArrayName(i) for i in range(db.GetNumberOfArrays())))
+                    for name in names:
+                        np.testing.assert_array_equal(vtk_to_numpy(da.GetArray(name)),
+                                                      vtk_to_numpy(db.GetArray(name)), err_msg=name)
+        self.assertEqual(cut_by_pipeline.GetOutput().GetCellData().GetArray("Kind").GetRange()[1], 2)
+        self.assertEqual(minimal_by_pipeline.GetOutput().GetNumberOfLines(), 2)
+
     def test_errors_leave_an_empty_output(self):
         field = riemann.vtkRiemannDistanceField()
         field.SetMetric(metric(TWIST))
