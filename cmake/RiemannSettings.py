@@ -105,8 +105,9 @@ def check_pipeline(where, doc):
     check(where, isinstance(inputs, list), "\"inputs\": expected a list")
     for i, item in enumerate(inputs):
         at = f"{where}: inputs[{i}]"
-        check(at, isinstance(item, dict) and set(item) <= {"name", "port", "types", "help"},
-              "expected {\"name\", \"port\", \"types\", \"help\"}")
+        check(at, isinstance(item, dict) and set(item) <= {"name", "port", "types", "help", "optional"},
+              "expected {\"name\", \"port\", \"types\", \"help\"} and perhaps \"optional\"")
+        check(at, isinstance(item.get("optional", False), bool), "\"optional\": true or false")
         check(at, isinstance(item.get("name"), str) and item["name"][:1].isupper(), "\"name\": the property's name")
         check(at, item.get("port") == i, f"\"port\": the shown data inputs are ports 0, 1, ... in order ({i} here)")
         check(at, isinstance(item.get("types"), list) and item["types"] and set(item["types"]) <= INPUT_TYPES,
@@ -502,19 +503,22 @@ def paraview_property(s):
             f"{rng}{doc}    </DoubleVectorProperty>\n")
 
 
-def paraview_input(name, port, types, help_text, label=None):
+def paraview_input(name, port, types, help_text, label=None, optional=False):
     domain = "".join(f"          <DataType value=\"{t}\" />\n" for t in types)
     label_attr = f" label={quoteattr(label)}" if label else ""
+    # ParaView's Select Input dialog lets an optional input be left empty.
+    hints = "      <Hints>\n        <Optional />\n      </Hints>\n" if optional else ""
     return (f"    <InputProperty name={quoteattr(name)}{label_attr} command=\"SetInputConnection\" port_index=\"{port}\">\n"
             f"      <ProxyGroupDomain name=\"groups\">\n        <Group name=\"sources\" />\n        <Group name=\"filters\" />\n      </ProxyGroupDomain>\n"
             f"      <DataTypeDomain name=\"input_type\">\n{domain}      </DataTypeDomain>\n"
-            f"      <Documentation>{escape(help_text)}</Documentation>\n    </InputProperty>\n")
+            f"      <Documentation>{escape(help_text)}</Documentation>\n{hints}    </InputProperty>\n")
 
 
 def paraview_inputs(doc):
     """The data inputs, then the metric: named Input when it is the only one (ParaView's
     Filters menu applies a filter to the selected source through Input)."""
-    out = "".join(paraview_input(i["name"], i["port"], i["types"], i["help"]) for i in doc.get("inputs", []))
+    out = "".join(paraview_input(i["name"], i["port"], i["types"], i["help"], optional=i.get("optional", False))
+                  for i in doc.get("inputs", []))
     if "metric_port" in doc:
         name = "Metric" if doc.get("inputs") else "Input"
         out += paraview_input(name, doc["metric_port"], ["vtkPolyData"],

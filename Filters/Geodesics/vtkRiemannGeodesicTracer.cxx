@@ -83,6 +83,9 @@ vtkRiemannGeodesicTracer::vtkRiemannGeodesicTracer()
   , MaximumAngle(TracerDefault::MaximumAngle)
   , MinimumLength(TracerDefault::MinimumLength)
 {
+  // The seeds, the stop mask, the include and exclude regions (all
+  // optional), then the metric.
+  this->SetNumberOfDataPorts(4);
   this->SetDirectionArrayName("Direction");
 }
 
@@ -91,9 +94,9 @@ vtkRiemannGeodesicTracer::~vtkRiemannGeodesicTracer()
   this->SetDirectionArrayName(nullptr);
 }
 
-int vtkRiemannGeodesicTracer::FillDataPortInformation(int, vtkInformation* info)
+int vtkRiemannGeodesicTracer::FillDataPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkImageData");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -529,10 +532,15 @@ int vtkRiemannGeodesicTracer::RequestInformation(
 int vtkRiemannGeodesicTracer::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // Every piece needs all the seeds (they are few) to take its share of them.
-  if (this->GetNumberOfInputConnections(0) > 0)
+  // Every piece needs all the seeds (they are few) to take its share of
+  // them, and the whole of each mask (a tract goes anywhere).
+  for (int port = 0; port <= ExcludeRegionPort; ++port)
   {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    if (this->GetNumberOfInputConnections(port) == 0)
+    {
+      continue;
+    }
+    vtkInformation* inInfo = inputVector[port]->GetInformationObject(0);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
@@ -573,17 +581,25 @@ int vtkRiemannGeodesicTracer::RequestData(
   riemann::GeodesicOptions options = this->MakeGeodesicOptions();
   options.UseBounds = this->UseDomainBounds;
   std::copy(this->DomainBounds, this->DomainBounds + 6, options.Bounds);
+  // A mask's connection wins over its setter's image.
+  const auto mask = [this, inputVector](int port, vtkImageData* own)
+  {
+    return this->GetNumberOfInputConnections(port) > 0 ? vtkImageData::GetData(inputVector[port], 0)
+                                                       : own;
+  };
+  vtkImageData* stopMask = mask(StopMaskPort, this->StopMask);
+  vtkImageData* includeRegion = mask(IncludeRegionPort, this->IncludeRegion);
+  vtkImageData* excludeRegion = mask(ExcludeRegionPort, this->ExcludeRegion);
   riemann::TractStopRules stops(*metric);
-  stops.StopMask = riemann::VoxelMaskFromImage(this->StopMask);
+  stops.StopMask = riemann::VoxelMaskFromImage(stopMask);
   stops.MinimumAnisotropy = this->StopFractionalAnisotropy;
   options.Stop = stops.Any() ? &stops : nullptr;
   riemann::TractSelection selection;
-  selection.Include = riemann::VoxelMaskFromImage(this->IncludeRegion);
-  selection.Exclude = riemann::VoxelMaskFromImage(this->ExcludeRegion);
+  selection.Include = riemann::VoxelMaskFromImage(includeRegion);
+  selection.Exclude = riemann::VoxelMaskFromImage(excludeRegion);
   selection.MinimumLength = this->MinimumLength;
-  if ((this->StopMask && stops.StopMask.Empty()) ||
-    (this->IncludeRegion && selection.Include.Empty()) ||
-    (this->ExcludeRegion && selection.Exclude.Empty()))
+  if ((stopMask && stops.StopMask.Empty()) || (includeRegion && selection.Include.Empty()) ||
+    (excludeRegion && selection.Exclude.Empty()))
   {
     this->ReportError("A stop mask, include or exclude region has no scalars to read.");
     return 1;

@@ -35,7 +35,13 @@
  * ExcludeRegion, misses IncludeRegion or is shorter than MinimumLength
  * (GetNumberOfRejectedTracts says how many, by why). Masks and regions are
  * images read at the voxel that holds each point; lengths and angles are
- * Euclidean (mm for a scan), whatever the metric's scale.
+ * Euclidean (mm for a scan), whatever the metric's scale. They are set
+ * (SetStopMask, ...) or connected (optional ports StopMaskPort,
+ * IncludeRegionPort, ExcludeRegionPort; a connection wins): ParaView's
+ * tracer takes them as inputs, whole on every piece.
+ *
+ * Ports: 0 the seeds (optional), 1 to 3 the masks (optional), 4 the metric
+ * (GetMetricPort()).
  *
  * Output: one polyline per seed and direction with point data `ArcLength`,
  * `Velocity` (dx/ds), `SpeedDrift` (g(v,v) - 1 for the unit-speed velocity:
@@ -185,6 +191,12 @@ public:
    * point (not 0: set), in the image's own placement (origin, spacing,
    * direction). MaximumAngle is in degrees per unit length (0: off).
    */
+  enum MaskPorts
+  {
+    StopMaskPort = 1,
+    IncludeRegionPort = 2,
+    ExcludeRegionPort = 3
+  };
   vtkSetSmartPointerMacro(StopMask, vtkImageData);
   vtkGetSmartPointerMacro(StopMask, vtkImageData);
   vtkSetClampMacro(StopFractionalAnisotropy, double, 0.0, 1.0);

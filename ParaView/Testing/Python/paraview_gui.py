@@ -63,6 +63,13 @@ class Steps:
         self.event(f"{dialog}/buttonBox/1QPushButton0", "activate")
         return self.settings(settings).apply()
 
+    def open_file(self, path):
+        """File > Open of `path` (the reader ParaView picks for its extension), then Apply."""
+        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileOpen")
+        self.event("pqClientMainWindow/FileOpenDialog", "filesSelected", path)
+        return self.apply()
+
     def apply_vtk_source(self, proxy):
         """Sources > Alphabetical > proxy (one of ParaView's own), with its defaults."""
         self.menu("menuSources", "Alphabetical", proxy)

@@ -75,7 +75,7 @@ class MetricSourceTests(unittest.TestCase):
         a, b = tracer_points(through_pipeline), tracer_points(direct)
         self.assertGreater(len(a), 100)
         self.assertTrue(np.array_equal(a, b), "the pipeline's metric traces other geodesics")
-        self.assertEqual(through_pipeline.GetMetricPort(), 1)
+        self.assertEqual(through_pipeline.GetMetricPort(), 4)  # after the seeds and the three masks
 
         field = riemann.vtkRiemannCurvatureField()
         field.SetMetricConnection(source.GetOutputPort())

@@ -24,7 +24,9 @@
   that takes the other branch at the crossing);
 - the tracer's tractography settings from Python: StopFractionalAnisotropy
   ends tracts (LOW_ANISOTROPY), ExcludeRegion drops the tracts that enter it
-  and counts them (GetNumberOfRejectedTracts), no kept point lies in it.
+  and counts them (GetNumberOfRejectedTracts), no kept point lies in it;
+  the region and a stop mask connected at their ports (as ParaView gives
+  them) trace the setters' tracts bit for bit.
 
 Run by ctest with /usr/bin/python3 and PYTHONPATH set to the build's package
 folder; exits non-zero on failure.
@@ -159,6 +161,28 @@ class TractographyPhantomTests(unittest.TestCase):
         xyz = vtk_to_numpy(tracer.GetOutput().GetPoints().GetData())
         self.assertFalse(np.any((xyz[:, 0] > 0.85) & (xyz[:, 0] < 0.95) &
                                 (np.abs(xyz[:, 1]) < 1.95) & (np.abs(xyz[:, 2]) < 1.15)))
+
+        # The same region connected at its port (ParaView's way: an input),
+        # and a stop mask so: the same tracts, bit for bit, as the setters'.
+        inside = slab.NewInstance()
+        inside.DeepCopy(slab)
+        inside.GetPointData().SetScalars(numpy_to_vtk((np.abs(points[:, 1]) < 1.5).astype(np.uint8), deep=True))
+        tracer.SetStopMask(inside)
+        tracer.Update()
+        by_setters = vtk_to_numpy(tracer.GetOutput().GetPoints().GetData()).copy()
+        reasons = vtk_to_numpy(tracer.GetOutput().GetCellData().GetArray("ReasonForTermination"))
+        self.assertGreater(int(np.sum(reasons == tracer.STOPPED_BY_MASK)), 0)  # the mask matters
+        connected = riemann.vtkRiemannGeodesicTracer()
+        connected.SetMetric(metric)
+        connected.SetInputData(example.seeds())
+        connected.SetIntegrationDirectionToBoth()
+        connected.GetIntegrationSettings().SetMaximumPropagation(6.0)
+        connected.SetStopFractionalAnisotropy(0.3)
+        connected.SetInputData(connected.ExcludeRegionPort, slab)
+        connected.SetInputData(connected.StopMaskPort, inside)
+        connected.Update()
+        self.assertEqual(connected.GetNumberOfRejectedTracts(), tracer.GetNumberOfRejectedTracts())
+        np.testing.assert_array_equal(vtk_to_numpy(connected.GetOutput().GetPoints().GetData()), by_setters)
 
 
 if __name__ == "__main__":
