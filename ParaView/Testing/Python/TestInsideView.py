@@ -21,8 +21,6 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
@@ -33,16 +31,6 @@ DATA = os.environ["RIEMANN_DATA_DIR"]
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
 WIDTH, HEIGHT = 400, 300
-
-
-def rgb(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)
-    return pixels[:, :, :3].astype(np.float64)
 
 
 def view_properties(state):
@@ -103,7 +91,7 @@ def main():
     check(done.returncode == 0, f"riemann render failed: {done.stderr}")
     if compare_outputs.failures:
         return 1
-    got, want = rgb(picture), rgb(reference)
+    got, want = compare_outputs.rgb(picture), compare_outputs.rgb(reference)
     check(got.shape == want.shape, f"ParaView's picture is {got.shape}, riemann render's {want.shape}")
     if got.shape == want.shape:
         mean = float(np.mean(np.abs(got - want))) / 255.0

@@ -6,7 +6,10 @@ reported where it is wrong, with the pipeline still usable.
    File > Save Data: the scalar curvature equals the toolkit's own
    (Python: vtkRiemannMetric.SetTime(1), the same grid) bit for bit, and
    differs from `riemann fields` (t = 0).
-2. A Riemann Metric whose typed Definition uses an unknown symbol: ParaView's
+2. File > Save Animation of an Exponential Map of the same metric: one
+   picture a time step, the last unlike the first and equal to a
+   screenshot of the view after Last Frame.
+3. A Riemann Metric whose typed Definition uses an unknown symbol: ParaView's
    log (its output window) names the symbol and the column; the same
    source, given a metric file instead, then applies, a Curvature Field
    follows and equals `riemann fields`; ParaView exits 0.
@@ -17,6 +20,7 @@ import subprocess
 import sys
 import tempfile
 
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
@@ -60,6 +64,35 @@ def time_is_paraview_time(work):
     print("time: the curvature at ParaView's last frame is the metric's at t = 1")
 
 
+def save_animation_steps_the_metric(work):
+    """File > Save Animation of an Exponential Map of the animated metric: one
+    picture a time step (11), the first unlike the last, and the last equal to
+    a screenshot of the same view after Last Frame (t = 1)."""
+    wavy = os.path.join(DATA, "metrics", "wavy-diffeo.json")
+    frames = os.path.join(work, "frame.png")
+    last = os.path.join(work, "last-frame.png")
+    steps = (paraview_gui.Steps()
+             .apply_source("RiemannMetricSource", DefinitionFile=wavy)
+             .apply_filter("RiemannExponentialMap")
+             .save_animation(frames, 400, 300)
+             .last_time()
+             .save_screenshot(last, 400, 300))
+    run = paraview_gui.run(steps, work, name="animation")
+    check(run.returncode == 0 and not run.errors(),
+          f"animation: ParaView failed or reported errors: {run.errors()[:5]}")
+    pictures = [os.path.join(work, f"frame.{i:04d}.png") for i in range(11)]
+    missing = [p for p in pictures + [last] if not os.path.isfile(p)]
+    check(not missing, f"animation: not written: {missing}")
+    if missing:
+        return
+    first, final, screenshot = (compare_outputs.rgb(p) for p in (pictures[0], pictures[-1], last))
+    changed = int(np.count_nonzero(np.abs(first - final).sum(axis=2)))
+    check(changed > 1000, f"animation: the first and last frames differ in {changed} pixels only")
+    check(np.array_equal(final, screenshot), "animation: the last frame is not the view at t = 1")
+    print(f"animation: 11 frames; the last differs from the first in {changed} of {400 * 300} pixels "
+          "and equals the view at t = 1")
+
+
 def bad_metric_is_reported(work):
     good = os.path.join(DATA, "metrics", "gaussian-bump.json")
     output = os.path.join(work, "after-error.vti")
@@ -85,6 +118,7 @@ def bad_metric_is_reported(work):
 def main():
     work = tempfile.mkdtemp(prefix="ParaViewTime-")
     time_is_paraview_time(work)
+    save_animation_steps_the_metric(work)
     bad_metric_is_reported(work)
     return compare_outputs.exit_status()
 

@@ -7,6 +7,7 @@ formats; these read both and say where two outputs differ.
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOXML import vtkXMLDataObjectWriter, vtkXMLGenericDataObjectReader
 
 # What failed so far in this test (check); a test exits 1 when it is not empty.
@@ -40,6 +41,17 @@ def toolkit_curvature_at(riemann, metric_file, t, path):
     field = riemann.vtkRiemannCurvatureField()
     field.SetMetric(metric)
     write(field, path)
+
+
+def rgb(path):
+    """A PNG picture's red, green and blue as a rows x columns x 3 array of doubles (row 0 at the bottom)."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)
+    return pixels[:, :, :3].astype(np.float64)
 
 
 def read(path):

@@ -117,6 +117,18 @@ class Steps:
         self.event(f"{resolution}/height", "set_string", str(height))
         return self.event("pqClientMainWindow/SaveScreenshotDialog/widget/OKButton", "activate")
 
+    def save_animation(self, path, width, height):
+        """File > Save Animation of the active view over all time steps at width x height:
+        numbered pictures path.0000.png, ... (ParaView's names for a .png)."""
+        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveAnimation")
+        self.event("pqClientMainWindow/SaveAnimationFileDialog", "filesSelected", path)
+        resolution = ("pqClientMainWindow/SaveAnimationDialog/scrollArea/qt_scrollarea_viewport/Container/"
+                      "ProxyWidget/ImageResolution")
+        self.event(f"{resolution}/width", "set_string", str(width))
+        self.event(f"{resolution}/height", "set_string", str(height))
+        return self.event("pqClientMainWindow/SaveAnimationDialog/widget/OKButton", "activate")
+
     def save_state(self, path):
         self.event("pqClientMainWindow/menubar", "activate", "menu_File")
         self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveServerState")
