@@ -7,8 +7,12 @@
    equal to vtkRiemannCameraPath on the same file (Python).
 3. A metric file opened as data (paraview --data=FILE.json: the Riemann
    Metric File reader), then a Curvature Field: equal to `riemann fields`.
+4. A typed Metric (a bump of height a = 1) whose Parameters table gives a
+   the value 0.25, then a Curvature Field: equal to `riemann fields` of the
+   definition written with a = 0.25, unlike the one with a = 1.
 """
 
+import json
 import os
 import subprocess
 import sys
@@ -72,7 +76,31 @@ def main():
         subprocess.run([RIEMANN, "fields", "--metric", LENS, "--compress", "none", "-o", reference],
                        check=True, capture_output=True)
         compared("metric file reader", output, reference, ["ScalarCurvature", "Ricci", "Points"])
+    parameters_in_the_panel(work)
     return compare_outputs.exit_status()
+
+
+def parameters_in_the_panel(work):
+    def bump(a):
+        return json.dumps({"type": "graph", "f": "a*exp(-(x^2+y^2)/(2*s^2))", "parameters": {"a": a, "s": 0.5}})
+
+    output = os.path.join(work, "parameters.vti")
+    steps = paraview_gui.Steps().menu("menuSources", "Riemann", "RiemannMetricSource")
+    steps.set_text("Definition", bump(1)).set_parameter(0, "a", 0.25).apply()
+    steps.apply_filter("RiemannCurvatureField").save_data(output)
+    if not played(steps, work, "parameters", output):
+        return
+    references = {}
+    for a in (0.25, 1):
+        definition = os.path.join(work, f"bump-{a}.json")
+        with open(definition, "w", encoding="utf-8") as f:
+            f.write(bump(a))
+        references[a] = os.path.join(work, f"bump-{a}.reference.vti")
+        subprocess.run([RIEMANN, "fields", "--metric", definition, "--compress", "none", "-o", references[a]],
+                       check=True, capture_output=True)
+    compared("parameters (a = 0.25 in the table)", output, references[0.25], ["ScalarCurvature", "Ricci", "Points"])
+    check(compare_outputs.compare(output, references[1], ["ScalarCurvature"]) != [],
+          "parameters: the table's value changed nothing (the output equals a = 1's)")
 
 
 if __name__ == "__main__":

@@ -87,6 +87,16 @@ class Steps:
     def set_text(self, prop, text):
         return self.event(f"{PANEL}/{prop}/{prop}", "set_string", text)
 
+    def set_parameter(self, row, name, value):
+        """The Metric's Parameters table: a new row `row` (0, 1, ...) giving `name` the value `value`."""
+        table = f"{PANEL}/Parameters/ScalarValueList"
+        self.event(f"{table}/Add", "activate")
+        # Cells are "row.column"; an edit is opened, then accepted with its text.
+        for column, text in ((0, name), (1, str(value))):
+            self.event(f"{table}/Table", "edit", f"{row}.{column}")
+            self.event(f"{table}/Table", "editAccepted", f"{row}.{column},{text}")
+        return self
+
     def last_time(self):
         """The animation toolbar's Last Frame: ParaView's time to the end."""
         return self.event("pqClientMainWindow/VCRToolbar/actionVCRLastFrame", "activate")
