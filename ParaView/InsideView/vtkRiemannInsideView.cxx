@@ -14,9 +14,15 @@ vtkRiemannInsideView::vtkRiemannInsideView()
 {
   // The data's actors are the scene's meshes; the rest of the scene is ours.
   this->Pass->SetUseRendererProps(true);
+  this->Superclass::SetRemoteRenderingThreshold(0.0);
 }
 
 vtkRiemannInsideView::~vtkRiemannInsideView() = default;
+
+void vtkRiemannInsideView::SetRemoteRenderingThreshold(double)
+{
+  this->Superclass::SetRemoteRenderingThreshold(0.0);
+}
 
 vtkRiemannRayTracePass* vtkRiemannInsideView::GetRayTracePass()
 {

@@ -16,6 +16,11 @@
  * The scene around the data: the view's background colour, the observer's
  * light, no objects, and the pass's declared integration (the "Rays"
  * preset: RK4, step 0.02, 1000 steps, length 30).
+ *
+ * With a server (pvserver), the view always renders where the data are:
+ * its remote rendering threshold is 0, whatever ParaView's settings say,
+ * so the server draws through the pass and sends the picture (the client
+ * holds no data to find the metric in, nor the meshes to trace).
  */
 #ifndef vtkRiemannInsideView_h
 #define vtkRiemannInsideView_h
@@ -41,6 +46,9 @@ public:
 
   /// Why the view draws nothing of the metric ("" when it has one).
   const char* GetLastError() const { return this->LastError.c_str(); }
+
+  /// Always 0: the server renders this view (ParaView's settings set the threshold of every render view).
+  void SetRemoteRenderingThreshold(double threshold) override;
 
 protected:
   vtkRiemannInsideView();

@@ -11,6 +11,9 @@ metric file; ParaView's camera and background; the observer's light; the
 saved sphere as a mesh, white as ParaView colours it) at the same size. The
 two pictures' mean difference must stay under 1/255 per channel, and the
 sphere must be in the picture (pixels that are not the background).
+
+Twice: ParaView alone, and connected to a pvserver (--server-url), where
+the server renders the view through the pass and sends the picture.
 """
 
 import json
@@ -55,6 +58,18 @@ def view_properties(state):
 
 def main():
     work = tempfile.mkdtemp(prefix="ParaViewInsideView-")
+    inside_view(os.path.join(work, "builtin"))
+    server_work = os.path.join(work, "pvserver")
+    os.makedirs(server_work)
+    server = paraview_gui.Server(server_work)
+    inside_view(os.path.join(work, "pvserver"), server)
+    return compare_outputs.exit_status()
+
+
+def inside_view(work, server=None):
+    """The picture ParaView draws (alone, or through `server`) against riemann render's."""
+    os.makedirs(work, exist_ok=True)
+    mode = "pvserver" if server else "builtin"
     sphere = os.path.join(work, "sphere.vtp")
     state = os.path.join(work, "inside.pvsm")
     picture = os.path.join(work, "paraview.png")
@@ -65,13 +80,16 @@ def main():
              .save_data(sphere)
              .save_state(state)
              .save_screenshot(picture, WIDTH, HEIGHT))
-    run = paraview_gui.run(steps, work, name="inside-view", timeout=600)
-    check(run.returncode == 0, f"ParaView's script failed ({run.returncode}):\n{run.log[-3000:]}")
-    check(not run.errors(), f"ParaView reported errors: {run.errors()[:5]}")
+    extra = ["--server-url=" + server.url()] if server else []
+    run = paraview_gui.run(steps, work, name="inside-view", extra_args=extra, timeout=600)
+    server_log = server.stop() if server else ""
+    check(run.returncode == 0, f"{mode}: ParaView's script failed ({run.returncode}):\n{run.log[-3000:]}")
+    check(not run.errors(), f"{mode}: ParaView reported errors: {run.errors()[:5]}")
+    check(not paraview_gui.Run(0, server_log).errors(), f"{mode}: the server reported errors: {server_log[-2000:]}")
     for path in (sphere, state, picture):
-        check(os.path.isfile(path), f"ParaView wrote no {path}")
+        check(os.path.isfile(path), f"{mode}: ParaView wrote no {path}")
     if compare_outputs.failures:
-        return 1
+        return
 
     view = view_properties(state)
     scene = {
@@ -90,18 +108,18 @@ def main():
                            "-o", reference], capture_output=True, text=True)
     check(done.returncode == 0, f"riemann render failed: {done.stderr}")
     if compare_outputs.failures:
-        return 1
+        return
     got, want = compare_outputs.rgb(picture), compare_outputs.rgb(reference)
-    check(got.shape == want.shape, f"ParaView's picture is {got.shape}, riemann render's {want.shape}")
+    check(got.shape == want.shape, f"{mode}: ParaView's picture is {got.shape}, riemann render's {want.shape}")
     if got.shape == want.shape:
         mean = float(np.mean(np.abs(got - want))) / 255.0
         background = np.round(np.array(view["Background"]) * 255.0)
         drawn = int(np.count_nonzero(np.any(np.abs(want - background) > 2, axis=2)))
-        print(f"mean difference {mean * 255:.4f}/255 over {WIDTH}x{HEIGHT}; the sphere covers {drawn} pixels")
-        check(mean < 1.0 / 255.0, f"the pictures differ by {mean * 255:.3f}/255 on average (allowed 1/255): "
+        print(f"{mode}: mean difference {mean * 255:.4f}/255 over {WIDTH}x{HEIGHT}; "
+              f"the sphere covers {drawn} pixels")
+        check(mean < 1.0 / 255.0, f"{mode}: the pictures differ by {mean * 255:.3f}/255 on average (allowed 1/255): "
               f"{picture} against {reference}")
-        check(drawn > 100, f"the sphere covers only {drawn} pixels of the reference")
-    return compare_outputs.exit_status()
+        check(drawn > 100, f"{mode}: the sphere covers only {drawn} pixels of the reference")
 
 
 if __name__ == "__main__":
