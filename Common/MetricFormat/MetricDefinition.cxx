@@ -528,7 +528,7 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
 {
   CheckKeys(
     root, path, { "type", "file", "array", "inverse", "tensor_metric", "sharpening", "scale",
-                  "repair", "outside", "frame", "christoffel" });
+                  "repair", "outside", "frame", "christoffel", "components" });
   const Json& fileValue = Required(root, "file", path);
   if (!fileValue.is_string() || fileValue.get<std::string>().empty())
   {
@@ -612,6 +612,18 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   const std::string frame = ChoiceOr(root, "frame", path,
     { { "world", "tensors in the axes the file places its voxels in" },
       { "fsl", "NIfTI tensors in FSL's voxel axes, as dtifit writes them" } });
+  // Only when given: without it the file must say its order itself.
+  SampledTensorComponents components = SampledTensorComponents::FromFile;
+  if (root.contains("components"))
+  {
+    const std::string order = ChoiceOr(root, "components", path,
+      { { "fsl", "XX XY XZ YY YZ ZZ, FSL's dtifit" },
+        { "mrtrix", "XX YY ZZ XY XZ YZ, MRtrix's dwi2tensor and mrconvert" },
+        { "dipy", "XX XY YY XZ YZ ZZ, DIPY's lower_triangular and NIfTI's symmetric-matrix order" } });
+    components = order == "fsl"    ? SampledTensorComponents::Fsl
+      : order == "mrtrix"          ? SampledTensorComponents::Mrtrix
+                                   : SampledTensorComponents::Dipy;
+  }
   const SampledTensorReader& reader = InstalledSampledTensorReader();
   if (!reader)
   {
@@ -628,7 +640,7 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   try
   {
     grid = reader(file, StringOr(root, "array", path, ""),
-      frame == "fsl" ? SampledTensorFrame::Fsl : SampledTensorFrame::World);
+      frame == "fsl" ? SampledTensorFrame::Fsl : SampledTensorFrame::World, components);
   }
   catch (const std::exception& e)
   {

@@ -102,14 +102,29 @@ enum class SampledTensorFrame
 };
 
 /**
- * Reads the tensors of a {"type": "sampled"} definition: the grid of array
- * `array` ("": the data's active tensors) of file `path`, its tensors
- * turned from `frame` to world axes but otherwise as they are stored
- * (PrepareTensorSamples turns them into the metric). Throws std::exception
- * with a message that names the file and what is wrong.
+ * The order of a NIfTI file's six tensor values ({"type": "sampled"}'s
+ * "components"). Six volumes without NIfTI's symmetric-matrix intent do not
+ * say their order, and the tools that write them disagree: such a file is
+ * refused unless the order is given (never guessed).
  */
-using SampledTensorReader = std::function<SampledTensorGrid(
-  const std::string& path, const std::string& array, SampledTensorFrame frame)>;
+enum class SampledTensorComponents
+{
+  FromFile, ///< not given: the file must say (intent NIFTI_INTENT_SYMMATRIX)
+  Fsl,      ///< XX XY XZ YY YZ ZZ: FSL's dtifit
+  Mrtrix,   ///< XX YY ZZ XY XZ YZ: MRtrix's dwi2tensor, through mrconvert to NIfTI
+  Dipy      ///< XX XY YY XZ YZ ZZ: DIPY's lower_triangular, NIfTI's symmetric-matrix order
+};
+
+/**
+ * Reads the tensors of a {"type": "sampled"} definition: the grid of array
+ * `array` ("": the data's active tensors) of file `path`, its values in the
+ * order `components` (NIfTI only), its tensors turned from `frame` to world
+ * axes but otherwise as they are stored (PrepareTensorSamples turns them
+ * into the metric). Throws std::exception with a message that names the
+ * file and what is wrong.
+ */
+using SampledTensorReader = std::function<SampledTensorGrid(const std::string& path,
+  const std::string& array, SampledTensorFrame frame, SampledTensorComponents components)>;
 
 /**
  * Install the reader of "sampled" definitions (the VTK layer installs one

@@ -34,6 +34,7 @@ namespace
 using ComponentPicks = std::vector<int>;
 const ComponentPicks NiftiSymmetricMatrix = { 0, 2, 5, 1, 4, 3 }; // XX XY YY XZ YZ ZZ
 const ComponentPicks UpperTriangle = { 0, 3, 5, 1, 4, 2 };        // XX XY XZ YY YZ ZZ
+const ComponentPicks MrtrixOrder = { 0, 1, 2, 3, 5, 4 };          // XX YY ZZ XY XZ YZ
 const ComponentPicks MaskedUpperTriangle = { 1, 4, 6, 2, 5, 3 };  // confidence, then as above
 const ComponentPicks RowMajor = { 0, 1, 2, 3, 4, 5, 6, 7, 8 };
 
@@ -463,8 +464,45 @@ vtkSmartPointer<vtkImageData> ReadNrrdScalarImage(const std::string& path)
   return image;
 }
 
+namespace
+{
+/// The file's order of a NIfTI file's six values: the one `components`
+/// gives, or the one its symmetric-matrix intent says; both must agree, and
+/// one must be there.
+const ComponentPicks& NiftiSixOrder(bool symmatrix, SampledTensorComponents components)
+{
+  if (symmatrix && components != SampledTensorComponents::FromFile &&
+    components != SampledTensorComponents::Dipy)
+  {
+    throw std::runtime_error("its intent code (NIFTI_INTENT_SYMMATRIX) says the six values are in "
+                             "NIfTI's lower-triangle order (XX XY YY XZ YZ ZZ, \"components\": "
+                             "\"dipy\"), but \"components\" says otherwise: remove one of them");
+  }
+  switch (components)
+  {
+    case SampledTensorComponents::Fsl:
+      return UpperTriangle;
+    case SampledTensorComponents::Mrtrix:
+      return MrtrixOrder;
+    case SampledTensorComponents::Dipy:
+      return NiftiSymmetricMatrix;
+    case SampledTensorComponents::FromFile:
+      break;
+  }
+  if (symmatrix)
+  {
+    return NiftiSymmetricMatrix;
+  }
+  throw std::runtime_error(
+    "six values per voxel and no intent code saying their order (the tools that write them "
+    "disagree): give the metric \"components\": \"fsl\" (XX XY XZ YY YZ ZZ, FSL's dtifit), "
+    "\"mrtrix\" (XX YY ZZ XY XZ YZ, MRtrix's dwi2tensor through mrconvert) or \"dipy\" (XX XY "
+    "YY XZ YZ ZZ, DIPY's lower_triangular)");
+}
+} // namespace
+
 vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
-  const std::string& path, SampledTensorFrame frame)
+  const std::string& path, SampledTensorFrame frame, SampledTensorComponents components)
 {
   vtkNew<vtkNIFTIImageReader> reader;
   vtkSmartPointer<vtkImageData> image = ReadNifti(reader, path);
@@ -489,11 +527,13 @@ vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
                "or 9";
     throw std::runtime_error(message.str());
   }
-  SetTensors(image, scalars,
-    count == 9    ? RowMajor
-      : symmatrix ? NiftiSymmetricMatrix
-                  : UpperTriangle,
-    slope, intercept);
+  if (count == 9 && components != SampledTensorComponents::FromFile)
+  {
+    throw std::runtime_error("nine values per voxel are read row-major; \"components\" orders six: "
+                             "leave it out");
+  }
+  SetTensors(image, scalars, count == 9 ? RowMajor : NiftiSixOrder(symmatrix, components), slope,
+    intercept);
 
   // Step 2: the placement, q-form first.
   vtkMatrix4x4* placement = PlaceNifti(image, reader);

@@ -24,9 +24,12 @@ namespace riemann
  * (the matrices map voxel centres to the file's world axes, RAS for
  * scanner data). An s-form with shear or unequal column norms beyond the
  * voxel sizes is refused. Components: six per voxel, stored as the vector
- * dimension (dim[5]) or as six volumes (dim[4]); with intent NIFTI_INTENT_SYMMATRIX
- * (1005) in NIfTI's lower-triangle order (XX, XY, YY, XZ, YZ, ZZ), else in
- * FSL dtifit's order (XX, XY, XZ, YY, YZ, ZZ); or nine, row-major.
+ * dimension (dim[5]) or as six volumes (dim[4]), in the order `components`
+ * says (FSL's, MRtrix's or DIPY's: SampledTensorComponents); with intent
+ * NIFTI_INTENT_SYMMATRIX (1005) the file says NIfTI's lower-triangle order
+ * (XX, XY, YY, XZ, YZ, ZZ, DIPY's), and another `components` is refused;
+ * without that intent and without `components` the file is refused (the
+ * writers disagree: never guessed). Or nine, row-major (no `components`).
  * scl_slope and scl_inter are applied. The tensors are taken in the world
  * axes of the placement (MRtrix writes them so), or with `frame`
  * SampledTensorFrame::Fsl in FSL's voxel axes (dtifit's, and DIPY's from
@@ -35,8 +38,9 @@ namespace riemann
  * turned to world axes, D -> A D A^T (A: those axes as columns). Throws
  * std::runtime_error saying what is wrong.
  */
-vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(
-  const std::string& path, SampledTensorFrame frame = SampledTensorFrame::World);
+vtkSmartPointer<vtkImageData> ReadNiftiTensorImage(const std::string& path,
+  SampledTensorFrame frame = SampledTensorFrame::World,
+  SampledTensorComponents components = SampledTensorComponents::FromFile);
 
 /**
  * Read a NRRD tensor volume: 6 components per voxel in Teem's order (XX,

@@ -159,8 +159,8 @@ SampledTensorGrid TensorGridFromImage(vtkImageData* image, const std::string& ar
   return grid;
 }
 
-SampledTensorGrid ReadTensorGridFile(
-  const std::string& path, const std::string& arrayName, SampledTensorFrame frame)
+SampledTensorGrid ReadTensorGridFile(const std::string& path, const std::string& arrayName,
+  SampledTensorFrame frame, SampledTensorComponents components)
 {
   // A regular file first: a FIFO would block the readers, a device feed them forever.
   const std::string notAFile = InputFileProblem(path, "the tensor file");
@@ -182,6 +182,13 @@ SampledTensorGrid ReadTensorGridFile(
       ": \"frame\": \"fsl\" is for NIfTI files (FSL's voxel axes); this file's tensors are "
       "read in world axes");
   }
+  if (components != SampledTensorComponents::FromFile && !nifti)
+  {
+    // VTK's tensors have VTK's order; a NRRD's kind says its own.
+    throw std::runtime_error(path +
+      ": \"components\" is the order of a NIfTI file's six volumes; this file says its own "
+      "order (VTK's, or the NRRD kind's): leave it out");
+  }
   if (nifti || nrrd)
   {
     // One tensor per voxel, named by the reader: there is no array to choose.
@@ -192,7 +199,7 @@ SampledTensorGrid ReadTensorGridFile(
     }
     try
     {
-      image = nifti ? ReadNiftiTensorImage(path, frame) : ReadNrrdTensorImage(path);
+      image = nifti ? ReadNiftiTensorImage(path, frame, components) : ReadNrrdTensorImage(path);
     }
     catch (const std::runtime_error& e)
     {

@@ -31,10 +31,12 @@ RIEMANNIOMEDICAL_EXPORT SampledTensorGrid TensorGridFromImage(vtkImageData* imag
  * Read `path` (VTK XML image data .vti, legacy .vtk structured points,
  * NIfTI .nii/.nii.gz or NRRD .nrrd/.nhdr: RiemannMedicalTensorImages.h)
  * and return TensorGridFromImage of it; errors name the file. The tensors
- * are in `frame` (SampledTensorFrame::Fsl: NIfTI files only).
+ * are in `frame` (SampledTensorFrame::Fsl: NIfTI files only), a NIfTI
+ * file's six values in the order `components` (given for NIfTI files only).
  */
-RIEMANNIOMEDICAL_EXPORT SampledTensorGrid ReadTensorGridFile(
-  const std::string& path, const std::string& arrayName, SampledTensorFrame frame);
+RIEMANNIOMEDICAL_EXPORT SampledTensorGrid ReadTensorGridFile(const std::string& path,
+  const std::string& arrayName, SampledTensorFrame frame,
+  SampledTensorComponents components = SampledTensorComponents::FromFile);
 }
 
 #endif

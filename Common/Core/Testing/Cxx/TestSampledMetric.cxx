@@ -352,7 +352,7 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
     writer->Write();
   }
   path =
-    MetricFile("fsl.json", R"({"type": "sampled", "file": "dtifit_tensor.nii", "inverse": true})");
+    MetricFile("fsl.json", R"({"type": "sampled", "file": "dtifit_tensor.nii", "inverse": true, "components": "fsl"})");
   ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
   EXPECT_LT((MetricAt(metric, Vec3(0.8, 0.9, 1.0)) - expected).cwiseAbs().maxCoeff(), 1e-5);
 
@@ -460,6 +460,68 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
     << error;
 }
 
+TEST(SampledMetric, SixNiftiVolumesWithoutAnIntentNeedTheirOrder)
+{
+  // Six volumes and no intent code: FSL's dtifit writes XX XY XZ YY YZ ZZ,
+  // MRtrix (mrconvert dt.mif dt.nii) XX YY ZZ XY XZ YZ. Read as the other's,
+  // a tensor is another (or no) metric: the file is refused until
+  // "components" says which, and then read exactly (float samples).
+  const auto writeSix = [](const std::string& name, const std::vector<int>& order, bool symmatrix)
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(VoxelImage(Affine, order, [](const Vec3& v) { return v; }));
+    writer->SetTimeDimension(6);
+    if (symmatrix)
+    {
+      vtkNew<vtkNIFTIImageHeader> header;
+      header->SetIntentCode(vtkNIFTIImageHeader::IntentSymMatrix);
+      writer->SetNIFTIHeader(header);
+    }
+    writer->SetFileName((Folder() / name).c_str());
+    writer->Write();
+  };
+  // VoxelImage's picks index the row-major 3 x 3 tensor.
+  writeSix("mrtrix.nii", { 0, 4, 8, 1, 2, 5 }, false);
+  writeSix("fsl.nii", { 0, 1, 2, 4, 5, 8 }, false);
+  writeSix("symmatrix.nii", { 0, 1, 4, 2, 5, 8 }, true);
+  const Vec3 x(0.8, 0.9, 1.0);
+
+  std::string error = ErrorOf(R"({"type": "sampled", "file": "mrtrix.nii"})");
+  EXPECT_NE(error.find("mrtrix.nii: six values per voxel and no intent code saying their order"),
+    std::string::npos)
+    << error;
+  EXPECT_NE(error.find("\"components\": \"fsl\""), std::string::npos) << error;
+  for (const auto& [file, order] : std::vector<std::pair<std::string, std::string>>{
+         { "mrtrix.nii", "mrtrix" }, { "fsl.nii", "fsl" }, { "symmatrix.nii", "dipy" } })
+  {
+    SCOPED_TRACE(file);
+    vtkNew<vtkRiemannMetric> metric;
+    const fs::path path = MetricFile(
+      "six.json", R"({"type": "sampled", "file": ")" + file + R"(", "components": ")" + order + R"("})");
+    ASSERT_TRUE(metric->SetDefinitionFile(path.c_str())) << metric->GetLastError();
+    EXPECT_LT((MetricAt(metric, x) - Affine(x)).cwiseAbs().maxCoeff(), 2e-6);
+  }
+  // The intent says the order: no key needed; a key that contradicts it is refused.
+  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "symmatrix.nii"})"), "");
+  error = ErrorOf(R"({"type": "sampled", "file": "symmatrix.nii", "components": "mrtrix"})");
+  EXPECT_NE(error.find("its intent code (NIFTI_INTENT_SYMMATRIX) says"), std::string::npos) << error;
+  // Read in the wrong order, the same file is another metric.
+  vtkNew<vtkRiemannMetric> wrong;
+  const fs::path path =
+    MetricFile("wrong.json", R"({"type": "sampled", "file": "fsl.nii", "components": "mrtrix"})");
+  if (wrong->SetDefinitionFile(path.c_str()))
+  {
+    EXPECT_GT((MetricAt(wrong, x) - Affine(x)).cwiseAbs().maxCoeff(), 0.05);
+  }
+  // Only NIfTI files take the key, and only its three orders.
+  WriteVti(TensorImage(Affine), Folder() / "affine-six.vti");
+  error = ErrorOf(R"({"type": "sampled", "file": "affine-six.vti", "components": "fsl"})");
+  EXPECT_NE(error.find("\"components\" is the order of a NIfTI file's six volumes"), std::string::npos)
+    << error;
+  error = ErrorOf(R"({"type": "sampled", "file": "fsl.nii", "components": "afni"})");
+  EXPECT_NE(error.find("metric.components: expected \"fsl\""), std::string::npos) << error;
+}
+
 TEST(SampledMetric, FslFrameTensorsAreTurnedFromTheVoxelAxes)
 {
   // dtifit's tensors are in FSL's voxel axes: the file's voxel axes, the
@@ -488,10 +550,11 @@ TEST(SampledMetric, FslFrameTensorsAreTurnedFromTheVoxelAxes)
     }
     vtkNew<vtkRiemannMetric> fsl;
     fs::path path = MetricFile(
-      "fsl-frame.json", R"({"type": "sampled", "file": ")" + name + R"(", "frame": "fsl"})");
+      "fsl-frame.json", R"({"type": "sampled", "file": ")" + name + R"(", "frame": "fsl", "components": "fsl"})");
     ASSERT_TRUE(fsl->SetDefinitionFile(path.c_str())) << fsl->GetLastError();
     vtkNew<vtkRiemannMetric> asWritten;
-    path = MetricFile("world-frame.json", R"({"type": "sampled", "file": ")" + name + R"("})");
+    path = MetricFile(
+      "world-frame.json", R"({"type": "sampled", "file": ")" + name + R"(", "components": "fsl"})");
     ASSERT_TRUE(asWritten->SetDefinitionFile(path.c_str())) << asWritten->GetLastError();
     for (const Vec3& voxel : { Vec3(1.0, 1.2, 0.9), Vec3(0.6, 1.5, 1.4), Vec3(1.4, 0.7, 0.8) })
     {
@@ -518,7 +581,7 @@ TEST(SampledMetric, FslFrameTensorsAreTurnedFromTheVoxelAxes)
     writer->SetFileName((Folder() / "unplaced.nii").c_str());
     writer->Write();
   }
-  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "unplaced.nii"})"), "");
-  error = ErrorOf(R"({"type": "sampled", "file": "unplaced.nii", "frame": "fsl"})");
+  EXPECT_EQ(ErrorOf(R"({"type": "sampled", "file": "unplaced.nii", "components": "fsl"})"), "");
+  error = ErrorOf(R"({"type": "sampled", "file": "unplaced.nii", "frame": "fsl", "components": "fsl"})");
   EXPECT_NE(error.find("needs the file's q-form or s-form"), std::string::npos) << error;
 }
