@@ -24,31 +24,12 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
-from compare_outputs import check  # noqa: E402
+from compare_outputs import check, compared  # noqa: E402
 import paraview_gui  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 METRIC = os.path.join(DATA, "metrics", "two-bumps.json")
-
-
-def played(steps, work, name, outputs):
-    run = paraview_gui.run(steps, work, name=name)
-    check(run.returncode == 0, f"{name}: ParaView's script failed ({run.returncode}):\n{run.log[-3000:]}")
-    check(not run.errors(), f"{name}: ParaView reported errors: {run.errors()[:5]}")
-    for output in outputs:
-        check(os.path.isfile(output), f"{name}: ParaView wrote no {output}")
-
-
-def compared(what, output, reference):
-    if not (os.path.isfile(output) and os.path.isfile(reference)):
-        return
-    problems = compare_outputs.compare(output, reference)
-    for problem in problems:
-        check(False, f"{what}: {problem}")
-    if not problems:
-        names = sorted(compare_outputs.arrays(compare_outputs.read(output)))
-        print(f"{what}: equal to riemann distance's: {', '.join(names)}")
 
 
 def line_points():
@@ -86,9 +67,9 @@ def main():
              .save_data(field)
              .apply_filter_with_inputs("RiemannCutLocus", {"Metric": 0})
              .save_data(cut))
-    played(steps, work, "field-and-cut", [field, cut])
-    compared("RiemannDistanceField", field, reference["field"])
-    compared("RiemannCutLocus", cut, reference["cut"])
+    paraview_gui.played(steps, work, "field-and-cut", [field, cut])
+    compared("RiemannDistanceField", field, reference["field"], "riemann distance's")
+    compared("RiemannCutLocus", cut, reference["cut"], "riemann distance's")
 
     # 2. The minimal geodesics to the Line's points (the Line is row 1).
     geodesics = os.path.join(work, "geodesics.vtp")
@@ -99,8 +80,8 @@ def main():
              .apply_filter_with_inputs("RiemannDistanceField", {"Metric": 0})
              .apply_filter_with_inputs("RiemannMinimalGeodesics", {"Targets": 1, "Metric": 0})
              .save_data(geodesics))
-    played(steps, work, "minimal-geodesics", [geodesics])
-    compared("RiemannMinimalGeodesics", geodesics, reference["geodesics"])
+    paraview_gui.played(steps, work, "minimal-geodesics", [geodesics])
+    compared("RiemannMinimalGeodesics", geodesics, reference["geodesics"], "riemann distance's")
     return compare_outputs.exit_status()
 
 

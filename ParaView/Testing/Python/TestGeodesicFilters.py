@@ -18,7 +18,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
-from compare_outputs import check  # noqa: E402
+from compare_outputs import check, compared  # noqa: E402
 import paraview_gui  # noqa: E402
 
 DATA = os.environ["RIEMANN_DATA_DIR"]
@@ -59,13 +59,7 @@ def main():
         check(run.returncode == 0, f"{proxy}: ParaView's script failed ({run.returncode}):\n{run.log[-3000:]}")
         check(not run.errors(), f"{proxy}: ParaView reported errors: {run.errors()[:5]}")
         check(os.path.isfile(output), f"{proxy}: ParaView wrote no {output}")
-        if os.path.isfile(output) and os.path.isfile(reference):
-            problems = compare_outputs.compare(output, reference)
-            for problem in problems:
-                check(False, f"{proxy}: {problem}")
-            if not problems:
-                names = sorted(compare_outputs.arrays(compare_outputs.read(output)))
-                print(f"{proxy}: equal to riemann {command[0]}'s: {', '.join(names)}")
+        compared(proxy, output, reference, f"riemann {command[0]}'s")
     tracer(work)
     return compare_outputs.exit_status()
 
@@ -91,13 +85,7 @@ def tracer(work):
     run = paraview_gui.run(steps, work, name="tracer")
     check(run.returncode == 0 and not run.errors(), f"tracer: ParaView failed or reported errors: {run.errors()[:5]}")
     check(os.path.isfile(output), "tracer: ParaView wrote no output")
-    if os.path.isfile(output) and os.path.isfile(reference):
-        problems = compare_outputs.compare(output, reference)
-        for problem in problems:
-            check(False, f"tracer: {problem}")
-        if not problems:
-            print("RiemannGeodesicTracer: equal to riemann trace's: " +
-                  ", ".join(sorted(compare_outputs.arrays(compare_outputs.read(output)))))
+    compared("RiemannGeodesicTracer", output, reference, "riemann trace's")
 
 
 if __name__ == "__main__":

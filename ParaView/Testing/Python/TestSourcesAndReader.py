@@ -20,7 +20,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
-from compare_outputs import check  # noqa: E402
+from compare_outputs import check, compared  # noqa: E402
 import paraview_gui  # noqa: E402
 
 import riemann  # noqa: E402
@@ -30,27 +30,11 @@ RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
 
 
-def played(steps, work, name, output, extra_args=()):
-    run = paraview_gui.run(steps, work, name=name, extra_args=extra_args)
-    check(run.returncode == 0 and not run.errors(),
-          f"{name}: ParaView failed ({run.returncode}) or reported errors: {run.errors()[:5]}\n{run.log[-1500:]}")
-    check(os.path.isfile(output), f"{name}: nothing saved")
-    return os.path.isfile(output)
-
-
-def compared(name, output, reference, names=None):
-    problems = compare_outputs.compare(output, reference, names)
-    for problem in problems:
-        check(False, f"{name}: {problem}")
-    if not problems:
-        print(f"{name}: equal to the toolkit's: " + ", ".join(sorted(compare_outputs.arrays(compare_outputs.read(output)))))
-
-
 def main():
     work = tempfile.mkdtemp(prefix="ParaViewSources-")
 
     output = os.path.join(work, "directions.vtp")
-    if played(paraview_gui.Steps().apply_source("RiemannDirectionGrid").save_data(output), work, "direction-grid", output):
+    if paraview_gui.played(paraview_gui.Steps().apply_source("RiemannDirectionGrid").save_data(output), work, "direction-grid", output):
         reference = os.path.join(work, "directions.reference.vtp")
         compare_outputs.write(riemann.vtkRiemannDirectionGrid(), reference)
         compared("direction grid", output, reference)
@@ -60,7 +44,7 @@ def main():
              .apply_source("RiemannMetricSource", DefinitionFile=LENS)
              .apply_filter("RiemannCameraPath")
              .save_data(output))
-    if played(steps, work, "camera-path", output):
+    if paraview_gui.played(steps, work, "camera-path", output):
         metric = riemann.vtkRiemannMetric()
         check(metric.SetDefinitionFile(LENS), metric.GetLastError())
         path = riemann.vtkRiemannCameraPath()
@@ -71,11 +55,11 @@ def main():
 
     output = os.path.join(work, "from-reader.vti")
     steps = paraview_gui.Steps().apply().apply_filter("RiemannCurvatureField").save_data(output)
-    if played(steps, work, "reader", output, extra_args=["--data=" + LENS]):
+    if paraview_gui.played(steps, work, "reader", output, extra_args=["--data=" + LENS]):
         reference = os.path.join(work, "from-reader.reference.vti")
         subprocess.run([RIEMANN, "fields", "--metric", LENS, "--compress", "none", "-o", reference],
                        check=True, capture_output=True)
-        compared("metric file reader", output, reference, ["ScalarCurvature", "Ricci", "Points"])
+        compared("metric file reader", output, reference, names=["ScalarCurvature", "Ricci", "Points"])
     parameters_in_the_panel(work)
     return compare_outputs.exit_status()
 
@@ -88,7 +72,7 @@ def parameters_in_the_panel(work):
     steps = paraview_gui.Steps().menu("menuSources", "Riemann", "RiemannMetricSource")
     steps.set_text("Definition", bump(1)).set_parameter(0, "a", 0.25).apply()
     steps.apply_filter("RiemannCurvatureField").save_data(output)
-    if not played(steps, work, "parameters", output):
+    if not paraview_gui.played(steps, work, "parameters", output):
         return
     references = {}
     for a in (0.25, 1):
@@ -98,7 +82,7 @@ def parameters_in_the_panel(work):
         references[a] = os.path.join(work, f"bump-{a}.reference.vti")
         subprocess.run([RIEMANN, "fields", "--metric", definition, "--compress", "none", "-o", references[a]],
                        check=True, capture_output=True)
-    compared("parameters (a = 0.25 in the table)", output, references[0.25], ["ScalarCurvature", "Ricci", "Points"])
+    compared("parameters (a = 0.25 in the table)", output, references[0.25], names=["ScalarCurvature", "Ricci", "Points"])
     check(compare_outputs.compare(output, references[1], ["ScalarCurvature"]) != [],
           "parameters: the table's value changed nothing (the output equals a = 1's)")
 

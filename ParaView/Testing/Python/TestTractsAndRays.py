@@ -27,7 +27,7 @@ from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLImageDataWriter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_outputs  # noqa: E402
-from compare_outputs import check  # noqa: E402
+from compare_outputs import check, compared  # noqa: E402
 import paraview_gui  # noqa: E402
 
 import riemann  # noqa: E402
@@ -36,23 +36,6 @@ DATA = os.environ["RIEMANN_DATA_DIR"]
 RIEMANN = os.path.join(os.environ["RIEMANN_BIN_DIR"], "riemann")
 PHANTOM = os.path.join(DATA, "phantom", "fibre-phantom.json")
 LENS = os.path.join(DATA, "metrics", "gaussian-lens.json")
-
-
-def played(steps, work, name, output, extra_args=()):
-    run = paraview_gui.run(steps, work, name=name, extra_args=extra_args)
-    check(run.returncode == 0, f"{name}: ParaView's script failed ({run.returncode}):\n{run.log[-3000:]}")
-    check(not run.errors(), f"{name}: ParaView reported errors: {run.errors()[:5]}")
-    check(os.path.isfile(output), f"{name}: ParaView wrote no {output}")
-    return os.path.isfile(output)
-
-
-def compared(what, output, reference, against):
-    problems = compare_outputs.compare(output, reference)
-    for problem in problems:
-        check(False, f"{what}: {problem}")
-    if not problems:
-        names = sorted(compare_outputs.arrays(compare_outputs.read(output)))
-        print(f"{what}: equal to {against}: {', '.join(names)}")
 
 
 def write_mask(path, select):
@@ -85,7 +68,7 @@ def tract_files(work):
                                "--length", "1.5", "-o", path], capture_output=True, text=True)
         check(done.returncode == 0, f"riemann trace -o {name} failed: {done.stderr}")
         output = os.path.join(work, name + ".vtp")
-        if played(paraview_gui.Steps().apply().save_data(output), work, name, output,
+        if paraview_gui.played(paraview_gui.Steps().apply().save_data(output), work, name, output,
                   extra_args=["--data=" + path]):
             reader = riemann.vtkRiemannTractReader()
             reader.SetFileName(path)
@@ -111,7 +94,7 @@ def tractography_from_a_mask(work):
              .apply_source("RiemannMetricSource", DefinitionFile=PHANTOM)
              .apply_filter_with_inputs("RiemannGeodesicTracer", {"Input": 0, "StopMask": 1, "Metric": 2})
              .save_data(output))
-    if played(steps, work, "mask-tracts", output):
+    if paraview_gui.played(steps, work, "mask-tracts", output):
         compared("Geodesic Tracer from a seed mask, with a stop mask", output, reference,
                  "riemann trace --seed-mask --stop-mask's")
 
@@ -122,7 +105,7 @@ def ray_bundle(work):
              .apply_source("RiemannMetricSource", DefinitionFile=LENS)
              .apply_filter("RiemannRayBundle")
              .save_data(output))
-    if played(steps, work, "bundle", output):
+    if paraview_gui.played(steps, work, "bundle", output):
         metric = riemann.vtkRiemannMetric()
         check(metric.SetDefinitionFile(LENS), metric.GetLastError())
         bundle = riemann.vtkRiemannRayBundle()

@@ -116,28 +116,26 @@ class Steps:
         return self.event(f"{frames}/Frame.2/CentralWidgetFrame/EmptyView/scrollArea/qt_scrollarea_viewport/"
                           "widgetFoo/ConvertActionsFrame/RiemannInsideView", "activate")
 
-    def save_screenshot(self, path, width, height):
-        """File > Save Screenshot of the active view at width x height."""
+    def save_pictures(self, what, path, width, height):
+        """File > Save <what> (Screenshot, Animation) of the active view at width x height:
+        its file dialog, then its options dialog's resolution and OK."""
         self.event("pqClientMainWindow/menubar", "activate", "menu_File")
-        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveScreenshot")
-        self.event("pqClientMainWindow/SaveScreenshotFileDialog", "filesSelected", path)
-        resolution = ("pqClientMainWindow/SaveScreenshotDialog/scrollArea/qt_scrollarea_viewport/Container/"
-                      "ProxyWidget/ImageResolution")
+        self.event("pqClientMainWindow/menubar/menu_File", "activate", f"actionFileSave{what}")
+        self.event(f"pqClientMainWindow/Save{what}FileDialog", "filesSelected", path)
+        dialog = f"pqClientMainWindow/Save{what}Dialog"
+        resolution = f"{dialog}/scrollArea/qt_scrollarea_viewport/Container/ProxyWidget/ImageResolution"
         self.event(f"{resolution}/width", "set_string", str(width))
         self.event(f"{resolution}/height", "set_string", str(height))
-        return self.event("pqClientMainWindow/SaveScreenshotDialog/widget/OKButton", "activate")
+        return self.event(f"{dialog}/widget/OKButton", "activate")
+
+    def save_screenshot(self, path, width, height):
+        """File > Save Screenshot of the active view at width x height."""
+        return self.save_pictures("Screenshot", path, width, height)
 
     def save_animation(self, path, width, height):
         """File > Save Animation of the active view over all time steps at width x height:
         numbered pictures path.0000.png, ... (ParaView's names for a .png)."""
-        self.event("pqClientMainWindow/menubar", "activate", "menu_File")
-        self.event("pqClientMainWindow/menubar/menu_File", "activate", "actionFileSaveAnimation")
-        self.event("pqClientMainWindow/SaveAnimationFileDialog", "filesSelected", path)
-        resolution = ("pqClientMainWindow/SaveAnimationDialog/scrollArea/qt_scrollarea_viewport/Container/"
-                      "ProxyWidget/ImageResolution")
-        self.event(f"{resolution}/width", "set_string", str(width))
-        self.event(f"{resolution}/height", "set_string", str(height))
-        return self.event("pqClientMainWindow/SaveAnimationDialog/widget/OKButton", "activate")
+        return self.save_pictures("Animation", path, width, height)
 
     def save_state(self, path):
         self.event("pqClientMainWindow/menubar", "activate", "menu_File")
@@ -161,6 +159,19 @@ class Run:
     def errors(self):
         """The lines of the log that report errors (vtkErrorMacro, ParaView's own)."""
         return [line for line in self.log.splitlines() if re.search(r"\bERR\b|\bERROR\b|Error:", line)]
+
+
+def played(steps, work, name, outputs, extra_args=()):
+    """Play `steps` (run()); check that ParaView exited 0, logged no error and wrote each of
+    `outputs` (a path or a list). Whether all were written."""
+    from compare_outputs import check
+    outputs = [outputs] if isinstance(outputs, str) else list(outputs)
+    done = run(steps, work, name=name, extra_args=extra_args)
+    check(done.returncode == 0, f"{name}: ParaView's script failed ({done.returncode}):\n{done.log[-3000:]}")
+    check(not done.errors(), f"{name}: ParaView reported errors: {done.errors()[:5]}")
+    for output in outputs:
+        check(os.path.isfile(output), f"{name}: ParaView wrote no {output}")
+    return all(os.path.isfile(output) for output in outputs)
 
 
 class Server:
