@@ -15,6 +15,7 @@
 #include "ProgressBar.h"
 #include "RiemannScalarImages.h"
 #include "TractOptions.h"
+#include "TractStops.h"
 #include "vtkRiemannGeodesicTracerSettingAccess.h"
 
 #include "vtkDataArray.h"
@@ -122,12 +123,11 @@ long long LabelAt(vtkImageData* image, const double x[3])
   int index[3];
   for (int a = 0; a < 3; ++a)
   {
-    const double nearest = std::floor(ijk[a] + 0.5);
-    if (!(nearest >= 0.0 && nearest < dims[a]))
+    index[a] = VoxelOnAxis(ijk[a], dims[a]);
+    if (index[a] < 0)
     {
       return 0;
     }
-    index[a] = static_cast<int>(nearest);
   }
   return static_cast<long long>(
     image->GetPointData()->GetScalars()->GetTuple1(image->ComputePointId(index)));

@@ -33,6 +33,8 @@ const char* TerminationReasonName(int reason)
       return "fell below the anisotropy threshold";
     case SharpTurn:
       return "turned too sharply";
+    case OutranStep:
+      return "outran its step (the metric changes faster than the step resolves)";
     default:
       return "unknown";
   }
@@ -45,6 +47,37 @@ void GeodesicPath::Clear()
   this->ArcLength.clear();
   this->SpeedDrift.clear();
   this->Reason = NotInitialized;
+}
+
+bool StepOutranItsSpeed(const GeodesicPath& path, const Vec3& x, double arcLength)
+{
+  const double nominal = path.Velocities.back().norm() * std::abs(arcLength);
+  return !((x - path.Points.back()).norm() <= MaximumChordToStepRatio * nominal);
+}
+
+void EndOnTheDataFace(const Metric& metric, GeodesicPath& path, const Vec3& x,
+  const Vec3& velocity, double arcLength, double drift)
+{
+  path.Reason = OutOfData;
+  const Vec3 inside = path.Points.back();
+  // Bisection on the chord: `low` is inside, `high` outside; 40 halvings
+  // leave 1e-12 of the chord (a step of 0.5 mm: 5e-13 mm).
+  double low = 0.0;
+  double high = 1.0;
+  for (int i = 0; i < 40; ++i)
+  {
+    const double middle = 0.5 * (low + high);
+    (metric.InsideData(inside + middle * (x - inside)) ? low : high) = middle;
+  }
+  if (low == 0.0)
+  {
+    return; // the last point is on the face already
+  }
+  const auto along = [low](const auto& from, const auto& to) { return from + low * (to - from); };
+  path.Points.push_back(along(inside, x));
+  path.Velocities.push_back(along(path.Velocities.back(), velocity));
+  path.ArcLength.push_back(along(path.ArcLength.back(), arcLength));
+  path.SpeedDrift.push_back(along(path.SpeedDrift.back(), drift));
 }
 
 bool UnitSpeedVelocity(const Metric& metric, const Vec3& p, const Vec3& direction, Vec3& velocity)
@@ -123,6 +156,11 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
       path.Reason = UnexpectedValue;
       return;
     }
+    if (StepOutranItsSpeed(path, y.head<3>(), speed * taken))
+    {
+      path.Reason = OutranStep;
+      return;
+    }
     tau += taken;
     double drift = 0.0;
     if (options.RecordSpeedDrift)
@@ -138,8 +176,15 @@ void TraceGeodesic(const Metric& metric, const Vec3& p, const Vec3& v,
       }
       drift = squaredSpeed / initialSquaredSpeed - 1.0;
     }
+    const int stop = ReasonToStopAt(metric, options, y.head<3>());
+    if (stop == OutOfData)
+    {
+      EndOnTheDataFace(
+        metric, path, y.head<3>(), y.tail<3>() * (sign / speed), sign * speed * tau, drift);
+      return;
+    }
     record(drift);
-    if (const int stop = ReasonToStopAt(metric, options, y.head<3>()))
+    if (stop)
     {
       path.Reason = stop;
       return;

@@ -34,11 +34,14 @@ enum TerminationReason : int
   /// reached fractional anisotropy below the threshold,
   LowAnisotropy = 12,
   /// turned more sharply than the largest angle per mm between steps.
-  SharpTurn = 13
+  SharpTurn = 13,
+  /// A step would have outrun its own speed (StepOutranItsSpeed): the metric
+  /// changes faster than the step resolves, so the step is refused.
+  OutranStep = 14
 };
 
 /// The largest TerminationReason code (for tables of counts by reason).
-constexpr int LastTerminationReason = SharpTurn;
+constexpr int LastTerminationReason = OutranStep;
 
 /**
  * A rule that ends geodesics at some points of space (tractography's stop
@@ -110,6 +113,16 @@ inline int ReasonToStopAt(const Metric& metric, const GeodesicOptions& options, 
 }
 
 /**
+ * How much longer than its nominal length a step's chord may be:
+ * StepOutranItsSpeed's bound. An RK4 step's chord is the step times the mean
+ * of its stages' velocities, which stays within a few percent of the start's
+ * wherever the step resolves the metric; twice it means the stages saw a
+ * velocity the start does not (near a nearly degenerate tensor of a
+ * sharpened or adjugate metric, one step of 0.5 mm went 31 m).
+ */
+constexpr double MaximumChordToStepRatio = 2.0;
+
+/**
  * The sampled geodesic. ArcLength is the signed Riemannian arc length from
  * the seed (negative for a backward geodesic, as vtkStreamTracer's
  * IntegrationTime); Velocities are the coordinate velocities dx/ds.
@@ -125,6 +138,29 @@ struct RIEMANNCOMMONMETRIC_EXPORT GeodesicPath
   /// Empty the path but keep its capacity, so reuse does not allocate.
   void Clear();
 };
+
+/**
+ * Whether a step from the path's last point to `x` outran its speed: its
+ * chord is longer than MaximumChordToStepRatio times its nominal Euclidean
+ * length, the start's coordinate speed |dx/ds| times `arcLength`, the step's
+ * Riemannian length. Both tracers refuse such a step (OutranStep) and do not
+ * record its point.
+ */
+RIEMANNCOMMONMETRIC_EXPORT bool StepOutranItsSpeed(
+  const GeodesicPath& path, const Vec3& x, double arcLength);
+
+/**
+ * End `path` on the face of the metric's data (Metric::InsideData) that its
+ * last step crossed: from the last recorded point (inside) towards the
+ * step's end (x, velocity, arc length, drift; outside), the point of the
+ * chord where it leaves the data, found by bisection to 1e-12 of the chord,
+ * with velocity, arc length and drift interpolated along it. Appended unless
+ * it is the last point itself; the Reason becomes OutOfData. So a traced
+ * tract ends on the volume's faces, as MRtrix's and DIPY's do, not a step
+ * beyond them.
+ */
+RIEMANNCOMMONMETRIC_EXPORT void EndOnTheDataFace(const Metric& metric, GeodesicPath& path,
+  const Vec3& x, const Vec3& velocity, double arcLength, double drift);
 
 /**
  * Scale `direction` to unit speed in g at p: v = d / sqrt(g_p(d, d)).

@@ -386,6 +386,12 @@ private:
           this->EndLane(l, UnexpectedValue);
           continue;
         }
+        if (StepOutranItsSpeed(*this->Lanes[l].Path, this->Stepped[l].head<3>(),
+              this->Lanes[l].Speed * taken[l]))
+        {
+          this->EndLane(l, OutranStep);
+          continue;
+        }
         this->Lanes[l].Tau += taken[l];
         ++this->Lanes[l].Steps;
         stepped |= Bit(l);
@@ -426,8 +432,17 @@ private:
         }
         drift = squaredSpeed / this->Lanes[l].InitialSquaredSpeed - 1.0;
       }
-      this->Lanes[l].Record(y, drift);
-      if (const int stop = ReasonToStopAt(this->TheMetric, this->Options, y.head<3>()))
+      const LaneTrace& lane = this->Lanes[l];
+      const int stop = ReasonToStopAt(this->TheMetric, this->Options, y.head<3>());
+      if (stop == OutOfData)
+      {
+        EndOnTheDataFace(this->TheMetric, *lane.Path, y.head<3>(),
+          y.tail<3>() * lane.VelocityScale, lane.Sign * lane.Speed * lane.Tau, drift);
+        this->EndLane(l, OutOfData);
+        continue;
+      }
+      lane.Record(y, drift);
+      if (stop)
       {
         this->EndLane(l, stop);
       }

@@ -45,12 +45,23 @@ struct SplineWeights
   }
 };
 
-/// The cell and fraction of grid coordinate u on an axis of n points
-/// (u in [0, n - 1]): the last point belongs to the last cell, at t = 1.
+/// The cell and fraction of grid coordinate u on an axis of n points, u in
+/// the box [-1/2, n - 1/2]: cells -1 and n - 1 reach past the outer samples
+/// (their missing neighbours are the edge's repeated).
 void CellOf(double u, int n, int& cell, double& t)
 {
-  cell = std::min(static_cast<int>(std::floor(u)), n - 2);
+  cell = std::clamp(static_cast<int>(std::floor(u)), -1, n - 1);
   t = u - cell;
+}
+
+/// The box's bounds in grid coordinates on an axis of n points.
+double LowFace()
+{
+  return -SampledTensorField::FaceMargin;
+}
+double HighFace(int n)
+{
+  return n - 1 + SampledTensorField::FaceMargin;
 }
 
 void SetIdentity(Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>* d2g)
@@ -152,7 +163,7 @@ bool SampledTensorField::Inside(const Vec3& p) const
   const Vec3 u = this->GridCoordinates(p);
   for (int a = 0; a < 3; ++a)
   {
-    if (!(u[a] >= -FaceTolerance && u[a] <= this->Grid.Dimensions[a] - 1 + FaceTolerance))
+    if (!(u[a] >= LowFace() - FaceTolerance && u[a] <= HighFace(this->Grid.Dimensions[a]) + FaceTolerance))
     {
       return false;
     }
@@ -237,17 +248,19 @@ bool SampledTensorField::EvaluateInGrid(
   for (int a = 0; a < 3; ++a)
   {
     // On a face up to the affine map's rounding: inside (as Inside() says).
-    double inBox = u[a] >= -FaceTolerance && u[a] <= n[a] - 1 + FaceTolerance
-      ? std::clamp(u[a], 0.0, n[a] - 1.0)
+    const double low = LowFace();
+    const double high = HighFace(n[a]);
+    double inBox = u[a] >= low - FaceTolerance && u[a] <= high + FaceTolerance
+      ? std::clamp(u[a], low, high)
       : u[a];
-    if (!(inBox >= 0.0 && inBox <= n[a] - 1))
+    if (!(inBox >= low && inBox <= high))
     {
       if (!this->StopOutside || std::isnan(u[a]))
       {
         return false;
       }
       // The face's value, constant along this axis.
-      inBox = std::clamp(u[a], 0.0, n[a] - 1.0);
+      inBox = std::clamp(u[a], low, high);
       continued[a] = true;
     }
     CellOf(inBox, n[a], cell[a], t[a]);

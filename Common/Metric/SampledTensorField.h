@@ -29,8 +29,11 @@
  * are g in world coordinates, six per point in VTK's order for symmetric
  * tensors (XX, YY, ZZ, XY, YZ, XZ), point index i + nx (j + ny k).
  *
- * Outside the grid's box (grid coordinates outside [0, n - 1] on an axis)
- * the field is Euclidean (g = I): Inside() says where the data holds. With
+ * The data reach the outer faces of the outer voxels, half a spacing beyond
+ * the outer samples (grid coordinates [-1/2, n - 1/2] on an axis), as a
+ * scan's voxels fill their boxes and as MRtrix and DIPY read them: there the
+ * spline runs on with the edge samples repeated. Outside that box the field
+ * is Euclidean (g = I): Inside() says where the data holds. With
  * `stopOutside` ("outside": "stop") the field is instead continued by its
  * value on the box's faces (constant along the outward axes), and
  * InsideData() is false there, so geodesics and rays stop at the first point
@@ -94,17 +97,19 @@ public:
    */
   std::string EmitGlsl(GlslBuilder& builder) const override;
 
-  /// Whether p is in the grid's box, where the samples define g.
+  /// Whether p is in the grid's box (to the outer voxels' faces), where the samples define g.
   bool Inside(const Vec3& p) const;
-  /// Inside() when rays stop outside the box, else true (g = I is data too).
+  /// How far beyond the outer samples the box reaches, in voxels: their faces.
+  static constexpr double FaceMargin = 0.5;
   /**
-   * The samples' extent, faces included: a voxel centre on a face maps to
-   * grid coordinate 0 or n - 1 only up to the rounding of the affine maps (a
-   * mask's placement and the tensors' are each read from float32 numbers),
-   * so this much (in voxels) beyond a face is on it.
+   * The box's extent, faces included: a face maps to grid coordinate -1/2
+   * or n - 1/2 only up to the rounding of the affine maps (a mask's placement
+   * and the tensors' are each read from float32 numbers), so this much (in
+   * voxels) beyond a face is on it.
    */
   static constexpr double FaceTolerance = 1e-6;
 
+  /// Inside() when rays stop outside the box, else true (g = I is data too).
   bool InsideData(const Vec3& p) const override { return !this->StopOutside || this->Inside(p); }
   bool GetStopOutside() const { return this->StopOutside; }
   /// The grid coordinates (i, j, k as reals) of world point p.

@@ -27,6 +27,7 @@ struct SplineNames
   std::string Origin;      // vec3 grid origin
   std::string ToGrid;      // mat3 W: u = W (p - origin)
   std::string LastIndex;   // vec3 (n - 1) per axis
+  std::string Margin;      // the box beyond the outer samples: SampledTensorField::FaceMargin
   bool StopOutside = false;
 };
 
@@ -48,8 +49,8 @@ std::string Prologue(const SplineNames& names)
   std::string code = "  vec3 u = " + names.ToGrid + " * (p - " + names.Origin +
     ");\n"
     "  // Beyond a face: the face's value, constant along that axis.\n"
-    "  vec3 inBox = clamp(u, vec3(0.0), " +
-    names.LastIndex +
+    "  vec3 inBox = clamp(u, vec3(-" +
+    names.Margin + "), " + names.LastIndex + " + " + names.Margin +
     ");\n"
     "  bvec3 continued = notEqual(u, inBox);\n";
   if (!names.StopOutside)
@@ -169,7 +170,7 @@ std::string EmitTexelSpline(GlslBuilder& builder, const SplineNames& names)
   builder.AddFunction("void " + name + SplineSignature + "\n{\n" + Prologue(names) +
     "  ivec3 last = ivec3(" + names.LastIndex +
     " + 0.5);\n"
-    "  ivec3 cell = min(ivec3(floor(u)), last - 1);\n"
+    "  ivec3 cell = min(ivec3(floor(u)), last);\n"
     "  vec3 t = u - vec3(cell);\n"
     "  float wx[4], wy[4], wz[4], dwx[4], dwy[4], dwz[4];\n  " +
     weights + "(t.x, continued.x, wx, dwx);\n  " + weights + "(t.y, continued.y, wy, dwy);\n  " +
@@ -231,7 +232,7 @@ std::string EmitFilteredSpline(GlslBuilder& builder, const SplineNames& names)
 
   const std::string name = builder.NewName("sampled_tensor");
   builder.AddFunction("void " + name + SplineSignature + "\n{\n" + Prologue(names) +
-    "  vec3 cell = min(floor(u), " + names.LastIndex + " - 1.0);\n  vec3 n = " + names.LastIndex +
+    "  vec3 cell = min(floor(u), " + names.LastIndex + ");\n  vec3 n = " + names.LastIndex +
     " + 1.0;\n"
     "  vec2 gx, cx, gdx, cdx, gy, cy, gdy, cdy, gz, cz, gdz, cdz;\n  " +
     axis + "(u.x, cell.x, n.x, continued.x, gx, cx, gdx, cdx);\n  " + axis +
@@ -275,7 +276,8 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
   texture.Values = this->OffDiagonalTexels;
   names.OffDiagonal = builder.AddTexture3D("tensor_off_diagonal", texture);
 
-  // Step 2: the grid's geometry as uniforms: u = W (p - origin), u in [0, n - 1].
+  // Step 2: the grid's geometry as uniforms: u = W (p - origin), the box
+  // u in [-1/2, n - 1/2] (to the outer voxels' faces).
   const Vec3 last(
     this->Grid.Dimensions[0] - 1.0, this->Grid.Dimensions[1] - 1.0, this->Grid.Dimensions[2] - 1.0);
   names.Origin = builder.AddUniform("grid_origin", "vec3",
@@ -285,14 +287,16 @@ std::string SampledTensorField::EmitGlsl(GlslBuilder& builder) const
   names.LastIndex =
     builder.AddUniform("grid_last", "vec3", std::vector<double>(last.data(), last.data() + 3));
   names.StopOutside = this->StopOutside;
+  static_assert(FaceMargin == 0.5, "the shader's box is the CPU's");
+  names.Margin = "0.5";
 
   // Step 3: where the data holds (only asked for when rays stop outside).
   if (this->StopOutside)
   {
     const std::string inside = builder.NewName("sampled_inside");
     builder.AddFunction("bool " + inside + "(vec3 p)\n{\n  vec3 u = " + names.ToGrid + " * (p - " +
-      names.Origin + ");\n  return all(greaterThanEqual(u, vec3(0.0))) && all(lessThanEqual(u, " +
-      names.LastIndex + "));\n}\n");
+      names.Origin + ");\n  return all(greaterThanEqual(u, vec3(-" + names.Margin +
+      "))) && all(lessThanEqual(u, " + names.LastIndex + " + " + names.Margin + "));\n}\n");
     builder.SetInsideDataFunction(inside);
   }
 

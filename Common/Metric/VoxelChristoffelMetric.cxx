@@ -71,9 +71,11 @@ bool VoxelChristoffelMetric::Interpolate(const Vec3& p, int first, int count, fl
   float t[3];
   for (int a = 0; a < 3; ++a)
   {
-    // The box the samples' own field has (SampledTensorField::Inside).
-    constexpr double tolerance = SampledTensorField::FaceTolerance;
-    if (!(u[a] >= -tolerance && u[a] <= n[a] - 1 + tolerance))
+    // The box the samples' own field has (SampledTensorField::Inside), to
+    // the outer voxels' faces; between an outer voxel and its face, that
+    // voxel's values.
+    constexpr double reach = SampledTensorField::FaceMargin + SampledTensorField::FaceTolerance;
+    if (!(u[a] >= -reach && u[a] <= n[a] - 1 + reach))
     {
       return false;
     }

@@ -14,6 +14,16 @@
 
 namespace riemann
 {
+int VoxelOnAxis(double u, int n)
+{
+  constexpr double tolerance = SampledTensorField::FaceTolerance;
+  if (!(u >= -0.5 - tolerance && u <= n - 0.5 + tolerance))
+  {
+    return -1;
+  }
+  return std::clamp(static_cast<int>(std::floor(u + 0.5)), 0, n - 1);
+}
+
 bool VoxelMask::Contains(const Vec3& x) const
 {
   if (this->Set.empty())
@@ -26,12 +36,12 @@ bool VoxelMask::Contains(const Vec3& x) const
   long long stride = 1;
   for (int a = 0; a < 3; ++a)
   {
-    const double nearest = std::floor(u[a] + 0.5);
-    if (!(nearest >= 0.0 && nearest < this->Dimensions[a]))
+    const int nearest = VoxelOnAxis(u[a], this->Dimensions[a]);
+    if (nearest < 0)
     {
       return false; // beyond the outer voxels' faces, or NaN
     }
-    index += stride * static_cast<long long>(nearest);
+    index += stride * nearest;
     stride *= this->Dimensions[a];
   }
   return this->Set[static_cast<std::size_t>(index)] != 0;

@@ -21,6 +21,14 @@
 namespace riemann
 {
 /**
+ * The voxel of an axis of n voxels that holds grid coordinate u (the nearest
+ * centre), or -1 beyond the outer voxels' faces (or NaN). A point up to
+ * SampledTensorField::FaceTolerance beyond a face is on it, as the sampled
+ * metric's box says: tracts end on its faces (EndOnTheDataFace) to that.
+ */
+RIEMANNCOMMONTRACTOGRAPHY_EXPORT int VoxelOnAxis(double u, int n);
+
+/**
  * A binary image on a regular grid: voxel (i, j, k) is centred at
  * Origin + Direction * (i Spacing_x, j Spacing_y, k Spacing_z), VTK's image
  * geometry. A point belongs to the voxel it is nearest to (the voxel whose

@@ -54,6 +54,8 @@ static_assert(static_cast<int>(vtkRiemannGeodesicTracer::DEGENERATE_METRIC) ==
       static_cast<int>(riemann::LowAnisotropy) &&
     static_cast<int>(vtkRiemannGeodesicTracer::SHARP_TURN) ==
       static_cast<int>(riemann::SharpTurn) &&
+    static_cast<int>(vtkRiemannGeodesicTracer::OUTRAN_STEP) ==
+      static_cast<int>(riemann::OutranStep) &&
     static_cast<int>(vtkRiemannGeodesicTracer::CROSSED_EXCLUDE) ==
       static_cast<int>(riemann::TractCrossedExclude),
   "termination codes must match the core");

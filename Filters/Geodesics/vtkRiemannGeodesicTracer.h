@@ -100,7 +100,7 @@ public:
     BOTH = 2
   };
 
-  /// vtkStreamTracer's ReasonForTermination codes (1-6) and ours (8-10).
+  /// vtkStreamTracer's ReasonForTermination codes (1-6) and ours (8-14).
   enum ReasonForTermination
   {
     OUT_OF_DOMAIN = 1,
@@ -118,7 +118,9 @@ public:
     /// Reached fractional anisotropy below StopFractionalAnisotropy.
     LOW_ANISOTROPY = 12,
     /// Turned more than MaximumAngle degrees per unit length between two steps.
-    SHARP_TURN = 13
+    SHARP_TURN = 13,
+    /// A step's chord was more than twice its nominal length: refused.
+    OUTRAN_STEP = 14
   };
 
   /// Why GetNumberOfRejectedTracts counts a tract (riemann::TractRejection).

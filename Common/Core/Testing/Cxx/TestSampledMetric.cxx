@@ -434,8 +434,9 @@ TEST(SampledMetric, NiftiAndNrrdFilesArePlacedAndOrdered)
       EXPECT_LT((MetricAt(metric, x) - Affine(x)).cwiseAbs().maxCoeff(), 1e-12)
         << voxel.transpose();
     }
-    // Just outside the rotated box: Euclidean.
-    EXPECT_EQ(MetricAt(metric, origin + axes * Vec3(-0.2, 2.0, 2.0)), Mat3::Identity());
+    // Within the outer voxels' faces the data; just beyond them, Euclidean.
+    EXPECT_NE(MetricAt(metric, origin + axes * Vec3(-0.45, 2.0, 2.0)), Mat3::Identity());
+    EXPECT_EQ(MetricAt(metric, origin + axes * Vec3(-0.55, 2.0, 2.0)), Mat3::Identity());
 
     // Sheared axes and malformed vectors are refused, saying which field.
     std::ofstream sheared(Folder() / "sheared.nhdr");

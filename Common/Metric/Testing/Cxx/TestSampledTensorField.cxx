@@ -32,11 +32,13 @@
 #include "TractStops.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <random>
 #include <vector>
 
@@ -294,10 +296,13 @@ TEST(SampledTensorField, ConvergesAtSecondOrder)
 
 TEST(SampledTensorField, OutsideTheGridIsEuclidean)
 {
+  // Samples 0.5 apart from -1 to 1: the box reaches the outer voxels'
+  // faces, half a spacing beyond, at +-1.25.
   const SampledTensorField sampled(Sample(AffineField(), 5, Vec3::Zero(), Vec3(2, 2, 2)));
-  EXPECT_TRUE(sampled.Inside(Vec3(0.99, -0.99, 0.0)));
-  EXPECT_TRUE(sampled.Inside(Vec3(1.0, 1.0, 1.0)));
-  EXPECT_FALSE(sampled.Inside(Vec3(1.01, 0.0, 0.0)));
+  EXPECT_TRUE(sampled.Inside(Vec3(1.24, -1.24, 0.0)));
+  EXPECT_TRUE(sampled.Inside(Vec3(1.25, 1.25, -1.25)));
+  EXPECT_FALSE(sampled.Inside(Vec3(1.26, 0.0, 0.0)));
+  EXPECT_FALSE(sampled.Inside(Vec3(0.0, -1.26, 0.0)));
   Mat3 g;
   Mat3Stack dg;
   std::array<Mat3Stack, 3> d2g;
@@ -319,18 +324,20 @@ TEST(SampledTensorField, StopOutsideContinuesTheFacesAndEndsEveryTracer)
   const auto metric =
     riemann::MakeSampledTensorMetric(Sample(field, 9, Vec3::Zero(), Vec3(2, 2, 2)), options);
   const SampledTensorField sampled(Sample(field, 9, Vec3::Zero(), Vec3(2, 2, 2)), true);
-  // Beyond the face x = 1: the face's value, constant along x.
-  Mat3 face;
+  // Samples 0.25 apart: the outer voxels' faces at +-1.125. Beyond the face
+  // x = 1.125: the face's value, constant along x.
+  const double face = 1.125;
+  Mat3 onFace;
   Mat3 beyond;
   Mat3Stack faceDg;
   Mat3Stack beyondDg;
-  sampled.Evaluate(Vec3(1.0, 0.3, -0.2), true, face, faceDg);
+  sampled.Evaluate(Vec3(face, 0.3, -0.2), true, onFace, faceDg);
   sampled.Evaluate(Vec3(1.7, 0.3, -0.2), true, beyond, beyondDg);
-  EXPECT_EQ(face, beyond);
+  EXPECT_EQ(onFace, beyond);
   EXPECT_EQ(beyondDg[0], Mat3::Zero());
   EXPECT_EQ(faceDg[1], beyondDg[1]);
-  EXPECT_TRUE(sampled.InsideData(Vec3(1.0, 0.3, -0.2)));
-  EXPECT_FALSE(sampled.InsideData(Vec3(1.0001, 0.3, -0.2)));
+  EXPECT_TRUE(sampled.InsideData(Vec3(face, 0.3, -0.2)));
+  EXPECT_FALSE(sampled.InsideData(Vec3(face + 1e-4, 0.3, -0.2)));
   EXPECT_TRUE(metric->InsideData(Vec3(0.2, 0.3, -0.2)));
   EXPECT_FALSE(metric->InsideData(Vec3(0.2, 0.3, -1.2)));
 
@@ -358,16 +365,24 @@ TEST(SampledTensorField, StopOutsideContinuesTheFacesAndEndsEveryTracer)
     for (const riemann::GeodesicPath* p : { &path, &packet[i] })
     {
       EXPECT_EQ(p->Reason, riemann::OutOfData);
-      ASSERT_GE(p->Points.size(), 2u);
-      EXPECT_FALSE(sampled.Inside(p->Points.back()));
-      for (std::size_t k = 0; k + 1 < p->Points.size(); ++k)
+      ASSERT_GE(p->Points.size(), 3u);
+      for (std::size_t k = 0; k < p->Points.size(); ++k)
       {
         ASSERT_TRUE(sampled.Inside(p->Points[k])) << k;
       }
-      // The last step crossed a face: less than one step of arc length out.
+      // The geodesic ends on the face its last step crossed (the chord's
+      // crossing, up to the face's tolerance of 1e-6 voxel), closer than a
+      // step to the point before.
+      const Vec3 last = p->Points.back();
+      EXPECT_GE(last.cwiseAbs().maxCoeff(), face - 1e-12);
+      EXPECT_LE(last.cwiseAbs().maxCoeff(), face + SampledTensorField::FaceTolerance * 0.25);
+      const double before = p->ArcLength[p->ArcLength.size() - 2];
+      EXPECT_GT(p->ArcLength.back(), before);
+      EXPECT_LE(p->ArcLength.back(), before + options2.Step * (1 + 1e-12));
       EXPECT_LT(p->ArcLength.back(), options2.MaximumLength);
     }
     EXPECT_EQ(path.Points.size(), packet[i].Points.size());
+    EXPECT_LT((path.Points.back() - packet[i].Points.back()).norm(), 1e-12);
   }
   // The Jacobi traces, scalar and packet.
   std::vector<riemann::JacobiSeed> jacobiSeeds;
@@ -386,6 +401,7 @@ TEST(SampledTensorField, StopOutsideContinuesTheFacesAndEndsEveryTracer)
     SCOPED_TRACE(i);
     riemann::JacobiTrace scalar;
     riemann::TraceJacobiFields(*metric, start, directions[i], options2, scalar);
+    // The Jacobi traces keep the first sample beyond the face.
     for (const riemann::JacobiTrace* t : { &scalar, &traces[i] })
     {
       EXPECT_EQ(t->Reason, riemann::OutOfData);
@@ -603,6 +619,106 @@ TEST(SampledTensorSamples, AdjugateAndSharpenedMetricsOfADiffusionTensor)
   options.Sharpening = 0.5;
   SampledTensorGrid refused = Uniform(d);
   EXPECT_NE(riemann::PrepareTensorSamples(refused, options).find("sharpening"), std::string::npos);
+}
+
+TEST(SampledTensorSamples, StepsThatWouldJumpAreRefusedAndNoPointLeavesTheVolume)
+{
+  // Tensors as a noisy fit leaves them after "repair": "clamp": each voxel's
+  // eigenvalues log-uniform over [1e-3, 1] (the clamp's floor is 1e-3 of the
+  // largest), its axes at random. Their sharpened and adjugate metrics are
+  // nearly degenerate in places, next to voxels that are not: the
+  // Christoffel symbols are huge there, and an RK4 step could land far from
+  // where it started (issue 41: on DIPY's small_64D, a point 28 m from a
+  // 20 mm scan).
+  std::mt19937 random(41);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> exponent(-3.0, 0.0);
+  SampledTensorGrid grid = Sample([](const Vec3&) { return Mat3(Mat3::Identity()); }, 9,
+    Vec3::Zero(), Vec3(2, 2, 2));
+  for (int p = 0; p < 729; ++p)
+  {
+    const Mat3 axes =
+      Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random))
+        .normalized()
+        .toRotationMatrix();
+    const Vec3 eigenvalues(std::pow(10.0, exponent(random)), std::pow(10.0, exponent(random)),
+      std::pow(10.0, exponent(random)));
+    SetSample(grid, p, axes * eigenvalues.asDiagonal() * axes.transpose());
+  }
+  const SampledTensorField box(grid);
+  std::vector<riemann::GeodesicSeed> seeds;
+  for (int i = 0; i < 256; ++i)
+  {
+    riemann::GeodesicSeed seed;
+    seed.Point = Vec3(0.6 * normal(random), 0.6 * normal(random), 0.3 * normal(random))
+                   .cwiseMax(Vec3::Constant(-1.0))
+                   .cwiseMin(Vec3::Constant(1.0));
+    seed.Velocity = Vec3(normal(random), normal(random), normal(random));
+    seed.Backward = i % 2 == 1;
+    seeds.push_back(seed);
+  }
+  riemann::GeodesicOptions trace;
+  trace.Step = 0.05;
+  trace.MaximumLength = 6.0;
+  for (auto kind : { riemann::TensorMetricKind::Sharpened, riemann::TensorMetricKind::Adjugate,
+         riemann::TensorMetricKind::Inverse })
+  {
+    for (bool voxels : { false, true })
+    {
+      SCOPED_TRACE(std::string(riemann::TensorMetricName(kind)) + (voxels ? " voxels" : " spline"));
+      riemann::SampledTensorOptions options;
+      options.Kind = kind;
+      options.StopOutside = true;
+      options.ChristoffelAtVoxels = voxels;
+      const auto metric = riemann::MakeSampledTensorMetric(grid, options);
+      std::vector<riemann::GeodesicSeed> unit = seeds;
+      for (riemann::GeodesicSeed& seed : unit)
+      {
+        ASSERT_TRUE(riemann::UnitSpeedVelocity(*metric, seed.Point, seed.Velocity, seed.Velocity));
+      }
+      std::vector<riemann::GeodesicPath> packet(unit.size());
+      riemann::TraceGeodesics(*metric, unit.data(), unit.size(), trace, packet.data());
+      int refused = 0;
+      double worst = 0.0; // the largest chord over nominal length of a step
+      for (std::size_t i = 0; i < unit.size(); ++i)
+      {
+        riemann::GeodesicPath scalar;
+        riemann::TraceGeodesic(*metric, unit[i].Point, unit[i].Velocity, trace, scalar, unit[i].Backward);
+        ASSERT_EQ(scalar.Reason, packet[i].Reason) << i;
+        ASSERT_EQ(scalar.Points.size(), packet[i].Points.size()) << i;
+        refused += scalar.Reason == riemann::OutranStep;
+        for (std::size_t k = 0; k < scalar.Points.size(); ++k)
+        {
+          // Every point in the volume (its faces up to their tolerance)...
+          ASSERT_TRUE(box.Inside(scalar.Points[k])) << i << " " << k;
+          if (k == 0)
+          {
+            continue;
+          }
+          // ... and every step's chord within twice its nominal length.
+          const double chord = (scalar.Points[k] - scalar.Points[k - 1]).norm();
+          const double nominal = scalar.Velocities[k - 1].norm() *
+            std::abs(scalar.ArcLength[k] - scalar.ArcLength[k - 1]);
+          worst = std::max(worst, chord / nominal);
+        }
+      }
+      EXPECT_LE(worst, riemann::MaximumChordToStepRatio * (1 + 1e-12));
+      // The adjugate's g spans six orders of magnitude between neighbouring
+      // voxels here: unchecked, one of its steps went 2.8e8 times its length
+      // (spline; 1.8e8 on the voxels' symbols), so some must be refused.
+      // (Sharpened and D^-1 stayed under 1.02 times their steps.)
+      if (kind == riemann::TensorMetricKind::Adjugate)
+      {
+        EXPECT_GT(refused, 0);
+      }
+      std::cout << riemann::TensorMetricName(kind) << (voxels ? " voxels" : " spline") << ": "
+                << refused << " of " << unit.size()
+                << " geodesics refused a step; the longest chord kept: " << worst
+                << " times its step\n";
+    }
+  }
+  EXPECT_STREQ(riemann::TerminationReasonName(riemann::OutranStep),
+    "outran its step (the metric changes faster than the step resolves)");
 }
 
 TEST(SampledTensorSamples, PositiveSamplesWithoutOptionsAreKeptBitwise)
