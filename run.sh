@@ -65,6 +65,9 @@ PACKAGES=(
   # and .tck) and the DIPY comparison (Examples/tractography_dipy.py,
   # Testing/Benchmarks); never needed by the library.
   python3-dipy python3-nibabel
+  # MRtrix3: tckgen and dwi2tensor for Testing/Benchmarks/tractography_vs_mrtrix.py
+  # (the benchmark only; no test or library needs it).
+  mrtrix3
   # ParaView 5.11 and what its plugin build needs (the plugin RiemannVTK,
   # ParaView/). Installed without recommends: python3-paraview, recommended,
   # conflicts with python3-vtk9 (its hierarchy files are unpacked instead,

@@ -104,10 +104,11 @@ vtkSmartPointer<vtkImageData> ReadSeedMask(const TraceArguments& args, vtkIdType
     throw Failure(std::string("--seed-mask: ") + e.what());
   }
   vtkDataArray* values = mask->GetPointData()->GetScalars();
+  const long long seedsPerVoxel = args.Settings->Integer("SeedsPerVoxel");
   count = 0;
   for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
   {
-    count += values->GetTuple1(i) != 0.0 ? args.Settings->Integer("SeedsPerVoxel") : 0;
+    count += values->GetTuple1(i) != 0.0 ? seedsPerVoxel : 0;
   }
   if (count == 0)
   {

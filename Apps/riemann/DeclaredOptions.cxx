@@ -152,27 +152,31 @@ nlohmann::json DeclaredOptions::Given() const
   nlohmann::json given = nlohmann::json::object();
   for (const auto& entry : this->Options)
   {
-    if (entry.second->count() == 0)
+    if (entry.second->count() > 0)
     {
-      continue;
+      given[entry.first] = this->GivenValue(entry.first);
     }
-    const SettingDeclaration* setting = this->Table.Find(entry.first);
-    const std::string& text = this->Texts.at(entry.first);
-    std::string error; // checked while parsing (DeclaredCheck)
-    given[entry.first] = setting->Type == SettingDeclaration::Boolean && text.empty()
-      ? nlohmann::json(true)
-      : ParseSettingText(*setting, text, error);
   }
   return given;
 }
 
+nlohmann::json DeclaredOptions::GivenValue(const std::string& name) const
+{
+  const SettingDeclaration* setting = this->Table.Find(name);
+  const std::string& text = this->Texts.at(name);
+  std::string error; // checked while parsing (DeclaredCheck)
+  return setting->Type == SettingDeclaration::Boolean && text.empty()
+    ? nlohmann::json(true)
+    : ParseSettingText(*setting, text, error);
+}
+
 nlohmann::json DeclaredOptions::Value(const std::string& name) const
 {
-  const nlohmann::json given = this->Given();
-  const auto found = given.find(name);
-  if (found != given.end())
+  // This option's text alone (not all of Given(): callers may ask in a loop).
+  const auto option = this->Options.find(name);
+  if (option != this->Options.end() && option->second->count() > 0)
   {
-    return *found;
+    return this->GivenValue(name);
   }
   return this->Defaults.at(name);
 }

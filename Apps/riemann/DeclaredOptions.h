@@ -63,6 +63,9 @@ public:
 private:
   const SettingTable& Table;
   nlohmann::json Defaults;
+  /// The parsed value of the option `name`, which was given.
+  nlohmann::json GivenValue(const std::string& name) const;
+
   /// The text typed for each option (std::map: CLI11 keeps references to its values).
   std::map<std::string, std::string> Texts;
   std::map<std::string, CLI::Option*> Options;
