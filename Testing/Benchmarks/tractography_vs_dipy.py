@@ -27,10 +27,11 @@ Cases:
    3, 16,065 seeds); riemann reads them, with DIPY's initial direction at
    each (its voxel's peak, in world axes), from a CSV (`--seeds`), since
    `--seeds-per-voxel` spreads its seeds at random. The 3,146 seeds beyond
-   the outermost voxel centres make no tract in either (riemann's volume
-   ends at those centres; DIPY's 4,646 untraced seeds are all but 118 in
-   the outer layer of voxels), nor do 211 more in riemann, where the
-   spline's FA is below 0.2 at the seed.
+   the outermost voxel centres made no tract in riemann when these figures
+   were measured (its volume then ended at those centres; it now reaches
+   the outer voxels' faces, as DIPY's and MRtrix's do); DIPY's 4,646
+   untraced seeds are all but 118 in the outer layer of voxels; 211 more
+   made none in riemann, where the spline's FA is below 0.2 at the seed.
 3. synthetic: 64 x 64 x 32 voxels of 2 mm (128 x 128 x 64 mm), FA 0.80
    everywhere (the FA stop never acts), fibres along x waving in y
    (direction (1, 0.8 cos(2 pi x / 40 mm), 0)); seeds at the centres of
