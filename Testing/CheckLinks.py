@@ -49,7 +49,8 @@ THIRD_PARTY = {
     "RiemannRenderingMeshes": ["libembree3"],
     "RiemannRenderingImageIO": ["libOpenImageIO", "libOpenImageIO_Util"],
     "RiemannCommonCore": [],
-    "RiemannIOMedical": ["libz"],
+    # libtbb: the tracts of a trace are joined in parallel (vtkSMPTools).
+    "RiemannIOMedical": ["libz", "libtbb"],
     "RiemannIOFilm": [],
     "RiemannFiltersGeodesics": ["libtbb"],
     "RiemannFiltersFields": ["libtbb"],
