@@ -54,15 +54,6 @@ void CellOf(double u, int n, int& cell, double& t)
   t = u - cell;
 }
 
-/// The box's bounds in grid coordinates on an axis of n points.
-double LowFace()
-{
-  return -SampledTensorField::FaceMargin;
-}
-double HighFace(int n)
-{
-  return n - 1 + SampledTensorField::FaceMargin;
-}
 
 void SetIdentity(Mat3& g, Mat3Stack& dg, std::array<Mat3Stack, 3>* d2g)
 {
@@ -163,7 +154,7 @@ bool SampledTensorField::Inside(const Vec3& p) const
   const Vec3 u = this->GridCoordinates(p);
   for (int a = 0; a < 3; ++a)
   {
-    if (!(u[a] >= LowFace() - FaceTolerance && u[a] <= HighFace(this->Grid.Dimensions[a]) + FaceTolerance))
+    if (!WithinFaces(u[a], this->Grid.Dimensions[a]))
     {
       return false;
     }
@@ -248,11 +239,9 @@ bool SampledTensorField::EvaluateInGrid(
   for (int a = 0; a < 3; ++a)
   {
     // On a face up to the affine map's rounding: inside (as Inside() says).
-    const double low = LowFace();
-    const double high = HighFace(n[a]);
-    double inBox = u[a] >= low - FaceTolerance && u[a] <= high + FaceTolerance
-      ? std::clamp(u[a], low, high)
-      : u[a];
+    const double low = -FaceMargin;
+    const double high = n[a] - 1 + FaceMargin;
+    double inBox = WithinFaces(u[a], n[a]) ? std::clamp(u[a], low, high) : u[a];
     if (!(inBox >= low && inBox <= high))
     {
       if (!this->StopOutside || std::isnan(u[a]))

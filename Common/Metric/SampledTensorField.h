@@ -109,6 +109,14 @@ public:
    */
   static constexpr double FaceTolerance = 1e-6;
 
+  /// Whether grid coordinate u is in the box on an axis of n samples, its
+  /// faces included (to FaceTolerance): the one test of the box, which
+  /// Inside(), the voxels' symbols and tractography's masks share.
+  static bool WithinFaces(double u, int n)
+  {
+    return u >= -FaceMargin - FaceTolerance && u <= n - 1 + FaceMargin + FaceTolerance;
+  }
+
   /// Inside() when rays stop outside the box, else true (g = I is data too).
   bool InsideData(const Vec3& p) const override { return !this->StopOutside || this->Inside(p); }
   bool GetStopOutside() const { return this->StopOutside; }

@@ -74,8 +74,7 @@ bool VoxelChristoffelMetric::Interpolate(const Vec3& p, int first, int count, fl
     // The box the samples' own field has (SampledTensorField::Inside), to
     // the outer voxels' faces; between an outer voxel and its face, that
     // voxel's values.
-    constexpr double reach = SampledTensorField::FaceMargin + SampledTensorField::FaceTolerance;
-    if (!(u[a] >= -reach && u[a] <= n[a] - 1 + reach))
+    if (!SampledTensorField::WithinFaces(u[a], n[a]))
     {
       return false;
     }

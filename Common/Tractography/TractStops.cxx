@@ -16,8 +16,7 @@ namespace riemann
 {
 int VoxelOnAxis(double u, int n)
 {
-  constexpr double tolerance = SampledTensorField::FaceTolerance;
-  if (!(u >= -0.5 - tolerance && u <= n - 0.5 + tolerance))
+  if (!SampledTensorField::WithinFaces(u, n))
   {
     return -1;
   }
