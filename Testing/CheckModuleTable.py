@@ -25,6 +25,7 @@ WORDS = {
     "PkgConfig::GINAC": "GiNaC",
     "embree": "Embree",
     "OpenImageIO::OpenImageIO": "OpenImageIO",
+    "Threads::Threads": "Threads",
 }
 KINDS = {"plain library": "library", "VTK module": "vtk-module"}
 EDGE = re.compile(r"^\s*(\w+)\s+(-->|-\.->)\s+(\w+)\s*$")

@@ -4,8 +4,7 @@
 #include "Metric.h"
 #include "RiemannScalarImages.h"
 #include "RiemannTensorFileChecks.h"
-#include "SampledTensorField.h"
-#include "TensorMetric.h"
+#include "SampledTensorSamples.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -93,18 +92,15 @@ TractReference ChooseTrkReference(
   {
     image = ReadRegion("--reference", args.Reference);
   }
-  else if (const auto* tensor = dynamic_cast<const TensorMetric*>(metric->GetMetric().get()))
+  else if (const SampledTensorField* sampled = SampledFieldOf(*metric->GetMetric()))
   {
-    if (const auto* sampled = dynamic_cast<const SampledTensorField*>(&tensor->GetField()))
-    {
-      const SampledTensorGrid& grid = sampled->GetGrid();
-      reference.Dimensions = grid.Dimensions;
-      reference.Spacing = grid.Spacing;
-      reference.Origin = grid.Origin;
-      reference.Direction = grid.Direction;
-      AsTheFileOrdersItsVoxels(SampledMetricFile(metric), reference);
-      return reference;
-    }
+    const SampledTensorGrid& grid = sampled->GetGrid();
+    reference.Dimensions = grid.Dimensions;
+    reference.Spacing = grid.Spacing;
+    reference.Origin = grid.Origin;
+    reference.Direction = grid.Direction;
+    AsTheFileOrdersItsVoxels(SampledMetricFile(metric), reference);
+    return reference;
   }
   if (!image)
   {

@@ -75,10 +75,11 @@ bool vtkRiemannMetric::SetDefinitionIn(const char* json, const std::string& base
 }
 
 bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName, bool inverse,
-  double scale, bool repair, const char* outside)
+  double scale, bool repair, const char* outside, const char* christoffel)
 {
   std::shared_ptr<const riemann::Metric> metric;
   const std::string outsideName = outside ? outside : "euclidean";
+  const std::string reading = christoffel ? christoffel : "voxels";
   try
   {
     if (outsideName != "euclidean" && outsideName != "stop")
@@ -86,11 +87,17 @@ bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName,
       throw std::invalid_argument(
         "outside: expected \"euclidean\" or \"stop\", got \"" + outsideName + "\"");
     }
+    if (reading != "voxels" && reading != "spline")
+    {
+      throw std::invalid_argument(
+        "christoffel: expected \"voxels\" or \"spline\", got \"" + reading + "\"");
+    }
     riemann::SampledTensorOptions options;
     options.Kind = inverse ? riemann::TensorMetricKind::Inverse : riemann::TensorMetricKind::Tensor;
     options.Scale = scale;
     options.Repair = repair;
     options.StopOutside = outsideName == "stop";
+    options.ChristoffelAtVoxels = reading == "voxels";
     metric = riemann::MakeSampledTensorMetric(
       riemann::TensorGridFromImage(image, arrayName ? arrayName : ""), options);
     const std::string invalid = metric->Validate();
@@ -110,7 +117,8 @@ bool vtkRiemannMetric::SetTensorData(vtkImageData* image, const char* arrayName,
   definition << "{\"type\": \"sampled\", \"file\": \"(in memory)\", \"array\": \""
              << (arrayName ? arrayName : "") << "\", \"inverse\": " << (inverse ? "true" : "false")
              << ", \"scale\": " << scale << ", \"repair\": \"" << (repair ? "clamp" : "none")
-             << "\", \"outside\": \"" << outsideName << "\"}";
+             << "\", \"outside\": \"" << outsideName << "\", \"christoffel\": \"" << reading
+             << "\"}";
   this->Definition = definition.str();
   this->BaseDirectory.clear();
   this->FromTensorData = true;

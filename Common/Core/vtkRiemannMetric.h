@@ -75,13 +75,17 @@ public:
    * multiplies the metric, `repair` clamps eigenvalues that are not
    * positive to a floor instead of refusing the data, and `outside` is
    * "euclidean" (g = I beyond the volume) or "stop" (geodesics and rays stop
-   * where they leave it, TerminationReason 10). Returns false, and
-   * GetLastError() says why (how many samples are bad and where), on bad
-   * data. The definition text then records the options; the data are not
-   * re-read at SetTime (nothing of them is animated).
+   * where they leave it, TerminationReason 10), and `christoffel` how
+   * geodesics and rays read g and its derivatives: "voxels" (sampled at the
+   * voxels, trilinear: the fast reading, on the CPU and in the shader) or
+   * "spline" (the spline's own, exact). Returns false, and GetLastError()
+   * says why (how many samples are bad and where), on bad data. The
+   * definition text then records the options; the data are not re-read at
+   * SetTime (nothing of them is animated).
    */
   bool SetTensorData(vtkImageData* image, const char* arrayName, bool inverse = false,
-    double scale = 1.0, bool repair = false, const char* outside = "euclidean");
+    double scale = 1.0, bool repair = false, const char* outside = "euclidean",
+    const char* christoffel = "voxels");
 
   ///@{
   /**

@@ -278,4 +278,14 @@ std::shared_ptr<const Metric> MakeSampledTensorMetric(
   }
   return exact;
 }
+
+const SampledTensorField* SampledFieldOf(const Metric& metric)
+{
+  if (const auto* voxels = dynamic_cast<const VoxelChristoffelMetric*>(&metric))
+  {
+    return &voxels->GetField();
+  }
+  const auto* tensor = dynamic_cast<const TensorMetric*>(&metric);
+  return tensor ? dynamic_cast<const SampledTensorField*>(&tensor->GetField()) : nullptr;
+}
 } // namespace riemann

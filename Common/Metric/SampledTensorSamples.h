@@ -86,11 +86,11 @@ struct RIEMANNCOMMONMETRIC_EXPORT SampledTensorOptions
   /// "outside": "stop": geodesics and rays stop where they leave the volume
   /// (else g = I there).
   bool StopOutside = false;
-  /// "christoffel": "voxels": geodesics run on the Christoffel symbols
-  /// sampled at the voxels and interpolated trilinearly
-  /// (VoxelChristoffelMetric: tractography's fast path); else ("spline")
-  /// on the spline's own.
-  bool ChristoffelAtVoxels = false;
+  /// "christoffel": "voxels" (the default): geodesics and rays, on the CPU
+  /// and the GPU, run on g and its derivatives sampled at the voxels and
+  /// interpolated trilinearly (VoxelChristoffelMetric: the fast reading);
+  /// else ("spline") on the spline's own, exact.
+  bool ChristoffelAtVoxels = true;
 
   /// What is wrong with the options, or "".
   std::string Check() const;
@@ -132,6 +132,14 @@ RIEMANNCOMMONMETRIC_EXPORT std::string PrepareTensorSamples(SampledTensorGrid& g
  */
 RIEMANNCOMMONMETRIC_EXPORT std::shared_ptr<const Metric> MakeSampledTensorMetric(
   SampledTensorGrid grid, const SampledTensorOptions& options);
+
+/**
+ * The samples' field of a metric MakeSampledTensorMetric made, read either
+ * way ("christoffel": "voxels" or "spline"); null for any other metric.
+ * Where tractography finds the grid, its placement and the diffusion
+ * exponent.
+ */
+RIEMANNCOMMONMETRIC_EXPORT const SampledTensorField* SampledFieldOf(const Metric& metric);
 } // namespace riemann
 
 #endif

@@ -186,12 +186,11 @@ std::string ConstantTensorField::EmitGlsl(GlslBuilder& builder) const
   return name;
 }
 
-void TensorMetric::EmitGlsl(GlslBuilder& builder) const
+void EmitTensorMetricGlsl(GlslBuilder& builder, const std::string& field)
 {
   // The general formula contracted with v twice:
   //   Gamma_kij v^i v^j = ((sum_i v^i d_i g) v)_k - 1/2 v^T (d_k g) v,
   //   a = -g^-1 of that. Positive definiteness by Sylvester's criterion.
-  const std::string field = this->Field->EmitGlsl(builder);
   const std::string positive =
     "  return g[0][0] > 0.0 && g[0][0] * g[1][1] - g[0][1] * g[1][0] > 0.0 &&\n"
     "    determinant(g) > 0.0;\n";
@@ -210,5 +209,10 @@ void TensorMetric::EmitGlsl(GlslBuilder& builder) const
     "    0.5 * vec3(dot(v, dg0 * v), dot(v, dg1 * v), dot(v, dg2 * v));\n"
     "  a = -(inverse(g) * w);\n" +
     positive + "}\n");
+}
+
+void TensorMetric::EmitGlsl(GlslBuilder& builder) const
+{
+  EmitTensorMetricGlsl(builder, this->Field->EmitGlsl(builder));
 }
 } // namespace riemann

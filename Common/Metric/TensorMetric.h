@@ -107,6 +107,15 @@ protected:
 private:
   std::shared_ptr<const TensorField> Field;
 };
+
+/**
+ * rt_metric_tensor and rt_metric_acceleration (GlslSource.h) of the metric
+ * whose g and first derivatives the GLSL function `field` gives (the
+ * signature of TensorField::EmitGlsl): the general formula of the
+ * Christoffel symbols, contracted with v twice. TensorMetric's shader, and
+ * that of metrics that read g and dg another way (VoxelChristoffelMetric).
+ */
+RIEMANNCOMMONMETRIC_EXPORT void EmitTensorMetricGlsl(GlslBuilder& builder, const std::string& field);
 } // namespace riemann
 
 #endif

@@ -605,10 +605,10 @@ std::shared_ptr<const Metric> SampledMetric(const Json& root, const std::string&
   options.StopOutside = ChoiceOr(root, "outside", path,
                           { { "euclidean", "g = I outside the volume" },
                             { "stop", "geodesics and rays stop where they leave it" } }) == "stop";
-  options.ChristoffelAtVoxels = ChoiceOr(root, "christoffel", path,
-                                  { { "spline", "the spline's own, exact" },
-                                    { "voxels", "sampled at the voxels, trilinear: faster" } }) ==
-    "voxels";
+  options.ChristoffelAtVoxels =
+    ChoiceOr(root, "christoffel", path,
+      { { "voxels", "g and its derivatives sampled at the voxels, trilinear: fast, the default" },
+        { "spline", "the spline's own, exact" } }) == "voxels";
   const std::string frame = ChoiceOr(root, "frame", path,
     { { "world", "tensors in the axes the file places its voxels in" },
       { "fsl", "NIfTI tensors in FSL's voxel axes, as dtifit writes them" } });

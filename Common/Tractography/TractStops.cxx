@@ -1,9 +1,7 @@
 #include "TractStops.h"
 
 #include "Metric.h"
-#include "SampledTensorField.h"
-#include "TensorMetric.h"
-#include "VoxelChristoffelMetric.h"
+#include "SampledTensorSamples.h"
 
 #include <Eigen/LU>
 
@@ -59,20 +57,9 @@ double FractionalAnisotropy(const Vec3& eigenvalues)
 
 double DiffusionExponentOf(const Metric& metric)
 {
-  // A sampled metric's (through the fast path's wrapper too), else -1.
-  const Metric* exact = &metric;
-  if (const auto* voxels = dynamic_cast<const VoxelChristoffelMetric*>(exact))
-  {
-    exact = &voxels->GetExact();
-  }
-  if (const auto* tensorMetric = dynamic_cast<const TensorMetric*>(exact))
-  {
-    if (const auto* sampled = dynamic_cast<const SampledTensorField*>(&tensorMetric->GetField()))
-    {
-      return sampled->GetDiffusionExponent();
-    }
-  }
-  return -1.0;
+  // A sampled metric's (read either way), else -1.
+  const SampledTensorField* sampled = SampledFieldOf(metric);
+  return sampled ? sampled->GetDiffusionExponent() : -1.0;
 }
 
 namespace

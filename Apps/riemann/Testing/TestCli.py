@@ -888,12 +888,15 @@ class TractographyTests(TempDirTest):
                 self.assertFalse(os.path.exists(out))
 
     def diagonal(self, scale):
-        """The diagonal of g at a background point of the phantom, as info prints it."""
+        """The diagonal of g at a background point of the phantom, as info prints
+        it, read by the spline, which averages 64 voxels: at this point the
+        default trilinear reading of 8 is off 1 by 1.2%, the spline by 0.3%."""
         import re
         volume = os.path.abspath(os.path.join(DATA, "phantom", "fibre-phantom.vti"))
         metric = os.path.join(self.dir, "m.json")
         with open(metric, "w") as f:
-            f.write('{"type": "sampled", "file": "%s", "array": "Tensors"%s}' % (volume, scale))
+            f.write('{"type": "sampled", "file": "%s", "array": "Tensors", "christoffel": "spline"%s}'
+                    % (volume, scale))
         status, out, err = run("info", "-m", metric, "--point", "0.3,-0.2,0.1")
         self.assertEqual(status, 0, err)
         rows = re.findall(r"\[([^\]]*)\]", out.split("g^ij")[0].split("g_ij")[1])

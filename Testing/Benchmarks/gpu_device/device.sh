@@ -14,6 +14,7 @@
 # real libLLVM> RIEMANN_CLIENT_GALLIUM=llvmpipe RIEMANN_SMALL=1 (64x36 benchmarks, short test filters;
 # RIEMANN_SMALL_TESTS=0: whole test binaries all the same). RIEMANN_ONLY=paths:
 # the OpenGL tests and the two GPU paths' benchmark, nothing else.
+# RIEMANN_ONLY=sampled: the sampled lens's GPU-vs-CPU tests, then that benchmark.
 set -u
 REPO=$(pwd)
 OUT=${OUT:-/tmp/riemann-out}
@@ -177,6 +178,23 @@ EOF
       step "RiemannRenderingOpenGLTests (whole)" 90 "$B/bin/RiemannRenderingOpenGLTests" \
         --gtest_output=xml:"$OUT/gtest_opengl.xml" >>"$OUT/tests.log" 2>&1)
     grep -E '^\[ *(FAILED|PASSED) *\]|^\[==========\]' "$OUT/tests.log"
+    grep -A6 'Failure' "$OUT/tests.log" | head -60
+    step "RiemannGpuPathsBenchmark ${W}x${H}" 600 \
+      $so "$B/bin/RiemannGpuPathsBenchmark" --width $W --height $H --repetitions 3 --data "$data"
+    return
+  fi
+  # RIEMANN_ONLY=sampled: the sampled metrics' check. The GPU's pictures of
+  # the sampled lens (both readings of "christoffel") against the CPU
+  # tracer's, then the two paths' benchmark, whose one-bump grid and sampled
+  # lens ("voxels") rows come first and the exact spline's last.
+  if [ "${RIEMANN_ONLY:-}" = sampled ]; then
+    export RIEMANN_DATA_DIR="$data" RIEMANN_TEST_OUTPUT_DIR=/tmp/riemann-test-out
+    mkdir -p "$RIEMANN_TEST_OUTPUT_DIR"
+    (cd "$RIEMANN_TEST_OUTPUT_DIR" &&
+      step "sampled GPU-vs-CPU tests" 90 "$B/bin/RiemannRenderingCPUTests" \
+        --gtest_filter='CPURayTracer.Sampled*' \
+        --gtest_output=xml:"$OUT/gtest_sampled.xml" >>"$OUT/tests.log" 2>&1)
+    grep -E '^\[ *(OK|FAILED|PASSED) *\]|^sampled lens|^\[==========\]' "$OUT/tests.log"
     grep -A6 'Failure' "$OUT/tests.log" | head -60
     step "RiemannGpuPathsBenchmark ${W}x${H}" 600 \
       $so "$B/bin/RiemannGpuPathsBenchmark" --width $W --height $H --repetitions 3 --data "$data"

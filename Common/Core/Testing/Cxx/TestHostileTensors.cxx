@@ -176,7 +176,9 @@ TEST(HostileTensors, GzipNrrdIsReadWhole)
           riemann::Mat3 g;
           ASSERT_TRUE(metric->GetMetric()->Tensor(riemann::Vec3(x, y, z), g));
           const riemann::Mat3 expected = riemann::Vec3(2, 3, 4).asDiagonal();
-          EXPECT_LT((g - expected).cwiseAbs().maxCoeff(), 1e-12) << x << ", " << y << ", " << z;
+          // The default reading ("christoffel": "voxels") interpolates the
+          // samples in float; a tuple read as zero would be off by 2 or more.
+          EXPECT_LT((g - expected).cwiseAbs().maxCoeff(), 1e-6) << x << ", " << y << ", " << z;
           ++checked;
         }
       }

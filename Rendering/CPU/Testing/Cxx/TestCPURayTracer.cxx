@@ -795,13 +795,17 @@ TEST(CPURayTracer, ErrorsGiveEmptyOutput)
 TEST(CPURayTracer, SampledMetricsRenderOnTheGpuAsOnTheCpu)
 {
   // The showcase's lens scene through the sampled lens (24^3 samples), at
-  // 96 x 72 pixels, the same tolerances as the shipped scenes. "euclidean":
-  // the volume [-4, 4]^3 in front of the observer. "stop": the observer
-  // inside [-6, 10]^3, rays ending at its faces (the floor beyond them is
-  // background). Measured on llvmpipe: mean 0.0007 and 0.0003 of 255, 99th
-  // percentile 0 (the GPU's g is the CPU's spline in float). The same with
-  // the spline read by trilinear filtering (FilteredTextureReads): mean
-  // 0.0006 and 0.0003 on llvmpipe, whose filter weights are float.
+  // 96 x 72 pixels, the same tolerances as the shipped scenes, for both
+  // readings of the "christoffel" key. "euclidean": the volume [-4, 4]^3 in
+  // front of the observer. "stop": the observer inside [-6, 10]^3, rays
+  // ending at its faces (the floor beyond them is background).
+  // - "spline", measured on llvmpipe: mean 0.0007 and 0.0003 of 255, 99th
+  //   percentile 0 (the GPU's g is the CPU's spline in float); the same with
+  //   the spline read by trilinear filtering (FilteredTextureReads): mean
+  //   0.0006 and 0.0003 on llvmpipe, whose filter weights are float.
+  // - "voxels" (the default, six filtered reads an evaluation): see the
+  //   printed statistics; llvmpipe's float weights make the GPU's g and dg
+  //   the CPU's trilinear ones to float rounding.
   const int width = 96;
   const int height = 72;
   vtkNew<vtkRiemannScene> scene;
@@ -814,40 +818,46 @@ TEST(CPURayTracer, SampledMetricsRenderOnTheGpuAsOnTheCpu)
     double High;
     int MinimumStopped;
   };
-  for (const Case& c : { Case{ "euclidean", -4.0, 4.0, 0 }, Case{ "stop", -6.0, 10.0, 1000 } })
+  for (const char* reading : { "spline", "voxels" })
   {
-    SCOPED_TRACE(c.Outside);
-    vtkNew<vtkRiemannMetric> metric;
-    ASSERT_TRUE(metric->SetTensorData(
-      SampledLensImage(24, c.Low, c.High), "Tensors", false, 1.0, false, c.Outside))
-      << metric->GetLastError();
-    ErrorObserver* gpuErrors = nullptr;
-    const std::vector<unsigned char> gpu = GpuPixels(metric, scene, width, height, &gpuErrors);
-    ASSERT_TRUE(gpuErrors->Messages.empty()) << gpuErrors->All();
+    for (const Case& c : { Case{ "euclidean", -4.0, 4.0, 0 }, Case{ "stop", -6.0, 10.0, 1000 } })
+    {
+      const std::string label = std::string("sampled lens, ") + reading + ", outside " + c.Outside;
+      SCOPED_TRACE(label);
+      vtkNew<vtkRiemannMetric> metric;
+      ASSERT_TRUE(metric->SetTensorData(
+        SampledLensImage(24, c.Low, c.High), "Tensors", false, 1.0, false, c.Outside, reading))
+        << metric->GetLastError();
+      ErrorObserver* gpuErrors = nullptr;
+      const std::vector<unsigned char> gpu = GpuPixels(metric, scene, width, height, &gpuErrors);
+      ASSERT_TRUE(gpuErrors->Messages.empty()) << gpuErrors->All();
 
-    vtkNew<vtkRiemannCPURayTracer> tracer;
-    ErrorObserver cpuErrors(tracer);
-    TraceSceneOnTheCpu(tracer, metric, scene, width, height);
-    ASSERT_TRUE(cpuErrors.Messages.empty()) << cpuErrors.All();
-    const std::vector<unsigned char> cpu = CpuPixels(tracer->GetOutput());
-    ExpectTheGpusPicture(gpu, cpu, std::string("sampled lens, outside ") + c.Outside);
-    const std::vector<unsigned char> filtered =
-      GpuPixels(metric, scene, width, height, &gpuErrors, true);
-    ASSERT_TRUE(gpuErrors->Messages.empty()) << gpuErrors->All();
-    ExpectTheGpusPicture(
-      filtered, cpu, std::string("sampled lens, filtered reads, outside ") + c.Outside);
-    // Rays end at the volume's faces with "stop", never with "euclidean".
-    vtkDataArray* reasons = tracer->GetOutput()->GetPointData()->GetArray("ReasonForTermination");
-    ASSERT_NE(reasons, nullptr);
-    int stopped = 0;
-    for (vtkIdType i = 0; i < reasons->GetNumberOfTuples(); ++i)
-    {
-      stopped += reasons->GetTuple1(i) == riemann::OutOfData ? 1 : 0;
-    }
-    EXPECT_GE(stopped, c.MinimumStopped);
-    if (c.MinimumStopped == 0)
-    {
-      EXPECT_EQ(stopped, 0);
+      vtkNew<vtkRiemannCPURayTracer> tracer;
+      ErrorObserver cpuErrors(tracer);
+      TraceSceneOnTheCpu(tracer, metric, scene, width, height);
+      ASSERT_TRUE(cpuErrors.Messages.empty()) << cpuErrors.All();
+      const std::vector<unsigned char> cpu = CpuPixels(tracer->GetOutput());
+      ExpectTheGpusPicture(gpu, cpu, label);
+      if (std::string(reading) == "spline")
+      {
+        const std::vector<unsigned char> filtered =
+          GpuPixels(metric, scene, width, height, &gpuErrors, true);
+        ASSERT_TRUE(gpuErrors->Messages.empty()) << gpuErrors->All();
+        ExpectTheGpusPicture(filtered, cpu, label + ", filtered reads");
+      }
+      // Rays end at the volume's faces with "stop", never with "euclidean".
+      vtkDataArray* reasons = tracer->GetOutput()->GetPointData()->GetArray("ReasonForTermination");
+      ASSERT_NE(reasons, nullptr);
+      int stopped = 0;
+      for (vtkIdType i = 0; i < reasons->GetNumberOfTuples(); ++i)
+      {
+        stopped += reasons->GetTuple1(i) == riemann::OutOfData ? 1 : 0;
+      }
+      EXPECT_GE(stopped, c.MinimumStopped);
+      if (c.MinimumStopped == 0)
+      {
+        EXPECT_EQ(stopped, 0);
+      }
     }
   }
 }
@@ -877,12 +887,13 @@ TEST(CPURayTracer, SampledMetricTexturesAreUploadedOnceAndBoundedBySize)
   renderer->GetActiveCamera()->Azimuth(10.0);
   window->Render();
   EXPECT_TRUE(errors.Messages.empty()) << errors.All();
-  EXPECT_EQ(pass->GetNumberOfMetricTextureUploads(), 2) << "two textures, uploaded once";
+  EXPECT_EQ(pass->GetNumberOfMetricTextureUploads(), 6)
+    << "the voxels reading's six textures, uploaded once";
 
-  // 5000 points along x: more than any OpenGL context's 3D texture width
-  // (llvmpipe: 2048), a few hundred kilobytes of data.
+  // 20000 points along x: more than an OpenGL context's 3D texture width
+  // (llvmpipe: 2048, NVIDIA's H200: 16384), a few megabytes of data.
   vtkNew<vtkImageData> wide;
-  wide->SetDimensions(5000, 2, 2);
+  wide->SetDimensions(20000, 2, 2);
   vtkNew<vtkDoubleArray> tensors;
   tensors->SetName("Tensors");
   tensors->SetNumberOfComponents(6);
@@ -895,7 +906,7 @@ TEST(CPURayTracer, SampledMetricTexturesAreUploadedOnceAndBoundedBySize)
   wide->GetPointData()->AddArray(tensors);
   ASSERT_TRUE(metric->SetTensorData(wide, "Tensors")) << metric->GetLastError();
   window->Render();
-  EXPECT_NE(errors.All().find("cannot draw the sampled metric: the sampled volume has 5000x2x2 "
+  EXPECT_NE(errors.All().find("cannot draw the sampled metric: the sampled volume has 20000x2x2 "
                               "points; this OpenGL context's 3D textures hold at most"),
     std::string::npos)
     << errors.All();
