@@ -230,8 +230,7 @@ LaneMask VoxelChristoffelMetric::AccelerationPacket(
     }
     for (int k = 0; k < 3; ++k)
     {
-      const double* d = &jet[6 + 6 * k][0];
-      const auto at = [&](int e) { return d[e * PacketWidth + l]; };
+      const auto at = [&](int e) { return jet[6 + 6 * k + e][l]; };
       q[k] = vx * (at(0) * vx + 2.0 * (at(3) * vy + at(5) * vz)) +
         vy * (at(1) * vy + 2.0 * at(4) * vz) + vz * at(2) * vz;
     }
